@@ -1,0 +1,97 @@
+/*
+ * raytrace/render.h - turning a scene into pixels.
+ *
+ * Whitted ray tracing as SPEC.md section 3 defines it: one primary ray through
+ * each pixel centre, the nearest facet by brute force, a shadow ray to the
+ * point light, mirror reflections up to a depth, real-valued colours rounded
+ * once per pixel.  Rendering only reads the scene, so several renders of one
+ * scene may run at once; each render writes only the rows it was asked for.
+ *
+ * A render can report progress and be cancelled: `on_rows` is called each
+ * time a row is finished, and returning 0 from it stops the render as soon as
+ * every thread notices (within one pixel's work), with RT_ERR_CANCELLED.
+ */
+#ifndef RAYTRACE_RENDER_H
+#define RAYTRACE_RENDER_H
+
+#include <stdint.h>
+
+#include "raytrace/image.h"
+#include "raytrace/scene.h"
+#include "raytrace/status.h"
+#include "raytrace/vec3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RT_DEFAULT_DEPTH 5
+
+/* Counters of the work a render did; filled when options.stats is set. */
+typedef struct rt_render_stats {
+    uint64_t camera_rays;
+    uint64_t shadow_rays;
+    uint64_t reflection_rays;
+    uint64_t ray_facet_tests;
+    uint64_t shadow_rays_skipped;     /* N.S <= 0 or k = 1: no ray needed */
+    uint64_t reflection_rays_skipped; /* k = 0: no ray needed */
+    uint64_t pixels;
+    double seconds;                   /* wall-clock time of the render */
+} rt_render_stats;
+
+/*
+ * Called from a rendering thread each time row `row` is complete in the
+ * image; calls are serialised (never two at once) but may come from any
+ * thread and in any row order.  Return non-zero to go on, 0 to cancel.
+ */
+typedef int (*rt_row_callback)(void *user, int row);
+
+typedef struct rt_render_options {
+    int max_depth;              /* reflections after a primary ray; default 5 */
+    int threads;                /* 0: one per online core (default); 1: the
+                                   calling thread only */
+    rt_row_callback on_row;     /* optional progress / cancellation */
+    void *user;                 /* passed to on_row */
+    rt_render_stats *stats;     /* optional; zeroed then filled */
+} rt_render_options;
+
+/* Sets the defaults: max_depth 5, all cores, no callback, no stats.
+ * Thread-safe. */
+void rt_render_options_init(rt_render_options *options);
+
+/*
+ * Renders the whole image into `image`, which must be width x height of the
+ * scene (see rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image
+ * size, negative depth), RT_ERR_NOMEM (threads could not start: nothing is
+ * rendered) or RT_ERR_CANCELLED (some rows are finished, the others hold
+ * whatever they held before).  Thread-safe as long as no two calls write the
+ * same rows of the same image.
+ */
+rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
+                    rt_image *image);
+
+/*
+ * Renders rows [row_begin, row_end) of the scene's image into the same rows
+ * of `image` (a full-size image); other rows are not touched.  Same results
+ * and status as rt_render.  Thread-safe on disjoint bands.
+ */
+rt_status rt_render_rows(const rt_scene *scene,
+                         const rt_render_options *options, int row_begin,
+                         int row_end, rt_image *image);
+
+/*
+ * The real-valued colour carried by `ray` (SPEC.md section 3), following at
+ * most `max_depth` reflections; the direction need not be unit length.
+ * The value is not clamped.  Thread-safe.
+ */
+rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth);
+
+/* The 8-bit value a real channel is written as: clamped to [0, 255] and
+ * rounded to nearest, halves away from zero; NaN gives 0.  Thread-safe. */
+unsigned char rt_channel_to_byte(double value);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RAYTRACE_RENDER_H */

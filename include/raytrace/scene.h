@@ -1,0 +1,141 @@
+/*
+ * raytrace/scene.h - loading a scene and asking it questions.
+ *
+ * An rt_scene is an immutable, opaque object built from a `.scn` description
+ * (the format is in docs/scene-format.md).  Loading validates everything the
+ * renderer relies on: a scene that loads can be rendered, and a scene that
+ * cannot be rendered does not load.  Once loaded, a scene is never modified,
+ * so every function below that takes a `const rt_scene *` may be called from
+ * any number of threads at once.
+ *
+ * The loader reads from memory (rt_scene_parse); rt_scene_load is a thin
+ * wrapper that reads a file first.  On failure the out-pointer is set to NULL,
+ * nothing is leaked, and the rt_error (if given) says what and where.
+ */
+#ifndef RAYTRACE_SCENE_H
+#define RAYTRACE_SCENE_H
+
+#include <stddef.h>
+
+#include "raytrace/status.h"
+#include "raytrace/vec3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Limits the loader enforces (SPEC.md section 1). */
+#define RT_MAX_IMAGE_SIDE 16384
+
+typedef struct rt_scene rt_scene;
+
+/* A non-fatal remark about the scene, such as a zero-area facet. */
+typedef struct rt_warning {
+    int line;
+    int column;
+    char message[RT_ERROR_MESSAGE_SIZE]; /* "path:line:column: warning: ..." */
+} rt_warning;
+
+/*
+ * The camera after validation (SPEC.md section 2): the observer, the screen
+ * centre A, the right half-width AB (B projected onto the screen plane when
+ * the file's B was not perpendicular) and the up half-height AC with
+ * |AC| = |AB| and (AB, AC, AO) right-handed.
+ */
+typedef struct rt_camera {
+    rt_vec3 observer;
+    rt_vec3 screen_center;  /* A */
+    rt_vec3 right;          /* AB, after projection */
+    rt_vec3 up;             /* AC */
+    int width, height;      /* image size in pixels */
+    int b_was_projected;    /* non-zero when the file's B needed projection */
+} rt_camera;
+
+/* What a facet record of the file says. */
+typedef struct rt_facet_info {
+    int vertex[3];          /* 0-based indices into the vertex list */
+    double k;               /* reflection coefficient in [0, 1] */
+    rt_rgb8 color;
+    rt_vec3 normal;         /* unit (b-a)x(c-a); zero for a zero-area facet */
+    int degenerate;         /* non-zero for a zero-area facet (never hit) */
+    int line;               /* line of the record in the source */
+} rt_facet_info;
+
+/* Sizes and settings of a scene. */
+typedef struct rt_scene_info {
+    int width, height;
+    int vertex_count;
+    int facet_count;        /* as in the file, degenerate ones included */
+    int live_facet_count;   /* facets that can be hit */
+    int reflective_facet_count; /* live facets with k > 0 */
+    int warning_count;
+    rt_rgb8 background;
+    rt_vec3 light_position;
+    rt_rgb8 light_color;
+    rt_camera camera;
+} rt_scene_info;
+
+/*
+ * Parses a scene from `length` bytes at `text` (no terminating NUL needed).
+ * `name` is used in messages as the file name ("<memory>" when NULL).
+ * Numbers are read in the C locale whatever the process's locale.
+ * Thread-safe.
+ */
+rt_status rt_scene_parse(const char *text, size_t length, const char *name,
+                         rt_scene **scene, rt_error *error);
+
+/* Reads the file at `path` and parses it; messages name `path`.
+ * Thread-safe. */
+rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error);
+
+/* Frees a scene.  rt_scene_free(NULL) does nothing.  Not thread-safe on the
+ * same scene (no other call may be using it). */
+void rt_scene_free(rt_scene *scene);
+
+/* Fills `info`.  Thread-safe. */
+void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
+
+/* The i-th vertex (0-based, i < vertex_count).  Thread-safe. */
+rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
+
+/* The i-th facet record (0-based, i < facet_count).  Thread-safe. */
+void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
+
+/* The i-th warning (0-based, i < warning_count).  Thread-safe. */
+const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
+
+/* The primary ray of pixel (column i, row j from the top), SPEC.md section 2:
+ * from the observer through the pixel's centre; direction not normalised.
+ * Thread-safe. */
+rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
+
+/* A ray-facet intersection. */
+typedef struct rt_hit {
+    double t;               /* ray parameter: origin + t * direction */
+    int facet;              /* 0-based index of the facet record */
+    rt_vec3 point;          /* the hit point */
+    rt_vec3 normal;         /* unit normal facing the ray's origin */
+} rt_hit;
+
+/*
+ * Nearest hit of `ray` for t in (0, t_max) over every facet (brute force),
+ * using the watertight test of docs/robustness.md.  Among hits at exactly
+ * the same t the facet that comes first in the file wins.  Returns non-zero
+ * and fills `hit` when there is one.  Thread-safe.
+ */
+int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
+                         rt_hit *hit);
+
+/*
+ * Non-zero when some facet lies strictly between `from` and `to` (an any-hit
+ * query that stops at the first blocker).  `skip_facet` (or -1) is a facet to
+ * ignore: the one `from` lies on.  Thread-safe.
+ */
+int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
+                      int skip_facet);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RAYTRACE_SCENE_H */
