@@ -75,6 +75,40 @@ typedef struct rt_scene_info {
     rt_camera camera;
 } rt_scene_info;
 
+/* A facet to build a scene from. */
+typedef struct rt_facet_desc {
+    int vertex[3];          /* 0-based indices into the vertex array */
+    double k;               /* reflection coefficient in [0, 1] */
+    rt_rgb8 color;
+} rt_facet_desc;
+
+/*
+ * Everything a scene holds, for building one without a file (the `.scn`
+ * loader is itself a client of rt_scene_create).  The arrays are copied.
+ */
+typedef struct rt_scene_desc {
+    rt_vec3 observer;       /* O */
+    rt_vec3 screen_center;  /* A */
+    rt_vec3 screen_right;   /* B, projected when AB is not perpendicular to AO */
+    int width, height;      /* 1..RT_MAX_IMAGE_SIDE */
+    const rt_vec3 *vertices;
+    int vertex_count;
+    const rt_facet_desc *facets;
+    int facet_count;
+    rt_rgb8 background;
+    rt_vec3 light_position;
+    rt_rgb8 light_color;
+} rt_scene_desc;
+
+/*
+ * Builds a scene from `desc`, checking the rules of SPEC.md sections 1-2
+ * (finite coordinates, k in [0, 1], indices in range, sizes, a camera that
+ * is not degenerate).  Messages have no file position; zero-area facets give
+ * warnings.  Thread-safe.
+ */
+rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
+                          rt_error *error);
+
 /*
  * Parses a scene from `length` bytes at `text` (no terminating NUL needed).
  * `name` is used in messages as the file name ("<memory>" when NULL).

@@ -1,0 +1,84 @@
+/*
+ * testutil.c - helpers shared by the Check suites (see testutil.h).
+ */
+#include "testutil.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+int rt_test_run_suite(Suite *suite)
+{
+    SRunner *runner = srunner_create(suite);
+    srunner_run_all(runner, CK_NORMAL);
+    int failed = srunner_ntests_failed(runner);
+    srunner_free(runner);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+const char *rt_test_source_path(const char *relative)
+{
+    static char buffer[4096];
+    snprintf(buffer, sizeof buffer, "%s/%s", RT_SOURCE_DIR, relative);
+    return buffer;
+}
+
+const char *rt_test_shared_path(const char *relative)
+{
+    static char buffer[4096];
+    struct stat st;
+    if (stat(RT_SHARED_DIR, &st) != 0 || !S_ISDIR(st.st_mode))
+        return NULL;
+    snprintf(buffer, sizeof buffer, "%s/%s", RT_SHARED_DIR, relative);
+    return buffer;
+}
+
+rt_scene *rt_test_scene_from_string(const char *text)
+{
+    rt_scene *scene = NULL;
+    rt_error error;
+    rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
+                                      &error);
+    ck_assert_msg(status == RT_OK, "scene did not load: %s", error.message);
+    return scene;
+}
+
+rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_image image;
+    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.max_depth = max_depth;
+    options.threads = threads;
+    ck_assert_int_eq(rt_render(scene, &options, &image), RT_OK);
+    return image;
+}
+
+long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff)
+{
+    ck_assert_int_eq(a->width, b->width);
+    ck_assert_int_eq(a->height, b->height);
+    long count = 0;
+    int worst = 0;
+    for (int y = 0; y < a->height; y++) {
+        for (int x = 0; x < a->width; x++) {
+            const unsigned char *p = rt_image_pixel(a, x, y);
+            const unsigned char *q = rt_image_pixel(b, x, y);
+            int differs = 0;
+            for (int c = 0; c < 3; c++) {
+                int d = abs((int)p[c] - (int)q[c]);
+                if (d > worst)
+                    worst = d;
+                differs |= d != 0;
+            }
+            count += differs;
+        }
+    }
+    if (max_diff)
+        *max_diff = worst;
+    return count;
+}

@@ -1,0 +1,36 @@
+/*
+ * testutil.h - what every Check suite of the project shares: a main that
+ * runs one suite, paths to the project's files, and image helpers.
+ */
+#ifndef RAYTRACE_TESTUTIL_H
+#define RAYTRACE_TESTUTIL_H
+
+#include <check.h>
+#include <stddef.h>
+
+#include "raytrace/raytrace.h"
+
+/* Runs `suite_fn()` and exits non-zero when a test failed. */
+int rt_test_run_suite(Suite *suite);
+
+#define RT_CHECK_MAIN(suite_fn)                                              \
+    int main(void) { return rt_test_run_suite(suite_fn()); }
+
+/* "<source dir>/<relative>" in a static buffer (one at a time). */
+const char *rt_test_source_path(const char *relative);
+
+/* "<source dir>/../shared/<relative>", or NULL when ../shared is absent. */
+const char *rt_test_shared_path(const char *relative);
+
+/* Parses a scene held in a C string; fails the test with the loader's
+ * message if it does not load. */
+rt_scene *rt_test_scene_from_string(const char *text);
+
+/* Renders `scene` with the given depth and thread count into a new image. */
+rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads);
+
+/* Number of pixels that differ between two images of the same size, and the
+ * largest channel difference (through *max_diff when not NULL). */
+long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff);
+
+#endif /* RAYTRACE_TESTUTIL_H */
