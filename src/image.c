@@ -1,0 +1,33 @@
+/*
+ * image.c - allocating and freeing RGB8 images.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "raytrace/image.h"
+#include "raytrace/scene.h"
+
+rt_status rt_image_create(rt_image *image, int width, int height)
+{
+    memset(image, 0, sizeof *image);
+    if (width < 1 || height < 1 || width > RT_MAX_IMAGE_SIDE ||
+        height > RT_MAX_IMAGE_SIDE)
+        return RT_ERR_ARGUMENT;
+    size_t stride = (size_t)width * 3;
+    unsigned char *pixels = calloc((size_t)height, stride);
+    if (pixels == NULL)
+        return RT_ERR_NOMEM;
+    image->width = width;
+    image->height = height;
+    image->stride = stride;
+    image->pixels = pixels;
+    return RT_OK;
+}
+
+void rt_image_destroy(rt_image *image)
+{
+    if (image == NULL)
+        return;
+    free(image->pixels);
+    memset(image, 0, sizeof *image);
+}

@@ -1,0 +1,286 @@
+/*
+ * ppm.c - writing and reading PPM images (Netpbm P3 and P6, maxval 255).
+ *
+ * Writers produce bytes through a sink callback; the FILE and path variants
+ * are thin wrappers, and the path variant makes the write atomic (temporary
+ * file in the destination directory, flushed, synced, renamed).  Readers take
+ * exactly what the writers produce plus what other Netpbm tools commonly
+ * emit: comments and arbitrary white space in the header.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "error.h"
+#include "file.h"
+#include "raytrace/image.h"
+#include "raytrace/scene.h"
+
+/* P3 lines are at most this long (the Netpbm recommendation). */
+#define P3_LINE_MAX 70
+
+static int valid_image(const rt_image *image)
+{
+    return image != NULL && image->pixels != NULL && image->width > 0 &&
+           image->height > 0 && image->stride >= (size_t)image->width * 3;
+}
+
+static rt_status write_p3_pixels(rt_write_func write, void *context,
+                                 const rt_image *image)
+{
+    char line[P3_LINE_MAX + 2];
+    size_t used = 0;
+    for (int y = 0; y < image->height; y++) {
+        const unsigned char *row = rt_image_pixel(image, 0, y);
+        for (int i = 0; i < image->width * 3; i++) {
+            char number[8];
+            int n = snprintf(number, sizeof number, "%u", row[i]);
+            if (used > 0 && used + 1 + (size_t)n > P3_LINE_MAX) {
+                line[used++] = '\n';
+                if (!write(context, line, used))
+                    return RT_ERR_IO;
+                used = 0;
+            }
+            if (used > 0)
+                line[used++] = ' ';
+            memcpy(line + used, number, (size_t)n);
+            used += (size_t)n;
+        }
+    }
+    line[used++] = '\n';
+    return write(context, line, used) ? RT_OK : RT_ERR_IO;
+}
+
+rt_status rt_ppm_write_to(rt_write_func write, void *context,
+                          const rt_image *image, rt_ppm_format format)
+{
+    if (!valid_image(image) || write == NULL)
+        return RT_ERR_ARGUMENT;
+    if (format != RT_PPM_P3 && format != RT_PPM_P6)
+        return RT_ERR_FORMAT;
+    char header[64];
+    int n = snprintf(header, sizeof header, "P%d\n%d %d\n255\n", (int)format,
+                     image->width, image->height);
+    if (!write(context, header, (size_t)n))
+        return RT_ERR_IO;
+    if (format == RT_PPM_P3)
+        return write_p3_pixels(write, context, image);
+    for (int y = 0; y < image->height; y++)
+        if (!write(context, rt_image_pixel(image, 0, y),
+                   (size_t)image->width * 3))
+            return RT_ERR_IO;
+    return RT_OK;
+}
+
+static int write_to_file(void *context, const void *data, size_t size)
+{
+    return fwrite(data, 1, size, (FILE *)context) == size;
+}
+
+rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
+                            rt_ppm_format format)
+{
+    if (file == NULL)
+        return RT_ERR_ARGUMENT;
+    return rt_ppm_write_to(write_to_file, file, image, format);
+}
+
+rt_status rt_ppm_save(const char *path, const rt_image *image,
+                      rt_ppm_format format, rt_error *error)
+{
+    if (path == NULL || !valid_image(image))
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected a path and an image");
+    size_t length = strlen(path);
+    char *temp = malloc(length + sizeof ".tmp-XXXXXX");
+    if (temp == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    memcpy(temp, path, length);
+    memcpy(temp + length, ".tmp-XXXXXX", sizeof ".tmp-XXXXXX");
+    int fd = mkstemp(temp);
+    if (fd < 0) {
+        int saved = errno;
+        free(temp);
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot create a temporary file here: %s",
+                             strerror(saved));
+    }
+    /* mkstemp makes the file private; an image is an ordinary file. */
+    fchmod(fd, 0644);
+    FILE *file = fdopen(fd, "wb");
+    rt_status status = file ? rt_ppm_write_file(file, image, format)
+                            : RT_ERR_IO;
+    int saved = errno;
+    if (file != NULL) {
+        if (status == RT_OK && (fflush(file) != 0 || fsync(fileno(file)) != 0))
+            status = RT_ERR_IO, saved = errno;
+        if (fclose(file) != 0 && status == RT_OK)
+            status = RT_ERR_IO, saved = errno;
+    } else {
+        close(fd);
+    }
+    if (status == RT_OK && rename(temp, path) != 0)
+        status = RT_ERR_IO, saved = errno;
+    if (status != RT_OK) {
+        unlink(temp);
+        free(temp);
+        if (status == RT_ERR_IO)
+            return rt__error_set(error, status, path, 0, 0,
+                                 "cannot write the image: %s",
+                                 strerror(saved));
+        return rt__error_set(error, status, path, 0, 0,
+                             "cannot write the image: %s",
+                             rt_status_string(status));
+    }
+    free(temp);
+    return RT_OK;
+}
+
+/* A cursor over PPM bytes that knows its line and column. */
+typedef struct reader {
+    const unsigned char *at, *end;
+    const char *name;
+    int line, column;
+} reader;
+
+static void advance(reader *r)
+{
+    if (*r->at == '\n')
+        r->line++, r->column = 1;
+    else
+        r->column++;
+    r->at++;
+}
+
+static int is_space(int c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+           c == '\f';
+}
+
+/* Skips white space and comments (a comment runs to the end of its line). */
+static void skip_blank(reader *r)
+{
+    while (r->at < r->end) {
+        if (*r->at == '#') {
+            while (r->at < r->end && *r->at != '\n')
+                advance(r);
+        } else if (is_space(*r->at)) {
+            advance(r);
+        } else {
+            break;
+        }
+    }
+}
+
+/* Reads a decimal integer in [0, max] into *value; `what` names it. */
+static rt_status read_uint(reader *r, long max, const char *what, long *value,
+                           rt_error *error)
+{
+    skip_blank(r);
+    int line = r->line, column = r->column;
+    if (r->at >= r->end)
+        return rt__error_set(error, RT_ERR_SYNTAX, r->name, line, column,
+                             "expected %s, found the end of the file", what);
+    long v = 0;
+    int digits = 0;
+    while (r->at < r->end && *r->at >= '0' && *r->at <= '9') {
+        if (v <= max)
+            v = v * 10 + (*r->at - '0');
+        digits++;
+        advance(r);
+    }
+    if (digits == 0 || (r->at < r->end && !is_space(*r->at) && *r->at != '#'))
+        return rt__error_set(error, RT_ERR_SYNTAX, r->name, line, column,
+                             "expected %s, found `%c`", what,
+                             digits ? *r->at : *r->at);
+    if (v > max)
+        return rt__error_set(error, RT_ERR_RANGE, r->name, line, column,
+                             "expected %s in 0..%ld, found a larger number",
+                             what, max);
+    *value = v;
+    return RT_OK;
+}
+
+rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
+                       rt_image *image, rt_error *error)
+{
+    memset(image, 0, sizeof *image);
+    reader r = {data, (const unsigned char *)data + length,
+                name ? name : "<memory>", 1, 1};
+    if (length < 2 || r.at[0] != 'P' || (r.at[1] != '3' && r.at[1] != '6'))
+        return rt__error_set(error, RT_ERR_FORMAT, r.name, 1, 1,
+                             "expected `P3` or `P6` at the start of the file");
+    int binary = r.at[1] == '6';
+    advance(&r);
+    advance(&r);
+    long width, height, maxval;
+    rt_status status;
+    if ((status = read_uint(&r, RT_MAX_IMAGE_SIDE, "the width", &width,
+                            error)) != RT_OK ||
+        (status = read_uint(&r, RT_MAX_IMAGE_SIDE, "the height", &height,
+                            error)) != RT_OK ||
+        (status = read_uint(&r, 65535, "the maximum value", &maxval,
+                            error)) != RT_OK)
+        return status;
+    if (width < 1 || height < 1)
+        return rt__error_set(error, RT_ERR_RANGE, r.name, r.line, r.column,
+                             "expected a width and height of at least 1");
+    if (maxval != 255)
+        return rt__error_set(error, RT_ERR_FORMAT, r.name, r.line, r.column,
+                             "expected a maximum value of 255, found %ld",
+                             maxval);
+    size_t bytes = (size_t)width * (size_t)height * 3;
+    if (binary) {
+        /* Exactly one white-space byte separates the header from pixels. */
+        if (r.at >= r.end || !is_space(*r.at))
+            return rt__error_set(error, RT_ERR_SYNTAX, r.name, r.line,
+                                 r.column,
+                                 "expected white space after the header");
+        advance(&r);
+        if ((size_t)(r.end - r.at) < bytes)
+            return rt__error_set(error, RT_ERR_SYNTAX, r.name, r.line,
+                                 r.column,
+                                 "expected %zu bytes of pixels, found %zu",
+                                 bytes, (size_t)(r.end - r.at));
+    }
+    status = rt_image_create(image, (int)width, (int)height);
+    if (status != RT_OK)
+        return rt__error_set(error, status, r.name, 0, 0, "out of memory");
+    if (binary) {
+        memcpy(image->pixels, r.at, bytes);
+        return RT_OK;
+    }
+    for (size_t i = 0; i < bytes; i++) {
+        long v;
+        if ((status = read_uint(&r, 255, "a pixel value", &v, error)) !=
+            RT_OK) {
+            rt_image_destroy(image);
+            return status;
+        }
+        image->pixels[i] = (unsigned char)v;
+    }
+    return RT_OK;
+}
+
+
+
+
+rt_status rt_ppm_load(const char *path, rt_image *image, rt_error *error)
+{
+    char *data;
+    size_t length;
+    memset(image, 0, sizeof *image);
+    rt_status status = rt__read_file(path, &data, &length, error);
+    if (status != RT_OK)
+        return status;
+    status = rt_ppm_parse(data, length, path, image, error);
+    free(data);
+    return status;
+}

@@ -1,0 +1,204 @@
+/*
+ * render.c - rendering images: rows of pixels, shared among threads.
+ *
+ * Each pixel is independent, so threads take rows from a shared counter (a
+ * row at a time, dynamically: rows cost very different amounts) and write
+ * them into the caller's image.  A pixel's value does not depend on which
+ * thread computed it, so the image is the same for any thread count.  The
+ * row callback is serialised by a mutex; cancellation is a flag every thread
+ * reads before each pixel.
+ */
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "raytrace/render.h"
+#include "shade.h"
+#include "vecmath.h"
+
+/* One render call, shared by its threads. */
+typedef struct job {
+    const rt_scene *scene;
+    const rt_render_options *options;
+    rt_image *image;
+    int row_end;
+    atomic_int next_row;
+    atomic_int cancelled;
+    pthread_mutex_t callback_lock;
+    pthread_mutex_t stats_lock;
+    rt_counters totals;
+    uint64_t pixels;
+} job;
+
+void rt_render_options_init(rt_render_options *options)
+{
+    memset(options, 0, sizeof *options);
+    options->max_depth = RT_DEFAULT_DEPTH;
+    options->threads = 0;
+}
+
+unsigned char rt_channel_to_byte(double value)
+{
+    if (!(value > 0.0))     /* also NaN */
+        return 0;
+    if (value >= 255.0)
+        return 255;
+    return (unsigned char)(value + 0.5);    /* halves away from zero */
+}
+
+rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
+{
+    rt_counters counters = {0};
+    if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
+        max_depth < 0)
+        return (rt_color){0.0, 0.0, 0.0};
+    return rt__trace(scene, ray.origin, ray.direction, max_depth, &counters);
+}
+
+/* Renders one row; returns 0 if the render was cancelled meanwhile. */
+static int render_row(job *j, int row, rt_counters *counters,
+                      uint64_t *pixels)
+{
+    const rt_camera *camera = &j->scene->camera;
+    unsigned char *out = rt_image_pixel(j->image, 0, row);
+    for (int i = 0; i < camera->width; i++) {
+        if (atomic_load_explicit(&j->cancelled, memory_order_relaxed))
+            return 0;
+        rt_ray ray = rt_camera_ray(camera, i, row);
+        rt_color c = rt__trace(j->scene, ray.origin, ray.direction,
+                               j->options->max_depth, counters);
+        out[3 * i + 0] = rt_channel_to_byte(c.r);
+        out[3 * i + 1] = rt_channel_to_byte(c.g);
+        out[3 * i + 2] = rt_channel_to_byte(c.b);
+        (*pixels)++;
+    }
+    return 1;
+}
+
+static void *worker(void *argument)
+{
+    job *j = argument;
+    rt_counters counters = {0};
+    uint64_t pixels = 0;
+    for (;;) {
+        int row = atomic_fetch_add(&j->next_row, 1);
+        if (row >= j->row_end)
+            break;
+        if (!render_row(j, row, &counters, &pixels))
+            break;
+        if (j->options->on_row != NULL) {
+            pthread_mutex_lock(&j->callback_lock);
+            int go_on = atomic_load(&j->cancelled) ||
+                        j->options->on_row(j->options->user, row);
+            pthread_mutex_unlock(&j->callback_lock);
+            if (!go_on) {
+                atomic_store(&j->cancelled, 1);
+                break;
+            }
+        }
+    }
+    pthread_mutex_lock(&j->stats_lock);
+    j->totals.shadow_rays += counters.shadow_rays;
+    j->totals.reflection_rays += counters.reflection_rays;
+    j->totals.tests += counters.tests;
+    j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
+    j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
+    j->pixels += pixels;
+    pthread_mutex_unlock(&j->stats_lock);
+    return NULL;
+}
+
+static int thread_count(int requested, int rows)
+{
+    int n = requested;
+    if (n <= 0) {
+        long online = sysconf(_SC_NPROCESSORS_ONLN);
+        n = online > 0 ? (int)online : 1;
+    }
+    if (n > rows)
+        n = rows;
+    return n < 1 ? 1 : n;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
+{
+    memset(stats, 0, sizeof *stats);
+    stats->camera_rays = j->pixels;
+    stats->pixels = j->pixels;
+    stats->shadow_rays = j->totals.shadow_rays;
+    stats->reflection_rays = j->totals.reflection_rays;
+    stats->ray_facet_tests = j->totals.tests;
+    stats->shadow_rays_skipped = j->totals.shadow_rays_skipped;
+    stats->reflection_rays_skipped = j->totals.reflection_rays_skipped;
+    stats->seconds = seconds;
+}
+
+rt_status rt_render_rows(const rt_scene *scene,
+                         const rt_render_options *options, int row_begin,
+                         int row_end, rt_image *image)
+{
+    rt_render_options defaults;
+    if (options == NULL) {
+        rt_render_options_init(&defaults);
+        options = &defaults;
+    }
+    if (scene == NULL || image == NULL || image->pixels == NULL ||
+        image->width != scene->camera.width ||
+        image->height != scene->camera.height ||
+        image->stride < (size_t)image->width * 3 || options->max_depth < 0 ||
+        row_begin < 0 || row_end > image->height || row_begin > row_end)
+        return RT_ERR_ARGUMENT;
+
+    double start = now_seconds();
+    job j = {.scene = scene, .options = options, .image = image,
+             .row_end = row_end};
+    atomic_init(&j.next_row, row_begin);
+    atomic_init(&j.cancelled, 0);
+    pthread_mutex_init(&j.callback_lock, NULL);
+    pthread_mutex_init(&j.stats_lock, NULL);
+
+    int n = thread_count(options->threads, row_end - row_begin);
+    pthread_t *threads = n > 1 ? malloc((size_t)(n - 1) * sizeof *threads)
+                               : NULL;
+    int started = 0;
+    rt_status status = RT_OK;
+    if (n > 1 && threads == NULL)
+        status = RT_ERR_NOMEM;
+    for (int t = 0; status == RT_OK && t < n - 1; t++) {
+        if (pthread_create(&threads[t], NULL, worker, &j) != 0)
+            break;          /* fewer threads: still correct */
+        started++;
+    }
+    if (status == RT_OK)
+        worker(&j);         /* the calling thread works too */
+    for (int t = 0; t < started; t++)
+        pthread_join(threads[t], NULL);
+    free(threads);
+    pthread_mutex_destroy(&j.callback_lock);
+    pthread_mutex_destroy(&j.stats_lock);
+
+    if (options->stats != NULL)
+        fill_stats(&j, now_seconds() - start, options->stats);
+    if (status == RT_OK && atomic_load(&j.cancelled))
+        status = RT_ERR_CANCELLED;
+    return status;
+}
+
+rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
+                    rt_image *image)
+{
+    if (scene == NULL || image == NULL)
+        return RT_ERR_ARGUMENT;
+    return rt_render_rows(scene, options, 0, scene->camera.height, image);
+}

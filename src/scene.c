@@ -1,0 +1,320 @@
+/*
+ * scene.c - building a scene from a description, and asking it questions.
+ *
+ * rt_scene_create is the one way scenes are made (the `.scn` parser is a
+ * client of it).  Building checks the rules the renderer relies on, works
+ * out the camera, drops zero-area facets from what the renderer sees (with a
+ * warning), and precomputes per-facet data once.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "intersect.h"
+#include "scene_internal.h"
+#include "vecmath.h"
+
+/* Exact products and sums (Dekker, Knuth): a*b = hi + lo and a+b = s + e,
+ * exactly, barring underflow. */
+static void two_product(double a, double b, double *hi, double *lo)
+{
+    *hi = a * b;
+    *lo = fma(a, b, -*hi);
+}
+
+static void two_sum(double a, double b, double *s, double *e)
+{
+    *s = a + b;
+    double bb = *s - a;
+    *e = (a - (*s - bb)) + (b - bb);
+}
+
+/* Sign of the exact sum of n doubles: accumulate them into a nonoverlapping
+ * expansion (Shewchuk's grow-expansion); its largest component has the sign
+ * of the sum. */
+static int exact_sum_sign(const double *terms, int n)
+{
+    double expansion[16];
+    int length = 0;
+    for (int i = 0; i < n; i++) {
+        double q = terms[i];
+        int kept = 0;
+        for (int j = 0; j < length; j++) {
+            double s, e;
+            two_sum(q, expansion[j], &s, &e);
+            if (e != 0.0)
+                expansion[kept++] = e;
+            q = s;
+        }
+        if (q != 0.0)
+            expansion[kept++] = q;
+        length = kept;
+    }
+    if (length == 0)
+        return 0;
+    return expansion[length - 1] > 0.0 ? 1 : -1;
+}
+
+/* Exact sign of the 2D orientation of (a, b, c) in coordinates (x, y). */
+static int orient2d_sign(double ax, double ay, double bx, double by,
+                         double cx, double cy)
+{
+    /* ax by - ay bx + bx cy - by cx + cx ay - cy ax */
+    double t[12];
+    two_product(ax, by, &t[0], &t[1]);
+    two_product(-ay, bx, &t[2], &t[3]);
+    two_product(bx, cy, &t[4], &t[5]);
+    two_product(-by, cx, &t[6], &t[7]);
+    two_product(cx, ay, &t[8], &t[9]);
+    two_product(-cy, ax, &t[10], &t[11]);
+    return exact_sum_sign(t, 12);
+}
+
+int rt__points_collinear(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    return orient2d_sign(a.x, a.y, b.x, b.y, c.x, c.y) == 0 &&
+           orient2d_sign(a.y, a.z, b.y, b.z, c.y, c.z) == 0 &&
+           orient2d_sign(a.z, a.x, b.z, b.x, c.z, c.x) == 0;
+}
+
+/* Unit normal in the direction of (b - a) x (c - a), computed from the two
+ * shortest edges (a cyclic relabelling keeps the direction), which is the
+ * accurate choice for slivers. */
+static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    rt_vec3 p[3] = {a, b, c};
+    double longest = -1.0;
+    int opposite = 0;       /* the vertex facing the longest edge */
+    for (int i = 0; i < 3; i++) {
+        double l = v3_length(v3_sub(p[(i + 2) % 3], p[(i + 1) % 3]));
+        if (l > longest)
+            longest = l, opposite = i;
+    }
+    rt_vec3 o = p[opposite];
+    rt_vec3 e1 = v3_sub(p[(opposite + 1) % 3], o);
+    rt_vec3 e2 = v3_sub(p[(opposite + 2) % 3], o);
+    /* Scale before the cross product so it can neither overflow nor
+     * underflow. */
+    double s1 = v3_max_abs(e1), s2 = v3_max_abs(e2);
+    if (s1 == 0.0 || s2 == 0.0)
+        return v3(0, 0, 0);
+    return v3_normalize(v3_cross(v3_scale(e1, 1.0 / s1),
+                                 v3_scale(e2, 1.0 / s2)));
+}
+
+static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
+{
+    const char *what = NULL;
+    if (d->width < 1 || d->width > RT_MAX_IMAGE_SIDE || d->height < 1 ||
+        d->height > RT_MAX_IMAGE_SIDE)
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected an image size in 1..%d, found %dx%d",
+                             RT_MAX_IMAGE_SIDE, d->width, d->height);
+    if (d->vertex_count < 0 || d->facet_count < 0 ||
+        (d->vertex_count > 0 && d->vertices == NULL) ||
+        (d->facet_count > 0 && d->facets == NULL))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected vertex and facet arrays");
+    if (!v3_is_finite(d->observer) || !v3_is_finite(d->screen_center) ||
+        !v3_is_finite(d->screen_right) || !v3_is_finite(d->light_position))
+        what = "the camera and the light";
+    for (int i = 0; what == NULL && i < d->vertex_count; i++)
+        if (!v3_is_finite(d->vertices[i]))
+            what = "every vertex";
+    if (what != NULL)
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected finite coordinates for %s", what);
+    for (int i = 0; i < d->facet_count; i++) {
+        const rt_facet_desc *f = &d->facets[i];
+        for (int j = 0; j < 3; j++)
+            if (f->vertex[j] < 0 || f->vertex[j] >= d->vertex_count)
+                return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                                     "facet %d: expected a vertex index in "
+                                     "0..%d, found %d",
+                                     i, d->vertex_count - 1, f->vertex[j]);
+        if (!(f->k >= 0.0 && f->k <= 1.0))
+            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                                 "facet %d: expected k in [0, 1], found %g",
+                                 i, f->k);
+    }
+    return RT_OK;
+}
+
+static void add_degenerate_warning(rt_scene *s, int facet, int line)
+{
+    rt_warning *w = &s->warnings[s->warning_count++];
+    w->line = line;
+    w->column = line > 0 ? 1 : 0;
+    const char *name = s->name ? s->name : "<memory>";
+    if (line > 0)
+        snprintf(w->message, sizeof w->message,
+                 "%s:%d:1: warning: facet %d has zero area (its vertices are "
+                 "collinear); it is never hit",
+                 name, line, facet + 1);
+    else
+        snprintf(w->message, sizeof w->message,
+                 "%s: warning: facet %d has zero area (its vertices are "
+                 "collinear); it is never hit",
+                 name, facet + 1);
+}
+
+rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
+                          const int *facet_lines, rt_scene **out,
+                          rt_error *error)
+{
+    *out = NULL;
+    rt_status status = check_desc(d, error);
+    if (status != RT_OK)
+        return status;
+    rt_scene *s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
+    const char *reason = rt__camera_make(d->observer, d->screen_center,
+                                         d->screen_right, d->width, d->height,
+                                         &s->camera);
+    if (reason != NULL) {
+        free(s);
+        return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
+                             "expected a camera, found that %s", reason);
+    }
+    size_t nv = (size_t)d->vertex_count, nf = (size_t)d->facet_count;
+    s->name = name ? strdup(name) : NULL;
+    s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
+    s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
+    s->tris = malloc((nf ? nf : 1) * sizeof *s->tris);
+    s->warnings = malloc((nf ? nf : 1) * sizeof *s->warnings);
+    if ((name && !s->name) || !s->vertices || !s->facets || !s->tris ||
+        !s->warnings) {
+        rt_scene_free(s);
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
+    }
+    if (nv > 0)
+        memcpy(s->vertices, d->vertices, nv * sizeof *s->vertices);
+    s->vertex_count = d->vertex_count;
+    s->facet_count = d->facet_count;
+    s->background = d->background;
+    s->light = d->light_position;
+    s->light_color = d->light_color;
+    double light[3] = {d->light_color.r, d->light_color.g, d->light_color.b};
+
+    for (int i = 0; i < d->facet_count; i++) {
+        const rt_facet_desc *f = &d->facets[i];
+        rt_facet_info *info = &s->facets[i];
+        rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
+                c = d->vertices[f->vertex[2]];
+        memcpy(info->vertex, f->vertex, sizeof info->vertex);
+        info->k = f->k;
+        info->color = f->color;
+        info->line = facet_lines ? facet_lines[i] : 0;
+        info->degenerate = rt__points_collinear(a, b, c);
+        info->normal = info->degenerate ? v3(0, 0, 0) : facet_normal(a, b, c);
+        if (info->degenerate) {
+            add_degenerate_warning(s, i, info->line);
+            continue;
+        }
+        rt_tri *t = &s->tris[s->tri_count++];
+        t->a = a, t->b = b, t->c = c;
+        t->normal = info->normal;
+        t->k = f->k;
+        double color[3] = {f->color.r, f->color.g, f->color.b};
+        for (int ch = 0; ch < 3; ch++)
+            t->diffuse[ch] = (1.0 - f->k) * light[ch] * color[ch] / 255.0;
+        t->facet = i;
+        s->reflective_count += f->k > 0.0;
+    }
+    *out = s;
+    return RT_OK;
+}
+
+rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
+                          rt_error *error)
+{
+    if (scene == NULL)
+        return RT_ERR_ARGUMENT;
+    *scene = NULL;
+    if (desc == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a scene description");
+    return rt__scene_build(desc, NULL, NULL, scene, error);
+}
+
+void rt_scene_free(rt_scene *scene)
+{
+    if (scene == NULL)
+        return;
+    free(scene->name);
+    free(scene->vertices);
+    free(scene->facets);
+    free(scene->tris);
+    free(scene->warnings);
+    free(scene);
+}
+
+void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
+{
+    memset(info, 0, sizeof *info);
+    info->width = s->camera.width;
+    info->height = s->camera.height;
+    info->vertex_count = s->vertex_count;
+    info->facet_count = s->facet_count;
+    info->live_facet_count = s->tri_count;
+    info->reflective_facet_count = s->reflective_count;
+    info->warning_count = s->warning_count;
+    info->background = s->background;
+    info->light_position = s->light;
+    info->light_color = s->light_color;
+    info->camera = s->camera;
+}
+
+rt_vec3 rt_scene_vertex(const rt_scene *scene, int i)
+{
+    return scene->vertices[i];
+}
+
+void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
+{
+    *facet = scene->facets[i];
+}
+
+const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
+{
+    return &scene->warnings[i];
+}
+
+int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
+                         rt_hit *hit)
+{
+    if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0)
+        return 0;
+    rt_ray_prep prep = rt__ray_prepare(ray.origin, ray.direction);
+    rt_tri_hit h;
+    uint64_t tests = 0;
+    if (!rt__nearest_hit(scene, &prep, t_max, -1, &h, &tests))
+        return 0;
+    const rt_tri *tri = &scene->tris[h.tri];
+    rt_vec3 error_bound;
+    hit->t = h.t;
+    hit->facet = tri->facet;
+    hit->point = rt__hit_point(tri, &h, &error_bound);
+    hit->normal = v3_dot(tri->normal, ray.direction) > 0.0
+                      ? v3_neg(tri->normal)
+                      : tri->normal;
+    return 1;
+}
+
+int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
+                      int skip_facet)
+{
+    rt_vec3 d = v3_sub(to, from);
+    if (!v3_is_finite(d) || v3_max_abs(d) == 0.0)
+        return 0;
+    int skip = -1;
+    for (int i = 0; skip_facet >= 0 && i < scene->tri_count; i++)
+        if (scene->tris[i].facet == skip_facet)
+            skip = i;
+    rt_ray_prep prep = rt__ray_prepare(from, d);
+    uint64_t tests = 0;
+    return rt__any_hit(scene, &prep, 1.0, skip, &tests);
+}
