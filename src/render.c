@@ -17,13 +17,23 @@
 #include <unistd.h>
 
 #include "raytrace/render.h"
-#include "shade.h"
+#include "kernel.h"
+#include "scene_internal.h"
 #include "vecmath.h"
+
+/* The kernel of the precision a render asked for. */
+typedef struct kernel_ref {
+    const rt_kernel_d *d;   /* exactly one of d and f is set */
+    const rt_kernel_f *f;
+} kernel_ref;
 
 /* One render call, shared by its threads. */
 typedef struct job {
     const rt_scene *scene;
     const rt_render_options *options;
+    kernel_ref kernel;
+    rt_trace_settings settings;
+    int grid;               /* samples per side of a pixel */
     rt_image *image;
     int row_end;
     atomic_int next_row;
@@ -31,6 +41,7 @@ typedef struct job {
     pthread_mutex_t callback_lock;
     pthread_mutex_t stats_lock;
     rt_counters totals;
+    uint64_t camera_rays;
     uint64_t pixels;
 } job;
 
@@ -39,6 +50,9 @@ void rt_render_options_init(rt_render_options *options)
     memset(options, 0, sizeof *options);
     options->max_depth = RT_DEFAULT_DEPTH;
     options->threads = 0;
+    options->precision = RT_PRECISION_DOUBLE;
+    options->samples = 1;
+    options->sampling = RT_SAMPLING_REGULAR;
 }
 
 unsigned char rt_channel_to_byte(double value)
@@ -53,28 +67,94 @@ unsigned char rt_channel_to_byte(double value)
 rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
 {
     rt_counters counters = {0};
+    rt_trace_settings settings = {max_depth, 0};
     if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
-    return rt__trace(scene, ray.origin, ray.direction, max_depth, &counters);
+    return rt__kernel_d_trace(scene->kernel, ray.origin, ray.direction,
+                              &settings, &counters);
+}
+
+/* A number in [0, 1) from a hash of three integers (a fixed function, so
+ * stratified images are the same on every run and thread count). */
+static double hash_unit(uint32_t a, uint32_t b, uint32_t c)
+{
+    uint32_t h = a * 0x9e3779b1u ^ (b + 0x7f4a7c15u) * 0x85ebca6bu ^
+                 (c + 0x165667b1u) * 0xc2b2ae35u;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return (h >> 8) * (1.0 / 16777216.0);
+}
+
+/* The primary ray through the point (x, y) of the image plane, in pixel
+ * units from the top-left corner (SPEC.md section 2 with i + 1/2 -> x). */
+static rt_ray camera_ray_at(const rt_camera *camera, double x, double y)
+{
+    double w = camera->width, h = camera->height;
+    double s = (2.0 * x - w) / w;
+    double t = (h - 2.0 * y) / w;
+    rt_vec3 p = v3_add(camera->screen_center,
+                       v3_add(v3_scale(camera->right, s),
+                              v3_scale(camera->up, t)));
+    return (rt_ray){camera->observer, v3_sub(p, camera->observer)};
+}
+
+static rt_color trace(const job *j, rt_ray ray, rt_counters *counters)
+{
+    if (j->kernel.d != NULL)
+        return rt__kernel_d_trace(j->kernel.d, ray.origin, ray.direction,
+                                  &j->settings, counters);
+    return rt__kernel_f_trace(j->kernel.f, ray.origin, ray.direction,
+                              &j->settings, counters);
+}
+
+/* The colour of pixel (i, row): the mean of its samples. */
+static rt_color render_pixel(const job *j, int i, int row,
+                             rt_counters *counters, uint64_t *rays)
+{
+    const rt_camera *camera = &j->scene->camera;
+    int n = j->grid;
+    if (n == 1) {
+        (*rays)++;
+        return trace(j, rt_camera_ray(camera, i, row), counters);
+    }
+    rt_color sum = {0.0, 0.0, 0.0};
+    int stratified = j->options->sampling == RT_SAMPLING_STRATIFIED;
+    for (int sy = 0; sy < n; sy++) {
+        for (int sx = 0; sx < n; sx++) {
+            uint32_t sample = (uint32_t)(sy * n + sx);
+            double u = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                              2 * sample)
+                                  : 0.5;
+            double v = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                              2 * sample + 1)
+                                  : 0.5;
+            rt_ray ray = camera_ray_at(camera, i + (sx + u) / n,
+                                       row + (sy + v) / n);
+            rt_color c = trace(j, ray, counters);
+            sum.r += c.r, sum.g += c.g, sum.b += c.b;
+            (*rays)++;
+        }
+    }
+    double inv = 1.0 / (n * n);
+    return (rt_color){sum.r * inv, sum.g * inv, sum.b * inv};
 }
 
 /* Renders one row; returns 0 if the render was cancelled meanwhile. */
 static int render_row(job *j, int row, rt_counters *counters,
-                      uint64_t *pixels)
+                      uint64_t *rays)
 {
-    const rt_camera *camera = &j->scene->camera;
     unsigned char *out = rt_image_pixel(j->image, 0, row);
-    for (int i = 0; i < camera->width; i++) {
+    for (int i = 0; i < j->scene->camera.width; i++) {
         if (atomic_load_explicit(&j->cancelled, memory_order_relaxed))
             return 0;
-        rt_ray ray = rt_camera_ray(camera, i, row);
-        rt_color c = rt__trace(j->scene, ray.origin, ray.direction,
-                               j->options->max_depth, counters);
+        rt_color c = render_pixel(j, i, row, counters, rays);
         out[3 * i + 0] = rt_channel_to_byte(c.r);
         out[3 * i + 1] = rt_channel_to_byte(c.g);
         out[3 * i + 2] = rt_channel_to_byte(c.b);
-        (*pixels)++;
     }
     return 1;
 }
@@ -83,13 +163,14 @@ static void *worker(void *argument)
 {
     job *j = argument;
     rt_counters counters = {0};
-    uint64_t pixels = 0;
+    uint64_t rays = 0, pixels = 0;
     for (;;) {
         int row = atomic_fetch_add(&j->next_row, 1);
         if (row >= j->row_end)
             break;
-        if (!render_row(j, row, &counters, &pixels))
+        if (!render_row(j, row, &counters, &rays))
             break;
+        pixels += (uint64_t)j->scene->camera.width;
         if (j->options->on_row != NULL) {
             pthread_mutex_lock(&j->callback_lock);
             int go_on = atomic_load(&j->cancelled) ||
@@ -107,6 +188,7 @@ static void *worker(void *argument)
     j->totals.tests += counters.tests;
     j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
     j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
+    j->camera_rays += rays;
     j->pixels += pixels;
     pthread_mutex_unlock(&j->stats_lock);
     return NULL;
@@ -134,7 +216,7 @@ static double now_seconds(void)
 static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
 {
     memset(stats, 0, sizeof *stats);
-    stats->camera_rays = j->pixels;
+    stats->camera_rays = j->camera_rays;
     stats->pixels = j->pixels;
     stats->shadow_rays = j->totals.shadow_rays;
     stats->reflection_rays = j->totals.reflection_rays;
@@ -157,12 +239,33 @@ rt_status rt_render_rows(const rt_scene *scene,
         image->width != scene->camera.width ||
         image->height != scene->camera.height ||
         image->stride < (size_t)image->width * 3 || options->max_depth < 0 ||
-        row_begin < 0 || row_end > image->height || row_begin > row_end)
+        row_begin < 0 || row_end > image->height || row_begin > row_end ||
+        (options->precision != RT_PRECISION_DOUBLE &&
+         options->precision != RT_PRECISION_FLOAT))
+        return RT_ERR_ARGUMENT;
+    int grid = 1;
+    while (grid * grid < options->samples && grid < 32)
+        grid++;
+    if (grid * grid != options->samples)
         return RT_ERR_ARGUMENT;
 
     double start = now_seconds();
     job j = {.scene = scene, .options = options, .image = image,
-             .row_end = row_end};
+             .row_end = row_end, .grid = grid,
+             .settings = {options->max_depth, options->fast_inv_sqrt != 0}};
+    /* A float render builds its own kernel: a double-only user never pays
+     * for float data, and the scene stays immutable. */
+    rt_kernel_f *float_kernel = NULL;
+    if (options->precision == RT_PRECISION_FLOAT) {
+        rt_kernel_source source;
+        rt__scene_kernel_source(scene, &source);
+        float_kernel = rt__kernel_f_create(&source);
+        if (float_kernel == NULL)
+            return RT_ERR_NOMEM;
+        j.kernel.f = float_kernel;
+    } else {
+        j.kernel.d = scene->kernel;
+    }
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
     pthread_mutex_init(&j.callback_lock, NULL);
@@ -187,6 +290,7 @@ rt_status rt_render_rows(const rt_scene *scene,
     free(threads);
     pthread_mutex_destroy(&j.callback_lock);
     pthread_mutex_destroy(&j.stats_lock);
+    rt__kernel_f_free(float_kernel);
 
     if (options->stats != NULL)
         fill_stats(&j, now_seconds() - start, options->stats);

@@ -12,7 +12,6 @@
 #include <string.h>
 
 #include "error.h"
-#include "intersect.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -183,9 +182,8 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
-    s->tris = malloc((nf ? nf : 1) * sizeof *s->tris);
     s->warnings = malloc((nf ? nf : 1) * sizeof *s->warnings);
-    if ((name && !s->name) || !s->vertices || !s->facets || !s->tris ||
+    if ((name && !s->name) || !s->vertices || !s->facets ||
         !s->warnings) {
         rt_scene_free(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
@@ -197,7 +195,6 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->background = d->background;
     s->light = d->light_position;
     s->light_color = d->light_color;
-    double light[3] = {d->light_color.r, d->light_color.g, d->light_color.b};
 
     for (int i = 0; i < d->facet_count; i++) {
         const rt_facet_desc *f = &d->facets[i];
@@ -214,15 +211,15 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
             add_degenerate_warning(s, i, info->line);
             continue;
         }
-        rt_tri *t = &s->tris[s->tri_count++];
-        t->a = a, t->b = b, t->c = c;
-        t->normal = info->normal;
-        t->k = f->k;
-        double color[3] = {f->color.r, f->color.g, f->color.b};
-        for (int ch = 0; ch < 3; ch++)
-            t->diffuse[ch] = (1.0 - f->k) * light[ch] * color[ch] / 255.0;
-        t->facet = i;
+        s->live_count++;
         s->reflective_count += f->k > 0.0;
+    }
+    rt_kernel_source source;
+    rt__scene_kernel_source(s, &source);
+    s->kernel = rt__kernel_d_create(&source);
+    if (s->kernel == NULL) {
+        rt_scene_free(s);
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
     *out = s;
     return RT_OK;
@@ -247,7 +244,7 @@ void rt_scene_free(rt_scene *scene)
     free(scene->name);
     free(scene->vertices);
     free(scene->facets);
-    free(scene->tris);
+    rt__kernel_d_free(scene->kernel);
     free(scene->warnings);
     free(scene);
 }
@@ -259,7 +256,7 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
     info->height = s->camera.height;
     info->vertex_count = s->vertex_count;
     info->facet_count = s->facet_count;
-    info->live_facet_count = s->tri_count;
+    info->live_facet_count = s->live_count;
     info->reflective_facet_count = s->reflective_count;
     info->warning_count = s->warning_count;
     info->background = s->background;
@@ -283,38 +280,31 @@ const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
     return &scene->warnings[i];
 }
 
+void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
+{
+    source->vertices = s->vertices;
+    source->facets = s->facets;
+    source->facet_count = s->facet_count;
+    source->light_position = s->light;
+    source->light_color = s->light_color;
+    source->background = s->background;
+}
+
 int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
                          rt_hit *hit)
 {
-    if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0)
+    rt_kernel_hit h;
+    if (!rt__kernel_d_nearest_hit(scene->kernel, ray, t_max, &h))
         return 0;
-    rt_ray_prep prep = rt__ray_prepare(ray.origin, ray.direction);
-    rt_tri_hit h;
-    uint64_t tests = 0;
-    if (!rt__nearest_hit(scene, &prep, t_max, -1, &h, &tests))
-        return 0;
-    const rt_tri *tri = &scene->tris[h.tri];
-    rt_vec3 error_bound;
     hit->t = h.t;
-    hit->facet = tri->facet;
-    hit->point = rt__hit_point(tri, &h, &error_bound);
-    hit->normal = v3_dot(tri->normal, ray.direction) > 0.0
-                      ? v3_neg(tri->normal)
-                      : tri->normal;
+    hit->facet = h.facet;
+    hit->point = h.point;
+    hit->normal = h.normal;
     return 1;
 }
 
 int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
                       int skip_facet)
 {
-    rt_vec3 d = v3_sub(to, from);
-    if (!v3_is_finite(d) || v3_max_abs(d) == 0.0)
-        return 0;
-    int skip = -1;
-    for (int i = 0; skip_facet >= 0 && i < scene->tri_count; i++)
-        if (scene->tris[i].facet == skip_facet)
-            skip = i;
-    rt_ray_prep prep = rt__ray_prepare(from, d);
-    uint64_t tests = 0;
-    return rt__any_hit(scene, &prep, 1.0, skip, &tests);
+    return rt__kernel_d_occluded(scene->kernel, from, to, skip_facet);
 }

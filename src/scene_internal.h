@@ -2,27 +2,16 @@
  * scene_internal.h - what an rt_scene holds (internal).
  *
  * A scene keeps two views of its facets: the records as the file gave them
- * (for accessors and the course's API), and a compact array of the facets
- * that can be hit, with everything the renderer needs precomputed once
- * (vertices, unit normal, the diffuse factor (1 - k) C_S C_F / 255).
- * Zero-area facets are absent from the second array: the renderer never
- * spends a test on them.
+ * (for accessors and the course's API), and the double-precision kernel
+ * (kernel.h), which holds only the facets that can be hit, with what the
+ * renderer needs precomputed.  Zero-area facets are absent from the kernel:
+ * the renderer never spends a test on them.
  */
 #ifndef RAYTRACE_SCENE_INTERNAL_H
 #define RAYTRACE_SCENE_INTERNAL_H
 
-#include <stdint.h>
-
+#include "kernel.h"
 #include "raytrace/scene.h"
-
-/* A facet that can be hit, ready for the renderer. */
-typedef struct rt_tri {
-    rt_vec3 a, b, c;        /* vertices in file order */
-    rt_vec3 normal;         /* unit normal, (b - a) x (c - a) direction */
-    double k;               /* reflection coefficient */
-    double diffuse[3];      /* (1 - k) * C_S * C_F / 255 per channel */
-    int facet;              /* index of the facet record */
-} rt_tri;
 
 struct rt_scene {
     char *name;
@@ -36,8 +25,8 @@ struct rt_scene {
     rt_rgb8 background;
     rt_vec3 light;
     rt_rgb8 light_color;
-    rt_tri *tris;           /* the live facets, in file order */
-    int tri_count;
+    rt_kernel_d *kernel;    /* what the double-precision renderer reads */
+    int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
 };
 
@@ -56,6 +45,9 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
  */
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
                             int width, int height, rt_camera *camera);
+
+/* What a kernel of any precision is built from: the scene's own arrays. */
+void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
 
 /* Exact test: non-zero when the three points are collinear (including
  * coincident), evaluated without rounding error. */

@@ -46,24 +46,47 @@ typedef struct rt_render_stats {
  */
 typedef int (*rt_row_callback)(void *user, int row);
 
+/* The arithmetic of intersection and shading.  Double is the reference;
+ * float is faster and less accurate (docs/accuracy.md). */
+typedef enum rt_precision {
+    RT_PRECISION_DOUBLE = 0,
+    RT_PRECISION_FLOAT = 1
+} rt_precision;
+
+/* Where the samples of a pixel go when there are several. */
+typedef enum rt_sampling {
+    RT_SAMPLING_REGULAR = 0,    /* the centres of an n x n grid */
+    RT_SAMPLING_STRATIFIED = 1  /* one point per cell of the grid, placed by
+                                   a hash of the pixel and the sample, so the
+                                   image is the same on every run */
+} rt_sampling;
+
 typedef struct rt_render_options {
     int max_depth;              /* reflections after a primary ray; default 5 */
     int threads;                /* 0: one per online core (default); 1: the
                                    calling thread only */
+    rt_precision precision;     /* default RT_PRECISION_DOUBLE */
+    int fast_inv_sqrt;          /* non-zero: normalise vectors with the
+                                   handout's fastInvSqrt (one Newton step)
+                                   instead of 1/sqrt; default 0 */
+    int samples;                /* rays per pixel, a square n*n; default 1:
+                                   one ray through the pixel's centre, as
+                                   SPEC.md says; the pixel is their mean */
+    rt_sampling sampling;       /* default RT_SAMPLING_REGULAR */
     rt_row_callback on_row;     /* optional progress / cancellation */
     void *user;                 /* passed to on_row */
     rt_render_stats *stats;     /* optional; zeroed then filled */
 } rt_render_options;
 
-/* Sets the defaults: max_depth 5, all cores, no callback, no stats.
- * Thread-safe. */
+/* Sets the defaults: max_depth 5, all cores, double precision, exact
+ * square root, one sample per pixel, no callback, no stats.  Thread-safe. */
 void rt_render_options_init(rt_render_options *options);
 
 /*
  * Renders the whole image into `image`, which must be width x height of the
  * scene (see rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image
- * size, negative depth), RT_ERR_NOMEM (threads could not start: nothing is
- * rendered) or RT_ERR_CANCELLED (some rows are finished, the others hold
+ * size, negative depth, samples not a square in 1..1024), RT_ERR_NOMEM
+ * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the others hold
  * whatever they held before).  Thread-safe as long as no two calls write the
  * same rows of the same image.
  */

@@ -1,0 +1,73 @@
+/*
+ * kernel.h - the ray-tracing kernel, in double and in float (internal).
+ *
+ * One implementation (kernel_impl.h) is compiled twice, by kernel_double.c
+ * and kernel_float.c, so both precisions run exactly the same algorithm:
+ * the watertight intersection test, the error-bounded offset of secondary
+ * ray origins, and the shading of SPEC.md section 3.  A kernel is built from
+ * a scene's facet records and holds, in its own precision, only what the
+ * renderer reads: the facets that can be hit and their precomputed data.
+ * A kernel is immutable once built: any number of threads may trace with it.
+ */
+#ifndef RAYTRACE_KERNEL_H
+#define RAYTRACE_KERNEL_H
+
+#include <stdint.h>
+
+#include "raytrace/render.h"
+#include "raytrace/scene.h"
+
+/* What a kernel is built from. */
+typedef struct rt_kernel_source {
+    const rt_vec3 *vertices;
+    const rt_facet_info *facets;
+    int facet_count;
+    rt_vec3 light_position;
+    rt_rgb8 light_color;
+    rt_rgb8 background;
+} rt_kernel_source;
+
+/* Settings of one trace. */
+typedef struct rt_trace_settings {
+    int max_depth;
+    int fast_inv_sqrt;      /* normalise with the handout's fastInvSqrt */
+} rt_trace_settings;
+
+/* Work counters of one thread; summed into rt_render_stats at the end. */
+typedef struct rt_counters {
+    uint64_t shadow_rays;
+    uint64_t reflection_rays;
+    uint64_t tests;
+    uint64_t shadow_rays_skipped;
+    uint64_t reflection_rays_skipped;
+} rt_counters;
+
+/* A hit as the queries report it (in double whatever the precision). */
+typedef struct rt_kernel_hit {
+    double t;
+    int facet;              /* index of the facet record */
+    rt_vec3 point;
+    rt_vec3 normal;         /* unit, facing the ray's origin */
+} rt_kernel_hit;
+
+#define RT_KERNEL_DECLARE(suffix)                                            \
+    typedef struct rt_kernel_##suffix rt_kernel_##suffix;                    \
+    rt_kernel_##suffix *rt__kernel_##suffix##_create(                        \
+        const rt_kernel_source *source);                                     \
+    void rt__kernel_##suffix##_free(rt_kernel_##suffix *kernel);             \
+    int rt__kernel_##suffix##_live_count(const rt_kernel_##suffix *kernel);  \
+    rt_color rt__kernel_##suffix##_trace(                                    \
+        const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \
+        rt_vec3 direction, const rt_trace_settings *settings,                \
+        rt_counters *counters);                                              \
+    int rt__kernel_##suffix##_nearest_hit(const rt_kernel_##suffix *kernel,  \
+                                          rt_ray ray, double t_max,          \
+                                          rt_kernel_hit *hit);               \
+    int rt__kernel_##suffix##_occluded(const rt_kernel_##suffix *kernel,     \
+                                       rt_vec3 from, rt_vec3 to,             \
+                                       int skip_facet);
+
+RT_KERNEL_DECLARE(d)
+RT_KERNEL_DECLARE(f)
+
+#endif /* RAYTRACE_KERNEL_H */

@@ -1,0 +1,11 @@
+/*
+ * kernel_double.c - the ray-tracing kernel in double precision (the
+ * reference).  The implementation is kernel_impl.h.
+ */
+#include <float.h>
+
+#define REAL double
+#define REAL_EPS DBL_EPSILON
+#define KERNEL(name) rt__kernel_d_##name
+#define KERNEL_T rt_kernel_d
+#include "kernel_impl.h"

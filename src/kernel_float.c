@@ -1,0 +1,12 @@
+/*
+ * kernel_float.c - the ray-tracing kernel in single precision (faster,
+ * less accurate; docs/accuracy.md measures by how much).  The
+ * implementation is kernel_impl.h.
+ */
+#include <float.h>
+
+#define REAL float
+#define REAL_EPS FLT_EPSILON
+#define KERNEL(name) rt__kernel_f_##name
+#define KERNEL_T rt_kernel_f
+#include "kernel_impl.h"
