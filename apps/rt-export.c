@@ -22,7 +22,9 @@
 
 static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6] [--depth N]\n"
-    "                 [--threads N] [--check] [--stats] [--quiet]\n"
+    "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
+    "                 [--samples N] [--sampling regular|stratified]\n"
+    "                 [--check] [--stats] [--quiet]\n"
     "\n"
     "Renders SCENE.scn (a scene of triangles lit by one point light) to a\n"
     "PPM image and prints the path it wrote.\n"
@@ -33,6 +35,12 @@ static const char usage[] =
     "                    (default p6)\n"
     "  --depth N         reflections followed after a primary ray (default 5)\n"
     "  --threads N       rendering threads; 0 = one per core (default 0)\n"
+    "  --precision P     arithmetic of the renderer: double (the reference,\n"
+    "                    default) or float (faster, less accurate)\n"
+    "  --fast-sqrt       normalise vectors with the handout's fastInvSqrt\n"
+    "  --samples N       rays per pixel, a square (1, 4, 9, ...; default 1:\n"
+    "                    one ray through the pixel's centre)\n"
+    "  --sampling S      regular (grid centres, default) or stratified\n"
     "  --check           validate the scene and print what it holds; do not\n"
     "                    render\n"
     "  --stats           print the work done (rays, tests, time) on stderr\n"
@@ -48,6 +56,10 @@ typedef struct arguments {
     rt_ppm_format format;
     int depth;
     int threads;
+    rt_precision precision;
+    int fast_sqrt;
+    int samples;
+    rt_sampling sampling;
     int check;
     int stats;
     int quiet;
@@ -75,14 +87,18 @@ static int parse_int(const char *text, int min, int max, int *value)
 /* Returns -1 to go on, or an exit status. */
 static int parse_arguments(int argc, char **argv, arguments *a)
 {
-    *a = (arguments){.format = RT_PPM_P6, .depth = RT_DEFAULT_DEPTH};
+    *a = (arguments){.format = RT_PPM_P6, .depth = RT_DEFAULT_DEPTH,
+                     .samples = 1};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
         int takes_value = !strcmp(arg, "-o") || !strcmp(arg, "--output") ||
                           !strcmp(arg, "--format") ||
                           !strcmp(arg, "--depth") ||
-                          !strcmp(arg, "--threads");
+                          !strcmp(arg, "--threads") ||
+                          !strcmp(arg, "--precision") ||
+                          !strcmp(arg, "--samples") ||
+                          !strcmp(arg, "--sampling");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -109,6 +125,34 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             if (!parse_int(value, 0, 1024, &a->threads))
                 return usage_error("expected a thread count in 0..1024, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--precision")) {
+            if (!strcmp(value, "double"))
+                a->precision = RT_PRECISION_DOUBLE;
+            else if (!strcmp(value, "float"))
+                a->precision = RT_PRECISION_FLOAT;
+            else
+                return usage_error("expected double or float after "
+                                   "--precision, found '%s'", value);
+        } else if (!strcmp(arg, "--fast-sqrt")) {
+            a->fast_sqrt = 1;
+        } else if (!strcmp(arg, "--samples")) {
+            int root = 1;
+            if (!parse_int(value, 1, 1024, &a->samples))
+                return usage_error("expected a sample count in 1..1024, "
+                                   "found '%s'", value);
+            while (root * root < a->samples)
+                root++;
+            if (root * root != a->samples)
+                return usage_error("expected a square sample count (1, 4, "
+                                   "9, 16, ...), found '%s'", value);
+        } else if (!strcmp(arg, "--sampling")) {
+            if (!strcmp(value, "regular"))
+                a->sampling = RT_SAMPLING_REGULAR;
+            else if (!strcmp(value, "stratified"))
+                a->sampling = RT_SAMPLING_STRATIFIED;
+            else
+                return usage_error("expected regular or stratified after "
+                                   "--sampling, found '%s'", value);
         } else if (!strcmp(arg, "--check")) {
             a->check = 1;
         } else if (!strcmp(arg, "--stats")) {
@@ -276,6 +320,10 @@ int main(int argc, char **argv)
     rt_render_options_init(&options);
     options.max_depth = a.depth;
     options.threads = a.threads;
+    options.precision = a.precision;
+    options.fast_inv_sqrt = a.fast_sqrt;
+    options.samples = a.samples;
+    options.sampling = a.sampling;
     options.stats = &stats;
     if (!a.quiet && isatty(STDERR_FILENO)) {
         options.on_row = on_row;
