@@ -15,18 +15,23 @@
 # rt-export.  `make test` installs Check first and always turns them on.
 #
 # Builds are parallel: on every core, or within make's own job slots under
-# `make -jN` (hence the `+` on those recipes).  Variables: BUILD_TYPE
-# (Release), CMAKE_FLAGS (more -D options for the configure step),
-# CTEST_FLAGS (more options for ctest, e.g. -j8 or -R scene).
+# `make -jN` (hence the `+` on those recipes, which `make -n` runs too).
+#
+# Variables: BUILD_TYPE (Release), CMAKE_FLAGS (more -D options for the
+# configure step), CTEST_FLAGS (more options for ctest, e.g. -j8 or -R scene).
 BUILD_DIR   := build
 BUILD_TYPE  := Release
 CMAKE_FLAGS :=
 CTEST_FLAGS :=
 
+# CMake's generated makefiles are make run by make: no "Entering directory".
+MAKEFLAGS += --no-print-directory
+
 CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) \
             $(CMAKE_FLAGS)
 HAVE_CHECK = $$(pkg-config --exists check 2>/dev/null && echo ON || echo OFF)
-PARALLEL = $$(case "$$MAKEFLAGS" in *-j*) ;; \
+# Options before " -- " only: a variable set on the command line may hold -j.
+PARALLEL = $$(case " $${MAKEFLAGS%% -- *}" in *" -j"*) ;; \
               *) echo --parallel "$$(nproc 2>/dev/null || echo 4)" ;; esac)
 
 .PHONY: all run test tests clean
@@ -36,7 +41,7 @@ all:
 	+cmake --build $(BUILD_DIR) $(PARALLEL)
 
 run:
-	@$(CONFIGURE) -DRAYTRACE_TESTS=$(HAVE_CHECK) --log-level=WARNING
+	@$(CONFIGURE) -DRAYTRACE_TESTS=$(HAVE_CHECK) >/dev/null
 	+@cmake --build $(BUILD_DIR) $(PARALLEL) --target rt-export
 	@$(BUILD_DIR)/apps/rt-export scenes/cubes.scn -o cubes.ppm
 
