@@ -24,7 +24,7 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
-    "                 [--check] [--stats] [--quiet]\n"
+    "                 [--kernel auto|scalar] [--check] [--stats] [--quiet]\n"
     "\n"
     "Renders SCENE.scn (a scene of triangles lit by one point light) to a\n"
     "PPM image and prints the path it wrote.\n"
@@ -41,6 +41,9 @@ static const char usage[] =
     "  --samples N       rays per pixel, a square (1, 4, 9, ...; default 1:\n"
     "                    one ray through the pixel's centre)\n"
     "  --sampling S      regular (grid centres, default) or stratified\n"
+    "  --kernel K        auto (default: the fastest loops this processor\n"
+    "                    runs) or scalar (one facet at a time); the image\n"
+    "                    is the same\n"
     "  --check           validate the scene and print what it holds; do not\n"
     "                    render\n"
     "  --stats           print the work done (rays, tests, time) on stderr\n"
@@ -60,6 +63,7 @@ typedef struct arguments {
     int fast_sqrt;
     int samples;
     rt_sampling sampling;
+    rt_kernel_choice kernel;
     int check;
     int stats;
     int quiet;
@@ -98,7 +102,8 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--threads") ||
                           !strcmp(arg, "--precision") ||
                           !strcmp(arg, "--samples") ||
-                          !strcmp(arg, "--sampling");
+                          !strcmp(arg, "--sampling") ||
+                          !strcmp(arg, "--kernel");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -153,6 +158,14 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             else
                 return usage_error("expected regular or stratified after "
                                    "--sampling, found '%s'", value);
+        } else if (!strcmp(arg, "--kernel")) {
+            if (!strcmp(value, "auto"))
+                a->kernel = RT_KERNEL_AUTO;
+            else if (!strcmp(value, "scalar"))
+                a->kernel = RT_KERNEL_SCALAR;
+            else
+                return usage_error("expected auto or scalar after --kernel, "
+                                   "found '%s'", value);
         } else if (!strcmp(arg, "--check")) {
             a->check = 1;
         } else if (!strcmp(arg, "--stats")) {
@@ -324,6 +337,7 @@ int main(int argc, char **argv)
     options.fast_inv_sqrt = a.fast_sqrt;
     options.samples = a.samples;
     options.sampling = a.sampling;
+    options.kernel = a.kernel;
     options.stats = &stats;
     if (!a.quiet && isatty(STDERR_FILENO)) {
         options.on_row = on_row;

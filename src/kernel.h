@@ -31,6 +31,7 @@ typedef struct rt_kernel_source {
 typedef struct rt_trace_settings {
     int max_depth;
     int fast_inv_sqrt;      /* normalise with the handout's fastInvSqrt */
+    rt_kernel_choice kernel;    /* RT_KERNEL_SCALAR: the plain loops */
 } rt_trace_settings;
 
 /* Work counters of one thread; summed into rt_render_stats at the end. */

@@ -5,6 +5,7 @@
 #include <float.h>
 
 #define REAL double
+#define REAL_IS_FLOAT 0
 #define REAL_EPS DBL_EPSILON
 #define KERNEL(name) rt__kernel_d_##name
 #define KERNEL_T rt_kernel_d

@@ -6,6 +6,7 @@
 #include <float.h>
 
 #define REAL float
+#define REAL_IS_FLOAT 1
 #define REAL_EPS FLT_EPSILON
 #define KERNEL(name) rt__kernel_f_##name
 #define KERNEL_T rt_kernel_f

@@ -45,9 +45,14 @@ typedef struct tri {
     int facet;              /* index of the facet record */
 } tri;
 
+typedef struct block block;     /* eight facets, kernel_simd_impl.h */
+
 struct KERNEL_T {
     tri *tris;
     int count;
+    block *blocks;          /* the same facets, eight by eight */
+    int block_count;
+    int avx2;               /* the processor runs the AVX2 loops */
     vec light;
     REAL background[3];
 };
@@ -170,8 +175,8 @@ static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
 }
 
 /* Nearest hit, all facets but `skip`; equal t keeps the lower index. */
-static int nearest(const KERNEL_T *k, const ray *r, REAL t_max, int skip,
-                   hit *h, uint64_t *tests)
+static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
+                          int skip, hit *h, uint64_t *tests)
 {
     int found = 0;
     hit candidate;
@@ -188,8 +193,8 @@ static int nearest(const KERNEL_T *k, const ray *r, REAL t_max, int skip,
 }
 
 /* Any hit in (0, t_max), all facets but `skip`; stops at the first. */
-static int any_hit(const KERNEL_T *k, const ray *r, REAL t_max, int skip,
-                   uint64_t *tests)
+static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
+                          int skip, uint64_t *tests)
 {
     hit ignored;
     uint64_t made = 0;
@@ -202,6 +207,34 @@ static int any_hit(const KERNEL_T *k, const ray *r, REAL t_max, int skip,
     }
     *tests += made;
     return found;
+}
+
+#include "kernel_simd_impl.h"
+
+/* The loops a trace uses: AVX2 when the processor has it and the caller
+ * did not ask for the scalar ones.  Both give the same hits. */
+static int nearest(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
+                   int skip, hit *h, uint64_t *tests)
+{
+#if HAVE_AVX2_KERNEL
+    if (simd)
+        return nearest_avx2(k, r, t_max, skip, h, tests);
+#else
+    (void)simd;
+#endif
+    return nearest_scalar(k, r, t_max, skip, h, tests);
+}
+
+static int any_hit(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
+                   int skip, uint64_t *tests)
+{
+#if HAVE_AVX2_KERNEL
+    if (simd)
+        return any_hit_avx2(k, r, t_max, skip, tests);
+#else
+    (void)simd;
+#endif
+    return any_hit_scalar(k, r, t_max, skip, tests);
 }
 
 /* Higham's gamma(n) = n u / (1 - n u), u the unit roundoff. */
@@ -246,8 +279,8 @@ static vec offset_origin(vec point, vec error_bound, vec normal,
 /* Adds E (N.S) (1 - k) C_S C_F / 255, weighted, to color. */
 static void add_direct_light(const KERNEL_T *k, const tri *f, int index,
                              vec point, vec error_bound, vec normal,
-                             REAL weight, int fast, REAL color[3],
-                             rt_counters *counters)
+                             REAL weight, int fast, int simd,
+                             REAL color[3], rt_counters *counters)
 {
     vec to_light = sub(k->light, point);
     if (f->k == 1 || !(dot(normal, to_light) > 0)) {
@@ -257,7 +290,7 @@ static void add_direct_light(const KERNEL_T *k, const tri *f, int index,
     vec origin = offset_origin(point, error_bound, normal, to_light);
     ray shadow = prepare(origin, sub(k->light, origin));
     counters->shadow_rays++;
-    if (any_hit(k, &shadow, 1, index, &counters->tests))
+    if (any_hit(k, simd, &shadow, 1, index, &counters->tests))
         return;
     REAL w = weight * dot(normal, normalize(to_light, fast));
     for (int c = 0; c < 3; c++)
@@ -278,12 +311,13 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
     REAL color[3] = {0, 0, 0};
     REAL weight = 1;
     int skip = -1, fast = settings->fast_inv_sqrt;
+    int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
     vec origin = from_rt(origin_d);
     vec incoming = normalize(from_rt(direction_d), fast);
     for (int bounce = 0;; bounce++) {
         ray r = prepare(origin, incoming);
         hit h;
-        if (!nearest(k, &r, INFINITY, skip, &h, &counters->tests)) {
+        if (!nearest(k, simd, &r, INFINITY, skip, &h, &counters->tests)) {
             for (int c = 0; c < 3; c++)
                 color[c] += weight * k->background[c];
             break;
@@ -293,7 +327,7 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
         vec point = hit_point(f, &h, &error_bound);
         vec normal = dot(f->normal, incoming) > 0 ? neg(f->normal) : f->normal;
         add_direct_light(k, f, h.index, point, error_bound, normal, weight,
-                         fast, color, counters);
+                         fast, simd, color, counters);
         if (f->k == 0) {
             counters->reflection_rays_skipped += bounce < settings->max_depth;
             break;
@@ -321,6 +355,14 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
         free(k);
         return NULL;
     }
+    int block_count = (s->facet_count + BLOCK_LANES - 1) / BLOCK_LANES;
+    k->blocks = aligned_alloc(32, (size_t)(block_count > 0 ? block_count : 1) *
+                                      sizeof *k->blocks);
+    if (k->blocks == NULL) {
+        free(k->tris);
+        free(k);
+        return NULL;
+    }
     k->light = from_rt(s->light_position);
     REAL light[3] = {s->light_color.r, s->light_color.g, s->light_color.b};
     k->background[0] = s->background.r;
@@ -341,13 +383,18 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
             f->diffuse[c] = (1 - f->k) * light[c] * color[c] / 255;
         f->facet = i;
     }
+    k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
+    fill_blocks(k->blocks, k->tris, k->count);
+    k->avx2 = cpu_has_avx2();
     return k;
 }
 
 void KERNEL(free)(KERNEL_T *k)
 {
-    if (k != NULL)
+    if (k != NULL) {
         free(k->tris);
+        free(k->blocks);
+    }
     free(k);
 }
 
@@ -366,7 +413,7 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
     ray r = prepare(from_rt(query.origin), direction);
     hit h;
     uint64_t tests = 0;
-    if (!nearest(k, &r, (REAL)t_max, -1, &h, &tests))
+    if (!nearest(k, k->avx2, &r, (REAL)t_max, -1, &h, &tests))
         return 0;
     const tri *f = &k->tris[h.index];
     vec error_bound;
@@ -391,5 +438,5 @@ int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
             skip = i;
     ray r = prepare(o, d);
     uint64_t tests = 0;
-    return any_hit(k, &r, 1, skip, &tests);
+    return any_hit(k, k->avx2, &r, 1, skip, &tests);
 }

@@ -67,7 +67,7 @@ unsigned char rt_channel_to_byte(double value)
 rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
 {
     rt_counters counters = {0};
-    rt_trace_settings settings = {max_depth, 0};
+    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO};
     if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
@@ -241,7 +241,9 @@ rt_status rt_render_rows(const rt_scene *scene,
         image->stride < (size_t)image->width * 3 || options->max_depth < 0 ||
         row_begin < 0 || row_end > image->height || row_begin > row_end ||
         (options->precision != RT_PRECISION_DOUBLE &&
-         options->precision != RT_PRECISION_FLOAT))
+         options->precision != RT_PRECISION_FLOAT) ||
+        (options->kernel != RT_KERNEL_AUTO &&
+         options->kernel != RT_KERNEL_SCALAR))
         return RT_ERR_ARGUMENT;
     int grid = 1;
     while (grid * grid < options->samples && grid < 32)
@@ -252,7 +254,8 @@ rt_status rt_render_rows(const rt_scene *scene,
     double start = now_seconds();
     job j = {.scene = scene, .options = options, .image = image,
              .row_end = row_end, .grid = grid,
-             .settings = {options->max_depth, options->fast_inv_sqrt != 0}};
+             .settings = {options->max_depth, options->fast_inv_sqrt != 0,
+                          options->kernel}};
     /* A float render builds its own kernel: a double-only user never pays
      * for float data, and the scene stays immutable. */
     rt_kernel_f *float_kernel = NULL;

@@ -1,0 +1,214 @@
+/*
+ * kernel_simd_impl.h - the fast facet loops of kernel_impl.h: facets in
+ * blocks of eight, structure of arrays, tested with AVX2 (included by
+ * kernel_impl.h; everything here is static).
+ *
+ * The vector code is a filter, not a second intersection test.  For each
+ * lane it computes the three edge functions u, v, w with exactly the
+ * operations of intersect() in kernel_impl.h (same order, no FMA: the build
+ * uses -ffp-contract=off and these functions are not compiled for FMA), so
+ * each value is bit-for-bit the scalar one.  A lane where some edge function
+ * is strictly negative and another strictly positive cannot be hit: the
+ * scalar test rejects it too (a non-zero edge function is never recomputed,
+ * and a NaN one always ends in a rejection).  Every other lane - the ray's
+ * line passes through the facet, or an edge function is 0 or NaN - goes to
+ * the scalar intersect() itself, in index order.  So the fast loops give the
+ * same hits, the same t and the same ties as the scalar loops, including the
+ * exact-sign fallback, while the scalar test runs only for the few facets a
+ * ray's line actually meets.
+ *
+ * The AVX2 code is compiled only for x86-64 with GCC or Clang, as functions
+ * with __attribute__((target("avx2"))), and chosen at run time when the
+ * processor has AVX2; elsewhere only the scalar loops exist.
+ */
+
+#define BLOCK_LANES 8
+
+/* Eight facets' vertices, structure of arrays: v[vertex][axis][lane] with
+ * vertex a, b, c and axis x, y, z.  Lanes past the last facet hold zeros
+ * and are masked out. */
+typedef struct block {
+    REAL v[3][3][BLOCK_LANES];
+} block;
+
+/* Fills blocks[0 .. ceil(count / 8)) from the facets' vertices. */
+static void fill_blocks(block *blocks, const tri *tris, int count)
+{
+    int block_count = (count + BLOCK_LANES - 1) / BLOCK_LANES;
+    memset(blocks, 0, (size_t)block_count * sizeof *blocks);
+    for (int i = 0; i < count; i++) {
+        block *b = &blocks[i / BLOCK_LANES];
+        int lane = i % BLOCK_LANES;
+        const vec *vertex[3] = {&tris[i].a, &tris[i].b, &tris[i].c};
+        for (int j = 0; j < 3; j++) {
+            b->v[j][0][lane] = vertex[j]->x;
+            b->v[j][1][lane] = vertex[j]->y;
+            b->v[j][2][lane] = vertex[j]->z;
+        }
+    }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define HAVE_AVX2_KERNEL 1
+#include <immintrin.h>
+
+#define AVX2 __attribute__((target("avx2")))
+
+#if REAL_IS_FLOAT
+typedef __m256 vreal;
+#define VW 8
+#define v_set1 _mm256_set1_ps
+#define v_load _mm256_load_ps
+#define v_sub _mm256_sub_ps
+#define v_mul _mm256_mul_ps
+#define v_min _mm256_min_ps
+#define v_max _mm256_max_ps
+#define v_and _mm256_and_ps
+#define v_zero _mm256_setzero_ps
+#define v_cmp _mm256_cmp_ps
+#define v_movemask _mm256_movemask_ps
+#else
+typedef __m256d vreal;
+#define VW 4
+#define v_set1 _mm256_set1_pd
+#define v_load _mm256_load_pd
+#define v_sub _mm256_sub_pd
+#define v_mul _mm256_mul_pd
+#define v_min _mm256_min_pd
+#define v_max _mm256_max_pd
+#define v_and _mm256_and_pd
+#define v_zero _mm256_setzero_pd
+#define v_cmp _mm256_cmp_pd
+#define v_movemask _mm256_movemask_pd
+#endif
+
+/* A prepared ray, broadcast to every lane. */
+typedef struct vray {
+    vreal ox, oy, oz;       /* the origin's kx, ky, kz coordinates */
+    vreal sx, sy;           /* the shear */
+    int kx, ky, kz;
+} vray;
+
+AVX2 static void broadcast(const ray *r, vray *q)
+{
+    q->ox = v_set1(get(r->origin, r->kx));
+    q->oy = v_set1(get(r->origin, r->ky));
+    q->oz = v_set1(get(r->origin, r->kz));
+    q->sx = v_set1(r->sx);
+    q->sy = v_set1(r->sy);
+    q->kx = r->kx;
+    q->ky = r->ky;
+    q->kz = r->kz;
+}
+
+/*
+ * Bit i set when lane i of *b may be hit: all but the lanes whose edge
+ * functions have strictly opposite signs.  Same operations as intersect().
+ */
+AVX2 static inline unsigned block_candidates(const block *b, const vray *q)
+{
+    unsigned mask = 0;
+    for (int h = 0; h < BLOCK_LANES; h += VW) {
+        vreal az = v_sub(v_load(&b->v[0][q->kz][h]), q->oz);
+        vreal bz = v_sub(v_load(&b->v[1][q->kz][h]), q->oz);
+        vreal cz = v_sub(v_load(&b->v[2][q->kz][h]), q->oz);
+        vreal ax = v_sub(v_sub(v_load(&b->v[0][q->kx][h]), q->ox),
+                         v_mul(q->sx, az));
+        vreal ay = v_sub(v_sub(v_load(&b->v[0][q->ky][h]), q->oy),
+                         v_mul(q->sy, az));
+        vreal bx = v_sub(v_sub(v_load(&b->v[1][q->kx][h]), q->ox),
+                         v_mul(q->sx, bz));
+        vreal by = v_sub(v_sub(v_load(&b->v[1][q->ky][h]), q->oy),
+                         v_mul(q->sy, bz));
+        vreal cx = v_sub(v_sub(v_load(&b->v[2][q->kx][h]), q->ox),
+                         v_mul(q->sx, cz));
+        vreal cy = v_sub(v_sub(v_load(&b->v[2][q->ky][h]), q->oy),
+                         v_mul(q->sy, cz));
+        vreal u = v_sub(v_mul(cx, by), v_mul(cy, bx));
+        vreal v = v_sub(v_mul(ax, cy), v_mul(ay, cx));
+        vreal w = v_sub(v_mul(bx, ay), v_mul(by, ax));
+        vreal low = v_min(u, v_min(v, w)), high = v_max(u, v_max(v, w));
+        vreal outside = v_and(v_cmp(low, v_zero(), _CMP_LT_OQ),
+                              v_cmp(high, v_zero(), _CMP_GT_OQ));
+        unsigned out = (unsigned)v_movemask(outside);
+        mask |= (~out & ((1u << VW) - 1)) << h;
+    }
+    return mask;
+}
+
+/* The lanes of block `b` that hold facets. */
+static inline unsigned block_lanes(const KERNEL_T *k, int b)
+{
+    int left = k->count - b * BLOCK_LANES;
+    return left >= BLOCK_LANES ? 0xffu : (1u << left) - 1;
+}
+
+/* nearest() with the AVX2 filter: same result, same test count. */
+AVX2 static int nearest_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
+                             int skip, hit *h, uint64_t *tests)
+{
+    vray q;
+    broadcast(r, &q);
+    int found = 0;
+    hit candidate;
+    for (int b = 0; b < k->block_count; b++) {
+        unsigned m = block_candidates(&k->blocks[b], &q);
+        if (m == 0)
+            continue;
+        m &= block_lanes(k, b);
+        while (m != 0) {
+            int i = b * BLOCK_LANES + __builtin_ctz(m);
+            m &= m - 1;
+            if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
+                candidate.index = i;
+                *h = candidate;
+                t_max = candidate.t;
+                found = 1;
+            }
+        }
+    }
+    *tests += (uint64_t)k->count - (skip >= 0);
+    return found;
+}
+
+/* any_hit() with the AVX2 filter; stops after the block of the first hit
+ * and counts the facets of the blocks it went through. */
+AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
+                             int skip, uint64_t *tests)
+{
+    vray q;
+    broadcast(r, &q);
+    hit ignored;
+    int b;
+    for (b = 0; b < k->block_count; b++) {
+        unsigned m = block_candidates(&k->blocks[b], &q);
+        if (m == 0)
+            continue;
+        m &= block_lanes(k, b);
+        while (m != 0) {
+            int i = b * BLOCK_LANES + __builtin_ctz(m);
+            m &= m - 1;
+            if (i != skip && intersect(r, &k->tris[i], t_max, &ignored)) {
+                int made = (b + 1) * BLOCK_LANES;
+                if (made > k->count)
+                    made = k->count;
+                *tests += (uint64_t)made - (skip >= 0 && skip < made);
+                return 1;
+            }
+        }
+    }
+    *tests += (uint64_t)k->count - (skip >= 0);
+    return 0;
+}
+
+/* Non-zero when this processor runs the AVX2 loops. */
+static int cpu_has_avx2(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+}
+
+#else /* no AVX2 kernel: the scalar loops only */
+#define HAVE_AVX2_KERNEL 0
+static int cpu_has_avx2(void) { return 0; }
+#endif
