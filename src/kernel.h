@@ -41,6 +41,8 @@ typedef struct rt_counters {
     uint64_t tests;
     uint64_t shadow_rays_skipped;
     uint64_t reflection_rays_skipped;
+    uint64_t early_exit_saved;  /* facets a shadow ray did not test after
+                                   its first hit */
 } rt_counters;
 
 /* A hit as the queries report it (in double whatever the precision). */

@@ -194,7 +194,7 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
 
 /* Any hit in (0, t_max), all facets but `skip`; stops at the first. */
 static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
-                          int skip, uint64_t *tests)
+                          int skip, uint64_t *tests, uint64_t *saved)
 {
     hit ignored;
     uint64_t made = 0;
@@ -206,6 +206,7 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
         found = intersect(r, &k->tris[i], t_max, &ignored);
     }
     *tests += made;
+    *saved += (uint64_t)k->count - (skip >= 0) - made;
     return found;
 }
 
@@ -226,15 +227,15 @@ static int nearest(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
 }
 
 static int any_hit(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
-                   int skip, uint64_t *tests)
+                   int skip, uint64_t *tests, uint64_t *saved)
 {
 #if HAVE_AVX2_KERNEL
     if (simd)
-        return any_hit_avx2(k, r, t_max, skip, tests);
+        return any_hit_avx2(k, r, t_max, skip, tests, saved);
 #else
     (void)simd;
 #endif
-    return any_hit_scalar(k, r, t_max, skip, tests);
+    return any_hit_scalar(k, r, t_max, skip, tests, saved);
 }
 
 /* Higham's gamma(n) = n u / (1 - n u), u the unit roundoff. */
@@ -290,7 +291,8 @@ static void add_direct_light(const KERNEL_T *k, const tri *f, int index,
     vec origin = offset_origin(point, error_bound, normal, to_light);
     ray shadow = prepare(origin, sub(k->light, origin));
     counters->shadow_rays++;
-    if (any_hit(k, simd, &shadow, 1, index, &counters->tests))
+    if (any_hit(k, simd, &shadow, 1, index, &counters->tests,
+                &counters->early_exit_saved))
         return;
     REAL w = weight * dot(normal, normalize(to_light, fast));
     for (int c = 0; c < 3; c++)
@@ -437,6 +439,6 @@ int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
         if (k->tris[i].facet == skip_facet)
             skip = i;
     ray r = prepare(o, d);
-    uint64_t tests = 0;
-    return any_hit(k, k->avx2, &r, 1, skip, &tests);
+    uint64_t tests = 0, saved = 0;
+    return any_hit(k, k->avx2, &r, 1, skip, &tests, &saved);
 }

@@ -188,6 +188,7 @@ static void *worker(void *argument)
     j->totals.tests += counters.tests;
     j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
     j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
+    j->totals.early_exit_saved += counters.early_exit_saved;
     j->camera_rays += rays;
     j->pixels += pixels;
     pthread_mutex_unlock(&j->stats_lock);
@@ -224,6 +225,15 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
     stats->shadow_rays_skipped = j->totals.shadow_rays_skipped;
     stats->reflection_rays_skipped = j->totals.reflection_rays_skipped;
     stats->seconds = seconds;
+    /* what a renderer that skips nothing would test on top */
+    uint64_t live = (uint64_t)j->scene->live_count;
+    uint64_t dead = (uint64_t)(j->scene->facet_count - j->scene->live_count);
+    uint64_t skipped_rays = stats->shadow_rays_skipped +
+                            stats->reflection_rays_skipped;
+    uint64_t cast = stats->camera_rays + stats->shadow_rays +
+                    stats->reflection_rays;
+    stats->ray_facet_tests_skipped =
+        skipped_rays * (live + dead) + cast * dead + j->totals.early_exit_saved;
 }
 
 rt_status rt_render_rows(const rt_scene *scene,

@@ -27,7 +27,13 @@ extern "C" {
 
 #define RT_DEFAULT_DEPTH 5
 
-/* Counters of the work a render did; filled when options.stats is set. */
+/*
+ * Counters of the work a render did; filled when options.stats is set.
+ * The "skipped" counts compare with a renderer that skips nothing: one that
+ * casts a shadow ray at every hit, a reflected ray at every hit before the
+ * depth limit, tests every facet of the file (zero-area ones too) and lets
+ * shadow rays test every facet even after a hit.
+ */
 typedef struct rt_render_stats {
     uint64_t camera_rays;
     uint64_t shadow_rays;
@@ -37,6 +43,12 @@ typedef struct rt_render_stats {
     uint64_t reflection_rays_skipped; /* k = 0: no ray needed */
     uint64_t pixels;
     double seconds;                   /* wall-clock time of the render */
+    uint64_t ray_facet_tests_skipped; /* tests the renderer that skips
+                                         nothing would make on top: the
+                                         skipped rays (one pass each; their
+                                         own reflections not counted), the
+                                         zero-area facets, the shadow rays'
+                                         tests after their first hit */
 } rt_render_stats;
 
 /*

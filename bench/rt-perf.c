@@ -1,0 +1,289 @@
+/*
+ * rt-perf - the speed benchmark of docs/performance.md (issue 7).
+ *
+ * Renders a fixed list of scenes - the project's cubes and mirror scenes at
+ * 400x400 and 1920x1080, the SPD scenes, and generated meshes (a tessellated
+ * sphere and a random soup of about 1,000, 10,000 and 100,000 facets) - with
+ * six renderer settings in the same run: the plain scalar loops and the fast
+ * kernel, in double and in float, the fast kernel on one thread and on all.
+ * Each is timed as the median of N renders (default 5); the program prints
+ * Markdown tables of Mrays/s, G ray-facet tests/s and the ratios, and checks
+ * that every setting of one precision gives the same image, byte for byte.
+ *
+ * A program, not a test: it takes minutes.  Run it on an idle machine.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench_scenes.h"
+#include "raytrace/raytrace.h"
+
+#define MAX_RUNS 101
+
+typedef enum { FROM_FILE, SPHERE, SOUP } scene_kind;
+
+typedef struct entry {
+    const char *name;
+    scene_kind kind;
+    const char *path;       /* FROM_FILE: relative to its directory */
+    int shared;             /* FROM_FILE: in the SPD directory */
+    int facets;             /* generated scenes */
+    int width, height;
+} entry;
+
+/* Image sizes keep the scalar renders of the big scenes to seconds. */
+static const entry entries[] = {
+    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 400, 400},
+    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 1920, 1080},
+    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 400, 400},
+    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 1920, 1080},
+    {"tetra-s2", FROM_FILE, "tetra-s2.scn", 1, 0, 400, 400},
+    {"tetra-s4", FROM_FILE, "tetra-s4.scn", 1, 0, 400, 400},
+    {"teapot-s2", FROM_FILE, "teapot-s2.scn", 1, 0, 400, 400},
+    {"mount-s2", FROM_FILE, "mount-s2.scn", 1, 0, 400, 400},
+    {"tetra-s6", FROM_FILE, "tetra-s6.scn", 1, 0, 200, 200},
+    {"gears-s2", FROM_FILE, "gears-s2.scn", 1, 0, 200, 200},
+    {"balls-s2", FROM_FILE, "balls-s2.scn", 1, 0, 200, 200},
+    {"sphere-1k", SPHERE, NULL, 0, 1000, 256, 256},
+    {"sphere-10k", SPHERE, NULL, 0, 10000, 128, 128},
+    {"sphere-100k", SPHERE, NULL, 0, 100000, 64, 64},
+    {"soup-1k", SOUP, NULL, 0, 1000, 256, 256},
+    {"soup-10k", SOUP, NULL, 0, 10000, 128, 128},
+    {"soup-100k", SOUP, NULL, 0, 100000, 64, 64},
+};
+#define ENTRY_COUNT ((int)(sizeof entries / sizeof entries[0]))
+
+/* The six settings, in the order of the tables. */
+typedef struct setting {
+    const char *name;
+    rt_precision precision;
+    rt_kernel_choice kernel;
+    int threads;            /* 0: all */
+} setting;
+
+static const setting settings[] = {
+    {"scalar double", RT_PRECISION_DOUBLE, RT_KERNEL_SCALAR, 1},
+    {"fast double 1t", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 1},
+    {"fast double all", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 0},
+    {"scalar float", RT_PRECISION_FLOAT, RT_KERNEL_SCALAR, 1},
+    {"fast float 1t", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 1},
+    {"fast float all", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 0},
+};
+#define SETTING_COUNT 6
+
+typedef struct result {
+    double seconds;         /* median */
+    rt_render_stats stats;  /* of the last run */
+} result;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static rt_status make_scene(const entry *e, const char *shared_dir,
+                            rt_scene **scene, rt_error *error)
+{
+    if (e->kind == SPHERE)
+        return bench_sphere(e->facets, e->width, e->height, scene, error);
+    if (e->kind == SOUP)
+        return bench_soup(e->facets, e->width, e->height, scene, error);
+    char path[8192];
+    int length = snprintf(path, sizeof path, "%s/%s",
+                          e->shared ? shared_dir : RT_SOURCE_DIR, e->path);
+    if (length < 0 || (size_t)length >= sizeof path)
+        return RT_ERR_ARGUMENT;
+    rt_scene *loaded;
+    rt_status status = rt_scene_load(path, &loaded, error);
+    if (status != RT_OK)
+        return status;
+    status = bench_resize(loaded, e->width, e->height, scene, error);
+    rt_scene_free(loaded);
+    return status;
+}
+
+/* Renders `runs` times with setting *s; 0 on failure. */
+static int measure(const rt_scene *scene, const setting *s, int runs,
+                   rt_image *image, result *r)
+{
+    double times[MAX_RUNS];
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.precision = s->precision;
+    options.kernel = s->kernel;
+    options.threads = s->threads;
+    options.stats = &r->stats;
+    for (int i = 0; i < runs; i++) {
+        double start = now();
+        if (rt_render(scene, &options, image) != RT_OK)
+            return 0;
+        times[i] = now() - start;
+    }
+    qsort(times, (size_t)runs, sizeof times[0], compare_double);
+    r->seconds = times[runs / 2];
+    return 1;
+}
+
+static uint64_t rays(const rt_render_stats *s)
+{
+    return s->camera_rays + s->shadow_rays + s->reflection_rays;
+}
+
+static int same_pixels(const rt_image *a, const rt_image *b)
+{
+    for (int y = 0; y < a->height; y++)
+        if (memcmp(rt_image_pixel(a, 0, y), rt_image_pixel(b, 0, y),
+                   (size_t)a->width * 3) != 0)
+            return 0;
+    return 1;
+}
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: rt-perf [--runs N] [--only NAME] [--spd DIR]\n"
+            "  --runs N    renders per setting, the median is kept "
+            "(default 5)\n"
+            "  --only NAME only the scenes whose name starts with NAME\n"
+            "  --spd DIR   the SPD scenes (default %s/spd-scenes)\n",
+            RT_SHARED_DIR);
+}
+
+int main(int argc, char **argv)
+{
+    int runs = 5;
+    const char *only = NULL;
+    char spd[4096];
+    snprintf(spd, sizeof spd, "%s/spd-scenes", RT_SHARED_DIR);
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--runs") && i + 1 < argc) {
+            runs = atoi(argv[++i]);
+        } else if (!strcmp(argv[i], "--only") && i + 1 < argc) {
+            only = argv[++i];
+        } else if (!strcmp(argv[i], "--spd") && i + 1 < argc) {
+            snprintf(spd, sizeof spd, "%s", argv[++i]);
+        } else {
+            usage();
+            return 2;
+        }
+    }
+    if (runs < 1 || runs > MAX_RUNS) {
+        usage();
+        return 2;
+    }
+
+    static result results[ENTRY_COUNT][SETTING_COUNT];
+    static int done[ENTRY_COUNT], identical[ENTRY_COUNT], facets[ENTRY_COUNT];
+    int failures = 0;
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        const entry *en = &entries[e];
+        if (only != NULL && strncmp(en->name, only, strlen(only)) != 0)
+            continue;
+        rt_scene *scene;
+        rt_error error;
+        if (make_scene(en, spd, &scene, &error) != RT_OK) {
+            fprintf(stderr, "rt-perf: %s: %s (skipped)\n", en->name,
+                    error.message);
+            continue;
+        }
+        rt_scene_info info;
+        rt_scene_get_info(scene, &info);
+        facets[e] = info.live_facet_count;
+        rt_image images[SETTING_COUNT] = {{0}};
+        int ok = 1;
+        for (int s = 0; s < SETTING_COUNT && ok; s++) {
+            fprintf(stderr, "\r%-12s %4dx%-4d %-16s", en->name, en->width,
+                    en->height, settings[s].name);
+            ok = rt_image_create(&images[s], en->width, en->height) == RT_OK &&
+                 measure(scene, &settings[s], runs, &images[s],
+                         &results[e][s]);
+        }
+        if (ok) {
+            done[e] = 1;
+            identical[e] = same_pixels(&images[0], &images[1]) &&
+                           same_pixels(&images[0], &images[2]) &&
+                           same_pixels(&images[3], &images[4]) &&
+                           same_pixels(&images[3], &images[5]);
+            failures += !identical[e];
+        } else {
+            fprintf(stderr, "\nrt-perf: %s: rendering failed\n", en->name);
+            failures++;
+        }
+        for (int s = 0; s < SETTING_COUNT; s++)
+            rt_image_destroy(&images[s]);
+        rt_scene_free(scene);
+    }
+    fprintf(stderr, "\r%60s\r", "");
+
+    printf("Median of %d renders.  Rates: Mrays/s (all rays: camera, shadow, "
+           "reflection) / G ray-facet tests/s.\n\n", runs);
+    printf("| scene | facets | image |");
+    for (int s = 0; s < SETTING_COUNT; s++)
+        printf(" %s |", settings[s].name);
+    printf("\n|---|--:|--:|");
+    for (int s = 0; s < SETTING_COUNT; s++)
+        printf("--:|");
+    printf("\n");
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        if (!done[e])
+            continue;
+        printf("| %s | %d | %dx%d |", entries[e].name, facets[e],
+               entries[e].width, entries[e].height);
+        for (int s = 0; s < SETTING_COUNT; s++) {
+            const result *r = &results[e][s];
+            printf(" %.2f / %.3f |", rays(&r->stats) / r->seconds * 1e-6,
+                   r->stats.ray_facet_tests / r->seconds * 1e-9);
+        }
+        printf("\n");
+    }
+
+    printf("\nRatios of render times (higher is faster); `same image`: the "
+           "three settings of each precision gave identical bytes.\n\n");
+    printf("| scene | image | fast/scalar double (1 thread) | "
+           "fast float/scalar double (1 thread) | fast/scalar float "
+           "(1 thread) | all/1 thread double | all/1 thread float | "
+           "same image |\n|---|--:|--:|--:|--:|--:|--:|:-:|\n");
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        if (!done[e])
+            continue;
+        const result *r = results[e];
+        printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.2f | %.2f | %s |\n",
+               entries[e].name, entries[e].width, entries[e].height,
+               r[0].seconds / r[1].seconds, r[0].seconds / r[4].seconds,
+               r[3].seconds / r[4].seconds, r[1].seconds / r[2].seconds,
+               r[4].seconds / r[5].seconds, identical[e] ? "yes" : "NO");
+    }
+
+    printf("\nWork per render (double, fast kernel; the scalar loops cast the "
+           "same rays).  Skipped: rays the scene analysis left out (no "
+           "shadow ray where N.S <= 0 or k = 1, no reflection from k = 0).\n\n"
+           "| scene | image | camera rays | shadow rays | shadow skipped | "
+           "reflection rays | reflection skipped | tests | tests skipped |\n"
+           "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        if (!done[e])
+            continue;
+        const rt_render_stats *st = &results[e][1].stats;
+        printf("| %s | %dx%d | %llu | %llu | %llu | %llu | %llu | %llu | "
+               "%llu |\n",
+               entries[e].name, entries[e].width, entries[e].height,
+               (unsigned long long)st->camera_rays,
+               (unsigned long long)st->shadow_rays,
+               (unsigned long long)st->shadow_rays_skipped,
+               (unsigned long long)st->reflection_rays,
+               (unsigned long long)st->reflection_rays_skipped,
+               (unsigned long long)st->ray_facet_tests,
+               (unsigned long long)st->ray_facet_tests_skipped);
+    }
+    return failures ? 1 : 0;
+}
