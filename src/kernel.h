@@ -8,6 +8,11 @@
  * a scene's facet records and holds, in its own precision, only what the
  * renderer reads: the facets that can be hit and their precomputed data.
  * A kernel is immutable once built: any number of threads may trace with it.
+ *
+ * An eye is what one render adds to a kernel: the facets' vertices minus
+ * the camera's observer, computed once, so that the fast loops save those
+ * subtractions for every camera ray (rays from elsewhere ignore it).  It is
+ * immutable too, and must not outlive its kernel.
  */
 #ifndef RAYTRACE_KERNEL_H
 #define RAYTRACE_KERNEL_H
@@ -32,6 +37,8 @@ typedef struct rt_trace_settings {
     int max_depth;
     int fast_inv_sqrt;      /* normalise with the handout's fastInvSqrt */
     rt_kernel_choice kernel;    /* RT_KERNEL_SCALAR: the plain loops */
+    const void *eye;        /* NULL, or the rt_kernel_eye_d/_f (matching
+                               the kernel) of the camera rays' origin */
 } rt_trace_settings;
 
 /* Work counters of one thread; summed into rt_render_stats at the end. */
@@ -58,6 +65,10 @@ typedef struct rt_kernel_hit {
     rt_kernel_##suffix *rt__kernel_##suffix##_create(                        \
         const rt_kernel_source *source);                                     \
     void rt__kernel_##suffix##_free(rt_kernel_##suffix *kernel);             \
+    typedef struct rt_kernel_eye_##suffix rt_kernel_eye_##suffix;            \
+    rt_kernel_eye_##suffix *rt__kernel_##suffix##_eye_create(                \
+        const rt_kernel_##suffix *kernel, rt_vec3 eye);                      \
+    void rt__kernel_##suffix##_eye_free(rt_kernel_eye_##suffix *eye);        \
     int rt__kernel_##suffix##_live_count(const rt_kernel_##suffix *kernel);  \
     rt_color rt__kernel_##suffix##_trace(                                    \
         const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \

@@ -9,4 +9,5 @@
 #define REAL_EPS DBL_EPSILON
 #define KERNEL(name) rt__kernel_d_##name
 #define KERNEL_T rt_kernel_d
+#define KERNEL_EYE_T rt_kernel_eye_d
 #include "kernel_impl.h"

@@ -10,4 +10,5 @@
 #define REAL_EPS FLT_EPSILON
 #define KERNEL(name) rt__kernel_f_##name
 #define KERNEL_T rt_kernel_f
+#define KERNEL_EYE_T rt_kernel_eye_f
 #include "kernel_impl.h"

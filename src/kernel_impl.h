@@ -47,6 +47,12 @@ typedef struct tri {
 
 typedef struct block block;     /* eight facets, kernel_simd_impl.h */
 
+/* The vertices minus one ray origin, for the rays that start there. */
+struct KERNEL_EYE_T {
+    vec origin;
+    block *blocks;
+};
+
 struct KERNEL_T {
     tri *tris;
     int count;
@@ -214,14 +220,19 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
 
 /* The loops a trace uses: AVX2 when the processor has it and the caller
  * did not ask for the scalar ones.  Both give the same hits. */
-static int nearest(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
-                   int skip, hit *h, uint64_t *tests)
+static int nearest(const KERNEL_T *k, int simd, const KERNEL_EYE_T *eye,
+                   const ray *r, REAL t_max, int skip, hit *h,
+                   uint64_t *tests)
 {
 #if HAVE_AVX2_KERNEL
+    if (simd && eye != NULL && skip < 0 &&
+        memcmp(&eye->origin, &r->origin, sizeof eye->origin) == 0)
+        return nearest_eye_avx2(k, eye->blocks, r, t_max, h, tests);
     if (simd)
         return nearest_avx2(k, r, t_max, skip, h, tests);
 #else
     (void)simd;
+    (void)eye;
 #endif
     return nearest_scalar(k, r, t_max, skip, h, tests);
 }
@@ -319,7 +330,8 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
     for (int bounce = 0;; bounce++) {
         ray r = prepare(origin, incoming);
         hit h;
-        if (!nearest(k, simd, &r, INFINITY, skip, &h, &counters->tests)) {
+        if (!nearest(k, simd, bounce == 0 ? settings->eye : NULL, &r,
+                     INFINITY, skip, &h, &counters->tests)) {
             for (int c = 0; c < 3; c++)
                 color[c] += weight * k->background[c];
             break;
@@ -386,7 +398,7 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
         f->facet = i;
     }
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
-    fill_blocks(k->blocks, k->tris, k->count);
+    fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
     return k;
 }
@@ -398,6 +410,31 @@ void KERNEL(free)(KERNEL_T *k)
         free(k->blocks);
     }
     free(k);
+}
+
+KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
+{
+    KERNEL_EYE_T *eye = calloc(1, sizeof *eye);
+    if (eye == NULL)
+        return NULL;
+    eye->origin = from_rt(origin);
+    eye->blocks = aligned_alloc(32, (size_t)(k->block_count > 0
+                                                 ? k->block_count
+                                                 : 1) *
+                                        sizeof *eye->blocks);
+    if (eye->blocks == NULL) {
+        free(eye);
+        return NULL;
+    }
+    fill_blocks(eye->blocks, k->tris, k->count, eye->origin);
+    return eye;
+}
+
+void KERNEL(eye_free)(KERNEL_EYE_T *eye)
+{
+    if (eye != NULL)
+        free(eye->blocks);
+    free(eye);
 }
 
 int KERNEL(live_count)(const KERNEL_T *k)
@@ -415,7 +452,7 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
     ray r = prepare(from_rt(query.origin), direction);
     hit h;
     uint64_t tests = 0;
-    if (!nearest(k, k->avx2, &r, (REAL)t_max, -1, &h, &tests))
+    if (!nearest(k, k->avx2, NULL, &r, (REAL)t_max, -1, &h, &tests))
         return 0;
     const tri *f = &k->tris[h.index];
     vec error_bound;

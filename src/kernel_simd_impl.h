@@ -31,8 +31,9 @@ typedef struct block {
     REAL v[3][3][BLOCK_LANES];
 } block;
 
-/* Fills blocks[0 .. ceil(count / 8)) from the facets' vertices. */
-static void fill_blocks(block *blocks, const tri *tris, int count)
+/* Fills blocks[0 .. ceil(count / 8)) from the facets' vertices minus
+ * `origin`, rounded as intersect() rounds them (zero: the vertices). */
+static void fill_blocks(block *blocks, const tri *tris, int count, vec origin)
 {
     int block_count = (count + BLOCK_LANES - 1) / BLOCK_LANES;
     memset(blocks, 0, (size_t)block_count * sizeof *blocks);
@@ -41,9 +42,10 @@ static void fill_blocks(block *blocks, const tri *tris, int count)
         int lane = i % BLOCK_LANES;
         const vec *vertex[3] = {&tris[i].a, &tris[i].b, &tris[i].c};
         for (int j = 0; j < 3; j++) {
-            b->v[j][0][lane] = vertex[j]->x;
-            b->v[j][1][lane] = vertex[j]->y;
-            b->v[j][2][lane] = vertex[j]->z;
+            vec t = sub(*vertex[j], origin);
+            b->v[j][0][lane] = t.x;
+            b->v[j][1][lane] = t.y;
+            b->v[j][2][lane] = t.z;
         }
     }
 }
@@ -104,26 +106,33 @@ AVX2 static void broadcast(const ray *r, vray *q)
 /*
  * Bit i set when lane i of *b may be hit: all but the lanes whose edge
  * functions have strictly opposite signs.  Same operations as intersect().
+ * When `translated` (a constant), *b holds the vertices minus the ray's
+ * origin, already rounded as intersect() rounds them.
  */
-AVX2 static inline unsigned block_candidates(const block *b, const vray *q)
+AVX2 static inline __attribute__((always_inline)) unsigned
+block_candidates(const block *b, const vray *q, int translated)
 {
     unsigned mask = 0;
     for (int h = 0; h < BLOCK_LANES; h += VW) {
-        vreal az = v_sub(v_load(&b->v[0][q->kz][h]), q->oz);
-        vreal bz = v_sub(v_load(&b->v[1][q->kz][h]), q->oz);
-        vreal cz = v_sub(v_load(&b->v[2][q->kz][h]), q->oz);
-        vreal ax = v_sub(v_sub(v_load(&b->v[0][q->kx][h]), q->ox),
-                         v_mul(q->sx, az));
-        vreal ay = v_sub(v_sub(v_load(&b->v[0][q->ky][h]), q->oy),
-                         v_mul(q->sy, az));
-        vreal bx = v_sub(v_sub(v_load(&b->v[1][q->kx][h]), q->ox),
-                         v_mul(q->sx, bz));
-        vreal by = v_sub(v_sub(v_load(&b->v[1][q->ky][h]), q->oy),
-                         v_mul(q->sy, bz));
-        vreal cx = v_sub(v_sub(v_load(&b->v[2][q->kx][h]), q->ox),
-                         v_mul(q->sx, cz));
-        vreal cy = v_sub(v_sub(v_load(&b->v[2][q->ky][h]), q->oy),
-                         v_mul(q->sy, cz));
+        vreal a[3], bb[3], c[3];    /* by axis kx, ky, kz */
+        const int axis[3] = {q->kx, q->ky, q->kz};
+        const vreal origin[3] = {q->ox, q->oy, q->oz};
+        for (int j = 0; j < 3; j++) {
+            a[j] = v_load(&b->v[0][axis[j]][h]);
+            bb[j] = v_load(&b->v[1][axis[j]][h]);
+            c[j] = v_load(&b->v[2][axis[j]][h]);
+            if (!translated) {
+                a[j] = v_sub(a[j], origin[j]);
+                bb[j] = v_sub(bb[j], origin[j]);
+                c[j] = v_sub(c[j], origin[j]);
+            }
+        }
+        vreal ax = v_sub(a[0], v_mul(q->sx, a[2]));
+        vreal ay = v_sub(a[1], v_mul(q->sy, a[2]));
+        vreal bx = v_sub(bb[0], v_mul(q->sx, bb[2]));
+        vreal by = v_sub(bb[1], v_mul(q->sy, bb[2]));
+        vreal cx = v_sub(c[0], v_mul(q->sx, c[2]));
+        vreal cy = v_sub(c[1], v_mul(q->sy, c[2]));
         vreal u = v_sub(v_mul(cx, by), v_mul(cy, bx));
         vreal v = v_sub(v_mul(ax, cy), v_mul(ay, cx));
         vreal w = v_sub(v_mul(bx, ay), v_mul(by, ax));
@@ -143,16 +152,18 @@ static inline unsigned block_lanes(const KERNEL_T *k, int b)
     return left >= BLOCK_LANES ? 0xffu : (1u << left) - 1;
 }
 
-/* nearest() with the AVX2 filter: same result, same test count. */
-AVX2 static int nearest_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
-                             int skip, hit *h, uint64_t *tests)
+/* nearest() over `blocks` (the kernel's, or an eye's when `translated`):
+ * same result, same test count. */
+AVX2 static inline __attribute__((always_inline)) int
+nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
+               const ray *r, REAL t_max, int skip, hit *h, uint64_t *tests)
 {
     vray q;
     broadcast(r, &q);
     int found = 0;
     hit candidate;
     for (int b = 0; b < k->block_count; b++) {
-        unsigned m = block_candidates(&k->blocks[b], &q);
+        unsigned m = block_candidates(&blocks[b], &q, translated);
         if (m == 0)
             continue;
         m &= block_lanes(k, b);
@@ -171,6 +182,20 @@ AVX2 static int nearest_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
     return found;
 }
 
+AVX2 static int nearest_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
+                             int skip, hit *h, uint64_t *tests)
+{
+    return nearest_blocks(k, k->blocks, 0, r, t_max, skip, h, tests);
+}
+
+/* For a ray from the eye's origin (a camera ray: no facet to skip). */
+AVX2 static int nearest_eye_avx2(const KERNEL_T *k, const block *translated,
+                                 const ray *r, REAL t_max, hit *h,
+                                 uint64_t *tests)
+{
+    return nearest_blocks(k, translated, 1, r, t_max, -1, h, tests);
+}
+
 /* any_hit() with the AVX2 filter; stops after the block of the first hit
  * and counts the facets of the blocks it went through. */
 AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
@@ -181,7 +206,7 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
     hit ignored;
     int b;
     for (b = 0; b < k->block_count; b++) {
-        unsigned m = block_candidates(&k->blocks[b], &q);
+        unsigned m = block_candidates(&k->blocks[b], &q, 0);
         if (m == 0)
             continue;
         m &= block_lanes(k, b);

@@ -67,7 +67,7 @@ unsigned char rt_channel_to_byte(double value)
 rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
 {
     rt_counters counters = {0};
-    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO};
+    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL};
     if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
@@ -265,7 +265,7 @@ rt_status rt_render_rows(const rt_scene *scene,
     job j = {.scene = scene, .options = options, .image = image,
              .row_end = row_end, .grid = grid,
              .settings = {options->max_depth, options->fast_inv_sqrt != 0,
-                          options->kernel}};
+                          options->kernel, NULL}};
     /* A float render builds its own kernel: a double-only user never pays
      * for float data, and the scene stays immutable. */
     rt_kernel_f *float_kernel = NULL;
@@ -278,6 +278,22 @@ rt_status rt_render_rows(const rt_scene *scene,
         j.kernel.f = float_kernel;
     } else {
         j.kernel.d = scene->kernel;
+    }
+    /* The camera rays' origin, subtracted from every vertex once for the
+     * whole render (only the fast loops read it). */
+    rt_kernel_eye_d *eye_d = NULL;
+    rt_kernel_eye_f *eye_f = NULL;
+    if (options->kernel != RT_KERNEL_SCALAR) {
+        if (j.kernel.d != NULL)
+            j.settings.eye = eye_d = rt__kernel_d_eye_create(
+                j.kernel.d, scene->camera.observer);
+        else
+            j.settings.eye = eye_f = rt__kernel_f_eye_create(
+                j.kernel.f, scene->camera.observer);
+        if (j.settings.eye == NULL) {
+            rt__kernel_f_free(float_kernel);
+            return RT_ERR_NOMEM;
+        }
     }
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
@@ -303,6 +319,8 @@ rt_status rt_render_rows(const rt_scene *scene,
     free(threads);
     pthread_mutex_destroy(&j.callback_lock);
     pthread_mutex_destroy(&j.stats_lock);
+    rt__kernel_d_eye_free(eye_d);
+    rt__kernel_f_eye_free(eye_f);
     rt__kernel_f_free(float_kernel);
 
     if (options->stats != NULL)
