@@ -263,23 +263,33 @@ static int on_row(void *user, int row)
     return 1;
 }
 
-static void print_stats(const rt_render_stats *s, int threads)
+/* The work of a render and where the time went, on stderr. */
+static void print_stats(const rt_render_stats *s, double load_seconds,
+                        double write_seconds, const arguments *a)
 {
     double tests_per_second = s->seconds > 0 ? s->ray_facet_tests / s->seconds
                                              : 0.0;
+    unsigned long long cast = s->camera_rays + s->shadow_rays +
+                              s->reflection_rays;
     fprintf(stderr,
-            "rays: %llu camera, %llu shadow, %llu reflection\n"
-            "skipped by the scene analysis: %llu shadow rays, "
-            "%llu reflection rays\n"
-            "ray-facet tests: %llu (%.3g per second)\n"
-            "render: %.3f s on %s threads\n",
+            "rays: %llu camera, %llu shadow, %llu reflection (%llu in all)\n"
+            "skipped by the scene analysis: %llu shadow rays "
+            "(N.S <= 0 or k = 1), %llu reflection rays (k = 0)\n"
+            "ray-facet tests: %llu (%.3g per second); %llu more without the "
+            "analysis and early exits\n"
+            "time: load %.3f s, render %.3f s (%s threads, %s kernel, %s), "
+            "write %.3f s\n",
             (unsigned long long)s->camera_rays,
             (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->reflection_rays,
+            (unsigned long long)s->reflection_rays, cast,
             (unsigned long long)s->shadow_rays_skipped,
             (unsigned long long)s->reflection_rays_skipped,
             (unsigned long long)s->ray_facet_tests, tests_per_second,
-            s->seconds, threads == 0 ? "all" : "the given");
+            (unsigned long long)s->ray_facet_tests_skipped, load_seconds,
+            s->seconds, a->threads == 0 ? "all" : "the given",
+            a->kernel == RT_KERNEL_SCALAR ? "scalar" : "fast",
+            a->precision == RT_PRECISION_FLOAT ? "float" : "double",
+            write_seconds);
 }
 
 static int same_file(const char *a, const char *b)
@@ -298,6 +308,8 @@ int main(int argc, char **argv)
 
     rt_scene *scene;
     rt_error error;
+    struct timespec load_start;
+    clock_gettime(CLOCK_MONOTONIC, &load_start);
     if (rt_scene_load(a.scene, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
         return EXIT_BAD_INPUT;
@@ -307,6 +319,7 @@ int main(int argc, char **argv)
         rt_scene_free(scene);
         return EXIT_SUCCESS;
     }
+    double load_seconds = seconds_since(&load_start);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
@@ -351,12 +364,14 @@ int main(int argc, char **argv)
                 rt_status_string(status));
         goto done;
     }
-    if (a.stats)
-        print_stats(&stats, a.threads);
+    struct timespec write_start;
+    clock_gettime(CLOCK_MONOTONIC, &write_start);
     if (rt_ppm_save(path, &image, a.format, &error) != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
         goto done;
     }
+    if (a.stats)
+        print_stats(&stats, load_seconds, seconds_since(&write_start), &a);
     printf("%s\n", path);
     code = EXIT_SUCCESS;
 done:
