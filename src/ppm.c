@@ -87,7 +87,11 @@ rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
 {
     if (file == NULL)
         return RT_ERR_ARGUMENT;
-    return rt_ppm_write_to(write_to_file, file, image, format);
+    rt_status status = rt_ppm_write_to(write_to_file, file, image, format);
+    /* A full device shows up only when the buffer is flushed. */
+    if (status == RT_OK && (fflush(file) != 0 || ferror(file)))
+        status = RT_ERR_IO;
+    return status;
 }
 
 rt_status rt_ppm_save(const char *path, const rt_image *image,
@@ -96,13 +100,18 @@ rt_status rt_ppm_save(const char *path, const rt_image *image,
     if (path == NULL || !valid_image(image))
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path and an image");
-    size_t length = strlen(path);
-    char *temp = malloc(length + sizeof ".tmp-XXXXXX");
+    /* The temporary file is in the destination's directory (a rename
+     * across file systems is not atomic) with a short name, so that a
+     * destination whose name is as long as allowed still works. */
+    const char *slash = strrchr(path, '/');
+    size_t dir_length = slash ? (size_t)(slash - path) + 1 : 0;
+    static const char pattern[] = ".rt-save-XXXXXX";
+    char *temp = malloc(dir_length + sizeof pattern);
     if (temp == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                              "out of memory");
-    memcpy(temp, path, length);
-    memcpy(temp + length, ".tmp-XXXXXX", sizeof ".tmp-XXXXXX");
+    memcpy(temp, path, dir_length);
+    memcpy(temp + dir_length, pattern, sizeof pattern);
     int fd = mkstemp(temp);
     if (fd < 0) {
         int saved = errno;
@@ -249,6 +258,13 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
                                  r.column,
                                  "expected %zu bytes of pixels, found %zu",
                                  bytes, (size_t)(r.end - r.at));
+    } else if ((size_t)(r.end - r.at) / 2 < bytes) {
+        /* Each P3 value takes at least a digit and a separator: refuse a
+         * header that promises more than the file can hold, before
+         * allocating for it. */
+        return rt__error_set(error, RT_ERR_SYNTAX, r.name, r.line, r.column,
+                             "expected %zu pixel values, found a file too "
+                             "short to hold them", bytes);
     }
     status = rt_image_create(image, (int)width, (int)height);
     if (status != RT_OK)
