@@ -1,0 +1,50 @@
+# The course's API (issue 3): the Check suites of the in104 layer, the
+# student-style program built with the course's warning flags, and the same
+# program compiled with the plain command line a student would type.
+
+raytrace_add_suite(test_in104_geometry LIBS raytrace::in104)
+raytrace_add_suite(test_in104_scene LIBS raytrace::in104)
+
+# in104_student.c uses nothing but the handout's headers and standard C; its
+# exit status is its number of failed checks.
+add_executable(in104_student in104_student.c)
+target_link_libraries(in104_student PRIVATE raytrace::in104)
+if(CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
+  target_compile_options(in104_student PRIVATE -Wall -Wextra -Werror)
+endif()
+add_test(NAME in104_student_program_gets_the_spec_results
+         COMMAND in104_student "${PROJECT_SOURCE_DIR}/scenes/cubes.scn"
+         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+
+# The plain command line of docs/in104.md, against the build tree:
+#   cc -Wall -Wextra -Werror -I<src>/include/in104 in104_student.c
+#      -L<libdirs> -lraytrace-in104 -lraytrace -lm -lpthread
+if(UNIX AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
+  set(in104_plain "${CMAKE_CURRENT_BINARY_DIR}/in104_student_plain")
+  add_test(NAME in104_student_program_builds_with_the_plain_cc_command
+    COMMAND sh -c "\"$0\" -Wall -Wextra -Werror -I\"$1\" \"$2\" -L\"$3\" -L\"$4\" -lraytrace-in104 -lraytrace -lm -lpthread -o \"$5\" && cd \"$6\" && \"$5\""
+      "${CMAKE_C_COMPILER}"
+      "${PROJECT_SOURCE_DIR}/include/in104"
+      "${CMAKE_CURRENT_SOURCE_DIR}/in104_student.c"
+      "$<TARGET_FILE_DIR:raytrace::in104>"
+      "$<TARGET_FILE_DIR:raytrace::raytrace>"
+      "${in104_plain}"
+      "${CMAKE_CURRENT_BINARY_DIR}")
+  # A shared build needs the loader to find the libraries of the build tree.
+  set_tests_properties(in104_student_program_builds_with_the_plain_cc_command
+    PROPERTIES ENVIRONMENT
+    "LD_LIBRARY_PATH=$<TARGET_FILE_DIR:raytrace::in104>:$<TARGET_FILE_DIR:raytrace::raytrace>")
+endif()
+
+# The example program of apps/ renders a scene, and fails on a bad one.
+if(TARGET in104-render)
+  add_test(NAME in104_render_example_renders_a_scene
+           COMMAND in104-render "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn"
+                   in104-render-one-facet.ppm
+           WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+  add_test(NAME in104_render_example_fails_on_a_missing_scene
+           COMMAND in104-render no-such-scene.scn
+           WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+  set_tests_properties(in104_render_example_fails_on_a_missing_scene
+                       PROPERTIES WILL_FAIL TRUE)
+endif()
