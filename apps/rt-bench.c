@@ -1,0 +1,850 @@
+/*
+ * rt-bench - error against run time for the renderer's accuracy knobs.
+ *
+ * Renders a converged reference of one scene (double precision, exact
+ * square root, a depth whose truncation is provably negligible, many rays
+ * per pixel on a grid that does not nest the tested grids), then every
+ * useful setting of precision, square root, samples per pixel and depth.
+ * Each setting is timed (the median of several runs in this process, with
+ * the spread) and its image compared with the reference (total error: what
+ * depth and sampling cost) and with the same setting computed in double
+ * with the exact square root (numerical error: what float and fastInvSqrt
+ * cost).  Prints the table and writes a CSV and an SVG plot of error
+ * against time with the Pareto front (docs/accuracy.md explains them).
+ * Exit status: 0 success, 1 bad input, failed render or write, or a
+ * comparison (--compare) that found different errors, 2 bad usage.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "raytrace/raytrace.h"
+#include "metrics.h"
+#include "plot.h"
+#include "report.h"
+
+#define EXIT_BAD_INPUT 1
+#define EXIT_USAGE 2
+
+#define MAX_RUNS 99
+#define MAX_CONFIGS 64
+#define DEPTH_CAP 64            /* deepest reference the bound may ask for */
+#define DEPTH_TOLERANCE 1e-3    /* truncation bound of the reference, levels */
+
+static const char usage[] =
+    "usage: rt-bench SCENE.scn [--out DIR] [--size WxH] [--threads N]\n"
+    "                [--runs N] [--ref-samples N] [--max-samples N]\n"
+    "                [--compare EARLIER.csv] [--quiet]\n"
+    "\n"
+    "Measures what the accuracy knobs of the renderer cost and buy on one\n"
+    "scene: prints a table and writes DIR/accuracy-NAME-WxH.csv (every\n"
+    "setting), DIR/accuracy-NAME-WxH-depth.csv (depth truncation against\n"
+    "its bound) and DIR/accuracy-NAME-WxH.svg (error against time, log\n"
+    "axes, Pareto front).  docs/accuracy.md explains how to read them.\n"
+    "\n"
+    "  --out DIR          where to write the files (default .)\n"
+    "  --size WxH         render at this size instead of the scene's (the\n"
+    "                     screen keeps its width; pixels stay square)\n"
+    "  --threads N        rendering threads; 0 = one per core (default 0)\n"
+    "  --runs N           timed renders per setting, >= 5 (default 5)\n"
+    "  --ref-samples N    rays per pixel of the reference, a square\n"
+    "                     (default 256; raised if its grid would nest a\n"
+    "                     tested one)\n"
+    "  --max-samples N    leave out settings with more rays per pixel\n"
+    "                     (default 16)\n"
+    "  --compare CSV      compare with the CSV of an earlier run: errors\n"
+    "                     must be equal, times within the spread\n"
+    "  -q, --quiet        no progress lines\n"
+    "  -h, --help         this help\n"
+    "\n"
+    "Settings are named 'PRECISION[+fast] dDEPTH SAMPLES[r|s]': float+fast\n"
+    "d2 16s is float arithmetic, fastInvSqrt, depth 2, 16 rays per pixel\n"
+    "on a stratified 4x4 grid (r: regular grid; no letter: one ray through\n"
+    "the pixel centre).  Exit status: 0 success, 1 bad scene, failed render\n"
+    "or write, or errors that differ from --compare's, 2 bad usage.\n";
+
+typedef struct arguments {
+    const char *scene;
+    const char *out;
+    const char *compare;
+    int width, height;          /* 0: the scene's own */
+    int threads;
+    int runs;
+    int ref_samples;
+    int max_samples;
+    int quiet;
+} arguments;
+
+/* The knobs of one render. */
+typedef struct settings {
+    rt_precision precision;
+    int fast_sqrt;
+    int grid;                   /* samples per side of a pixel */
+    rt_sampling sampling;
+    int depth;
+} settings;
+
+typedef struct config {
+    settings s;
+    bench_row row;
+    double times[MAX_RUNS];
+    unsigned long long hash;    /* of the first render's image */
+    int base;                   /* the double/exact config with the same
+                                   sampling and depth (may be itself) */
+} config;
+
+/* What bounds the contribution of the bounces past a depth (see
+ * docs/accuracy.md): every colour is at most `peak`; a path's weight after
+ * n hits is at most pair^(n/2) k_max^(n%2), because two hits in a row are
+ * never on the same plane. */
+typedef struct depth_bound {
+    double peak;                /* largest colour any ray can carry */
+    double k_max;               /* largest k of a facet that can be hit */
+    double pair;                /* largest k_i k_j, facets not coplanar */
+} depth_bound;
+
+static int usage_error(const char *fmt, const char *value)
+{
+    fprintf(stderr, "rt-bench: ");
+    fprintf(stderr, fmt, value);
+    fprintf(stderr, "\nTry 'rt-bench --help'.\n");
+    return EXIT_USAGE;
+}
+
+static int parse_int(const char *text, int min, int max, int *value)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (errno != 0 || end == text || *end != '\0' || v < min || v > max)
+        return 0;
+    *value = (int)v;
+    return 1;
+}
+
+static int square_root(int n)
+{
+    int root = 1;
+    while (root * root < n)
+        root++;
+    return root * root == n ? root : 0;
+}
+
+/* Returns -1 to go on, or an exit status. */
+static int parse_arguments(int argc, char **argv, arguments *a)
+{
+    *a = (arguments){.out = ".", .runs = 5, .ref_samples = 256,
+                     .max_samples = 16};
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        const char *value = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--size") ||
+                          !strcmp(arg, "--threads") ||
+                          !strcmp(arg, "--runs") ||
+                          !strcmp(arg, "--ref-samples") ||
+                          !strcmp(arg, "--max-samples") ||
+                          !strcmp(arg, "--compare");
+        if (takes_value && value == NULL)
+            return usage_error("option '%s' needs a value", arg);
+        if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
+            fputs(usage, stdout);
+            return EXIT_SUCCESS;
+        } else if (!strcmp(arg, "--out")) {
+            a->out = value;
+        } else if (!strcmp(arg, "--compare")) {
+            a->compare = value;
+        } else if (!strcmp(arg, "--size")) {
+            char extra;
+            if (sscanf(value, "%dx%d%c", &a->width, &a->height, &extra) != 2 ||
+                a->width < 1 || a->width > RT_MAX_IMAGE_SIDE ||
+                a->height < 1 || a->height > RT_MAX_IMAGE_SIDE)
+                return usage_error("expected WIDTHxHEIGHT (each in "
+                                   "1..16384) after --size, found '%s'",
+                                   value);
+        } else if (!strcmp(arg, "--threads")) {
+            if (!parse_int(value, 0, 1024, &a->threads))
+                return usage_error("expected a thread count in 0..1024, "
+                                   "found '%s'", value);
+        } else if (!strcmp(arg, "--runs")) {
+            if (!parse_int(value, 5, MAX_RUNS, &a->runs))
+                return usage_error("expected a run count in 5..99, "
+                                   "found '%s'", value);
+        } else if (!strcmp(arg, "--ref-samples")) {
+            if (!parse_int(value, 1, 1024, &a->ref_samples) ||
+                !square_root(a->ref_samples))
+                return usage_error("expected a square sample count in "
+                                   "1..1024 after --ref-samples, found '%s'",
+                                   value);
+        } else if (!strcmp(arg, "--max-samples")) {
+            if (!parse_int(value, 1, 1024, &a->max_samples))
+                return usage_error("expected a sample count in 1..1024, "
+                                   "found '%s'", value);
+        } else if (!strcmp(arg, "-q") || !strcmp(arg, "--quiet")) {
+            a->quiet = 1;
+        } else if (arg[0] == '-' && arg[1] != '\0') {
+            return usage_error("unknown option '%s'", arg);
+        } else if (a->scene == NULL) {
+            a->scene = arg;
+        } else {
+            return usage_error("expected one scene, found a second: '%s'",
+                               arg);
+        }
+        i += takes_value;
+    }
+    if (a->scene == NULL)
+        return usage_error("%s", "expected a scene file");
+    return -1;
+}
+
+/* The scene at `path`, rebuilt at width x height when they are not 0. */
+static rt_status load_scene(const char *path, int width, int height,
+                            rt_scene **scene, rt_error *error)
+{
+    rt_status status = rt_scene_load(path, scene, error);
+    if (status != RT_OK || width == 0)
+        return status;
+    rt_scene_info info;
+    rt_scene_get_info(*scene, &info);
+    rt_vec3 *vertices = malloc((size_t)(info.vertex_count + 1) *
+                               sizeof *vertices);
+    rt_facet_desc *facets = malloc((size_t)(info.facet_count + 1) *
+                                   sizeof *facets);
+    status = RT_ERR_NOMEM;
+    if (vertices != NULL && facets != NULL) {
+        for (int i = 0; i < info.vertex_count; i++)
+            vertices[i] = rt_scene_vertex(*scene, i);
+        for (int i = 0; i < info.facet_count; i++) {
+            rt_facet_info f;
+            rt_scene_facet(*scene, i, &f);
+            facets[i] = (rt_facet_desc){{f.vertex[0], f.vertex[1],
+                                         f.vertex[2]}, f.k, f.color};
+        }
+        const rt_camera *c = &info.camera;
+        rt_vec3 b = {c->screen_center.x + c->right.x,
+                     c->screen_center.y + c->right.y,
+                     c->screen_center.z + c->right.z};
+        rt_scene_desc desc = {c->observer, c->screen_center, b, width,
+                              height, vertices, info.vertex_count, facets,
+                              info.facet_count, info.background,
+                              info.light_position, info.light_color};
+        rt_scene *resized;
+        status = rt_scene_create(&desc, &resized, error);
+        if (status == RT_OK) {
+            rt_scene_free(*scene);
+            *scene = resized;
+        }
+    } else if (error != NULL) {
+        *error = (rt_error){RT_ERR_NOMEM, 0, 0, "out of memory"};
+    }
+    free(vertices);
+    free(facets);
+    if (status != RT_OK) {
+        rt_scene_free(*scene);
+        *scene = NULL;
+    }
+    return status;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* Renders with settings `s`; *seconds is the wall-clock time of the call. */
+static rt_status render(const rt_scene *scene, const settings *s,
+                        int threads, rt_image *image, double *seconds)
+{
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.precision = s->precision;
+    options.fast_inv_sqrt = s->fast_sqrt;
+    options.samples = s->grid * s->grid;
+    options.sampling = s->sampling;
+    options.max_depth = s->depth;
+    options.threads = threads;
+    double start = now_seconds();
+    rt_status status = rt_render(scene, &options, image);
+    *seconds = now_seconds() - start;
+    return status;
+}
+
+static double distance_to_plane(rt_vec3 p, rt_vec3 a, rt_vec3 normal)
+{
+    return fabs((p.x - a.x) * normal.x + (p.y - a.y) * normal.y +
+                (p.z - a.z) * normal.z);
+}
+
+static double max3(double a, double b, double c)
+{
+    return fmax(a, fmax(b, c));
+}
+
+/* The constants of the truncation bound of the scene's facets. */
+static depth_bound find_depth_bound(const rt_scene *scene)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    depth_bound b = {max3(info.background.r, info.background.g,
+                          info.background.b), 0.0, 0.0};
+    double light = max3(info.light_color.r, info.light_color.g,
+                        info.light_color.b);
+    double extent = 0.0;
+    for (int i = 0; i < info.vertex_count; i++) {
+        rt_vec3 v = rt_scene_vertex(scene, i);
+        extent = fmax(extent, max3(fabs(v.x), fabs(v.y), fabs(v.z)));
+    }
+    int top = -1;
+    rt_facet_info f, g;
+    for (int i = 0; i < info.facet_count; i++) {
+        rt_scene_facet(scene, i, &f);
+        if (f.degenerate)
+            continue;
+        b.peak = fmax(b.peak, light * max3(f.color.r, f.color.g,
+                                           f.color.b) / 255.0);
+        if (top < 0 || f.k > b.k_max) {
+            top = i;
+            b.k_max = f.k;
+        }
+    }
+    if (top < 0)
+        return b;
+    /* The best pair holds a facet of largest k: any facet coplanar with
+     * the other member of a better pair would be coplanar with it too. */
+    rt_scene_facet(scene, top, &f);
+    rt_vec3 a = rt_scene_vertex(scene, f.vertex[0]);
+    double tolerance = 1e-9 * fmax(extent, 1e-300);
+    for (int i = 0; i < info.facet_count; i++) {
+        rt_scene_facet(scene, i, &g);
+        if (g.degenerate)
+            continue;
+        int coplanar = 1;
+        for (int v = 0; v < 3; v++)
+            coplanar &= distance_to_plane(rt_scene_vertex(scene, g.vertex[v]),
+                                          a, f.normal) <= tolerance;
+        if (!coplanar)
+            b.pair = fmax(b.pair, f.k * g.k);
+    }
+    return b;
+}
+
+/* Largest colour error of stopping after `depth` reflections, in levels. */
+static double truncation_bound(const depth_bound *b, int depth)
+{
+    int hits = depth + 1;
+    double weight = pow(b->pair, hits / 2) * (hits % 2 ? b->k_max : 1.0);
+    return fmin(b->peak * weight, 255.0);
+}
+
+/* The smallest regular grid side >= `grid` that contains none of the
+ * tested regular grids' points: side m holds side n's centres exactly when
+ * m / n is an odd integer. */
+static int non_nesting_grid(int grid, const config *configs, int count)
+{
+    for (int m = grid;; m++) {
+        int nests = 0;
+        for (int i = 0; i < count; i++) {
+            int n = configs[i].s.grid;
+            nests |= configs[i].s.sampling == RT_SAMPLING_REGULAR ||
+                             n == 1
+                         ? m % n == 0 && (m / n) % 2 == 1
+                         : 0;
+        }
+        if (!nests || m >= 32)
+            return m;
+    }
+}
+
+static void make_label(const settings *s, char *label, size_t size)
+{
+    snprintf(label, size, "%s%s d%d %d%s",
+             s->precision == RT_PRECISION_FLOAT ? "float" : "double",
+             s->fast_sqrt ? "+fast" : "", s->depth, s->grid * s->grid,
+             s->grid == 1 ? ""
+             : s->sampling == RT_SAMPLING_STRATIFIED ? "s" : "r");
+}
+
+static const char *knobs_varied(const settings *s)
+{
+    int precision = s->precision != RT_PRECISION_DOUBLE;
+    int sqrt_knob = s->fast_sqrt != 0;
+    int samples = s->grid != 1;
+    int depth = s->depth != RT_DEFAULT_DEPTH;
+    switch (precision + sqrt_knob + samples + depth) {
+    case 0:
+        return "default";
+    case 1:
+        return precision ? "precision" : sqrt_knob ? "sqrt"
+               : samples ? "samples" : "depth";
+    default:
+        return "combination";
+    }
+}
+
+static int same_settings(const settings *a, const settings *b)
+{
+    return a->precision == b->precision && a->fast_sqrt == b->fast_sqrt &&
+           a->grid == b->grid && a->depth == b->depth &&
+           (a->grid == 1 || a->sampling == b->sampling);
+}
+
+static void add_config(config *configs, int *count, settings s,
+                       int max_samples)
+{
+    if (s.grid * s.grid > max_samples || *count >= MAX_CONFIGS)
+        return;
+    if (s.grid == 1)
+        s.sampling = RT_SAMPLING_REGULAR;
+    for (int i = 0; i < *count; i++) {
+        if (same_settings(&configs[i].s, &s))
+            return;
+    }
+    config *c = &configs[(*count)++];
+    memset(c, 0, sizeof *c);
+    c->s = s;
+    make_label(&s, c->row.label, sizeof c->row.label);
+    snprintf(c->row.varies, sizeof c->row.varies, "%s", knobs_varied(&s));
+    c->row.precision = s.precision;
+    c->row.fast_sqrt = s.fast_sqrt;
+    c->row.samples = s.grid * s.grid;
+    c->row.sampling = s.sampling;
+    c->row.depth = s.depth;
+}
+
+/*
+ * The settings measured: every combination of the two numerical knobs with
+ * one ray, 4 and 16 stratified rays and depths 2 and 5; then each knob on
+ * its own from the default (regular grids, 9 rays, depths 0, 1, 3 and the
+ * reference's).
+ */
+static int build_configs(config *configs, int max_samples, int ref_depth)
+{
+    int count = 0;
+    const int depths[] = {2, RT_DEFAULT_DEPTH};
+    const int grids[] = {1, 2, 4};
+    for (int d = 0; d < 2; d++)
+        for (int g = 0; g < 3; g++)
+            for (int n = 0; n < 4; n++)
+                add_config(configs, &count,
+                           (settings){n / 2 ? RT_PRECISION_FLOAT
+                                            : RT_PRECISION_DOUBLE,
+                                      n % 2, grids[g], RT_SAMPLING_STRATIFIED,
+                                      depths[d]},
+                           max_samples);
+    const int alone[][2] = {{2, RT_SAMPLING_REGULAR},
+                            {3, RT_SAMPLING_REGULAR},
+                            {3, RT_SAMPLING_STRATIFIED},
+                            {4, RT_SAMPLING_REGULAR}};
+    for (int i = 0; i < 4; i++)
+        add_config(configs, &count,
+                   (settings){RT_PRECISION_DOUBLE, 0, alone[i][0],
+                              (rt_sampling)alone[i][1], RT_DEFAULT_DEPTH},
+                   max_samples);
+    const int depth_alone[] = {0, 1, 3, ref_depth};
+    for (int i = 0; i < 4; i++)
+        add_config(configs, &count,
+                   (settings){RT_PRECISION_DOUBLE, 0, 1, RT_SAMPLING_REGULAR,
+                              depth_alone[i]},
+                   max_samples);
+    for (int i = 0; i < count; i++) {
+        settings base = configs[i].s;
+        base.precision = RT_PRECISION_DOUBLE;
+        base.fast_sqrt = 0;
+        configs[i].base = i;
+        for (int j = 0; j < count; j++) {
+            if (same_settings(&configs[j].s, &base))
+                configs[i].base = j;
+        }
+    }
+    return count;
+}
+
+/* Images of the run, freed together. */
+typedef struct images {
+    rt_image reference, scratch, depth_reference, previous;
+    rt_image kept[MAX_CONFIGS];     /* round one's double/exact images */
+} images;
+
+static void free_images(images *im)
+{
+    rt_image_destroy(&im->reference);
+    rt_image_destroy(&im->scratch);
+    rt_image_destroy(&im->depth_reference);
+    rt_image_destroy(&im->previous);
+    for (int i = 0; i < MAX_CONFIGS; i++)
+        rt_image_destroy(&im->kept[i]);
+}
+
+static int render_or_complain(const rt_scene *scene, const settings *s,
+                              int threads, rt_image *image, double *seconds)
+{
+    rt_status status = render(scene, s, threads, image, seconds);
+    if (status != RT_OK)
+        fprintf(stderr, "rt-bench: rendering failed: %s\n",
+                rt_status_string(status));
+    return status == RT_OK;
+}
+
+/*
+ * Depth truncation measured against its bound, at one ray per pixel in
+ * double: depth d against the reference depth D.  Also finds the first
+ * depth whose image one more bounce leaves unchanged, and whether D + 1
+ * changes D's.  Returns 0 if a render failed.
+ */
+static int analyse_depth(const rt_scene *scene, int threads,
+                         const depth_bound *b, int ref_depth, images *im,
+                         FILE *csv, int *converged_at, int *reference_stable)
+{
+    settings s = {RT_PRECISION_DOUBLE, 0, 1, RT_SAMPLING_REGULAR, ref_depth};
+    double seconds;
+    if (!render_or_complain(scene, &s, threads, &im->depth_reference,
+                            &seconds))
+        return 0;
+    s.depth = ref_depth + 1;
+    if (!render_or_complain(scene, &s, threads, &im->scratch, &seconds))
+        return 0;
+    bench_error e;
+    bench_compare(&im->scratch, &im->depth_reference, &e);
+    *reference_stable = e.differing == 0;
+    unsigned long long reference_hash = bench_image_hash(&im->depth_reference);
+    unsigned long long previous_hash = 0;
+    *converged_at = -1;
+    printf("\ndepth truncation, 1 ray per pixel in double, against depth %d "
+           "(bound: docs/accuracy.md)\n"
+           "%5s %14s %11s | %12s %8s %8s\n",
+           ref_depth, "depth", "bound levels", "allowed max", "measured max",
+           "RMSE", "%diff");
+    fprintf(csv, "depth,bound_levels,allowed_max,measured_max,rmse,"
+                 "differing,differing_pct,within_bound\n");
+    int all_within = 1;
+    for (int d = 0; d <= ref_depth; d++) {
+        s.depth = d;
+        if (d < ref_depth &&
+            !render_or_complain(scene, &s, threads, &im->scratch, &seconds))
+            return 0;
+        const rt_image *image = d < ref_depth ? &im->scratch
+                                              : &im->depth_reference;
+        unsigned long long hash = d < ref_depth ? bench_image_hash(image)
+                                                : reference_hash;
+        if (d > 0 && *converged_at < 0 && hash == previous_hash)
+            *converged_at = d - 1;
+        previous_hash = hash;
+        bench_compare(image, &im->depth_reference, &e);
+        double bound = truncation_bound(b, d);
+        int allowed = (int)ceil(bound);
+        int within = e.max_error <= allowed;
+        all_within &= within;
+        printf("%5d %14.6g %11d | %12d %8.4f %8.4f%s\n", d, bound, allowed,
+               e.max_error, e.rmse, bench_percent(e.differing, e.pixels),
+               within ? "" : "  EXCEEDS THE BOUND");
+        fprintf(csv, "%d,%.6g,%d,%d,%.6g,%ld,%.6g,%d\n", d, bound, allowed,
+                e.max_error, e.rmse, e.differing,
+                bench_percent(e.differing, e.pixels), within);
+    }
+    if (*converged_at < 0 && *reference_stable)
+        *converged_at = ref_depth;
+    printf("measured within the bound at every depth: %s; first depth that "
+           "one more bounce leaves byte-identical: %d; depth %d vs %d: %s\n",
+           all_within ? "yes" : "NO", *converged_at, ref_depth + 1,
+           ref_depth, *reference_stable ? "byte-identical" : "DIFFERENT");
+    return 1;
+}
+
+static void progress(const arguments *a, int round, int i, int count,
+                     const char *label)
+{
+    if (!a->quiet)
+        fprintf(stderr, "rt-bench: run %d/%d, setting %d/%d: %s\n",
+                round + 1, a->runs, i + 1, count, label);
+}
+
+/* Renders every setting `runs` times, in rounds (so that a slow period of
+ * the machine spreads over all settings), measuring the errors in the
+ * first round.  Returns 0 if a render failed or a repeat differed. */
+static int measure(const rt_scene *scene, const arguments *a,
+                   config *configs, int count, images *im)
+{
+    for (int round = 0; round < a->runs; round++) {
+        /* double/exact settings first: the others' numerical error needs
+         * their images */
+        for (int pass = 0; pass < 2; pass++) {
+            for (int i = 0; i < count; i++) {
+                config *c = &configs[i];
+                int is_base = c->base == i;
+                if ((pass == 0) != is_base)
+                    continue;
+                progress(a, round, i, count, c->row.label);
+                rt_image *image = round == 0 && is_base ? &im->kept[i]
+                                                        : &im->scratch;
+                if (image->pixels == NULL &&
+                    rt_image_create(image, im->reference.width,
+                                    im->reference.height) != RT_OK) {
+                    fprintf(stderr, "rt-bench: out of memory\n");
+                    return 0;
+                }
+                if (!render_or_complain(scene, &c->s, a->threads, image,
+                                        &c->times[round]))
+                    return 0;
+                unsigned long long hash = bench_image_hash(image);
+                if (round == 0) {
+                    c->hash = hash;
+                    bench_compare(image, &im->reference, &c->row.total);
+                    bench_compare(image, &im->kept[c->base],
+                                  &c->row.numerical);
+                } else if (hash != c->hash) {
+                    fprintf(stderr, "rt-bench: %s: run %d gave a different "
+                                    "image from run 1\n",
+                            c->row.label, round + 1);
+                    return 0;
+                }
+            }
+        }
+    }
+    for (int i = 0; i < count; i++) {
+        double sorted[MAX_RUNS];
+        memcpy(sorted, configs[i].times, sizeof sorted);
+        configs[i].row.runs = a->runs;
+        bench_summarize(sorted, a->runs, &configs[i].row.median,
+                        &configs[i].row.minimum, &configs[i].row.maximum);
+    }
+    return 1;
+}
+
+static int by_time(const void *a, const void *b)
+{
+    const bench_row *x = a, *y = b;
+    return (x->median > y->median) - (x->median < y->median);
+}
+
+static int write_plot(const char *path, const char *title,
+                      const char *subtitle, const bench_row *rows, int count)
+{
+    static const char *const colours[] = {
+        "double, exact sqrt (reference arithmetic)", "double, fastInvSqrt",
+        "float, exact sqrt", "float, fastInvSqrt"};
+    static const char *const shapes[] = {
+        "1 ray through the pixel centre", "regular n x n grid",
+        "stratified n x n grid"};
+    bench_plot_point points[MAX_CONFIGS];
+    char tooltips[MAX_CONFIGS][256];
+    for (int i = 0; i < count; i++) {
+        const bench_row *r = &rows[i];
+        snprintf(tooltips[i], sizeof tooltips[i],
+                 "%.47s: %.2f ms (%.2f-%.2f), total RMSE %.4g, numerical RMSE "
+                 "%.4g, max %d",
+                 r->label, 1e3 * r->median, 1e3 * r->minimum,
+                 1e3 * r->maximum, r->total.rmse, r->numerical.rmse,
+                 r->total.max_error);
+        points[i] = (bench_plot_point){
+            r->median, r->minimum, r->maximum, r->total.rmse,
+            2 * (r->precision == RT_PRECISION_FLOAT) + (r->fast_sqrt != 0),
+            r->samples == 1 ? BENCH_SHAPE_CIRCLE
+            : r->sampling == RT_SAMPLING_STRATIFIED ? BENCH_SHAPE_TRIANGLE
+                                                    : BENCH_SHAPE_SQUARE,
+            r->on_front, r->label, tooltips[i]};
+    }
+    bench_plot plot = {title, subtitle, "median render time (s), log scale",
+                       "RMSE against the converged reference (levels of "
+                       "255), log scale",
+                       colours, 4, shapes, 3, points, count};
+    FILE *f = fopen(path, "w");
+    int ok = f != NULL && bench_plot_write_svg(f, &plot);
+    if (f != NULL && fclose(f) != 0)
+        ok = 0;
+    if (!ok)
+        fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
+                strerror(errno));
+    return ok;
+}
+
+static int write_csv(const char *path, const char *scene, int width,
+                     int height, const bench_row *rows, int count)
+{
+    FILE *f = fopen(path, "w");
+    int ok = f != NULL && bench_write_csv(f, scene, width, height, rows,
+                                          count);
+    if (f != NULL && fclose(f) != 0)
+        ok = 0;
+    if (!ok)
+        fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
+                strerror(errno));
+    return ok;
+}
+
+/* "dir/name.scn" -> "name". */
+static void scene_name(const char *path, char *name, size_t size)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    const char *dot = strrchr(base, '.');
+    int length = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+    snprintf(name, size, "%.*s", length, base);
+}
+
+static int compare_with(const char *path, const bench_row *rows, int count)
+{
+    bench_row *before;
+    char message[512];
+    int before_count = bench_read_csv(path, &before, message, sizeof message);
+    if (before_count < 0) {
+        fprintf(stderr, "rt-bench: %s\n", message);
+        return 0;
+    }
+    printf("\ncomparison with %s:\n", path);
+    int ok = bench_compare_runs(stdout, rows, count, before, before_count);
+    free(before);
+    return ok;
+}
+
+int main(int argc, char **argv)
+{
+    arguments a;
+    int code = parse_arguments(argc, argv, &a);
+    if (code >= 0)
+        return code;
+    rt_scene *scene;
+    rt_error error;
+    if (load_scene(a.scene, a.width, a.height, &scene, &error) != RT_OK) {
+        fprintf(stderr, "rt-bench: %s\n", error.message);
+        return EXIT_BAD_INPUT;
+    }
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+
+    depth_bound bound = find_depth_bound(scene);
+    int ref_depth = 0;
+    while (truncation_bound(&bound, ref_depth) >= DEPTH_TOLERANCE &&
+           ref_depth < DEPTH_CAP)
+        ref_depth++;
+    static config configs[MAX_CONFIGS];
+    int count = build_configs(configs, a.max_samples, ref_depth);
+    int ref_grid = non_nesting_grid(square_root(a.ref_samples), configs,
+                                    count);
+
+    char name[256], base[4096], path[4200];
+    scene_name(a.scene, name, sizeof name);
+    snprintf(base, sizeof base, "%s/accuracy-%s-%dx%d", a.out, name,
+             info.width, info.height);
+    if (mkdir(a.out, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "rt-bench: %s: cannot create: %s\n", a.out,
+                strerror(errno));
+        rt_scene_free(scene);
+        return EXIT_BAD_INPUT;
+    }
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    printf("rt-bench (libraytrace %s): %s at %d x %d, %d facets; %d runs per "
+           "setting on %d thread%s\n",
+           rt_version_string(), a.scene, info.width, info.height,
+           info.facet_count, a.runs, a.threads ? a.threads : (int)cores,
+           (a.threads ? a.threads : cores) == 1 ? "" : "s");
+    printf("depth bound: every colour <= %g, largest k %g, largest k_i k_j "
+           "of facets not coplanar %g\n",
+           bound.peak, bound.k_max, bound.pair);
+    if (truncation_bound(&bound, ref_depth) >= DEPTH_TOLERANCE)
+        printf("warning: the bound does not reach %g levels by depth %d "
+               "(mirrors facing each other); the reference stops there\n",
+               DEPTH_TOLERANCE, DEPTH_CAP);
+
+    images im = {0};
+    code = EXIT_BAD_INPUT;
+    FILE *depth_csv = NULL;
+    if (rt_image_create(&im.reference, info.width, info.height) != RT_OK ||
+        rt_image_create(&im.scratch, info.width, info.height) != RT_OK ||
+        rt_image_create(&im.depth_reference, info.width, info.height) !=
+            RT_OK) {
+        fprintf(stderr, "rt-bench: out of memory\n");
+        goto done;
+    }
+    snprintf(path, sizeof path, "%s-depth.csv", base);
+    depth_csv = fopen(path, "w");
+    if (depth_csv == NULL) {
+        fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
+                strerror(errno));
+        goto done;
+    }
+    int converged_at, reference_stable;
+    if (!analyse_depth(scene, a.threads, &bound, ref_depth, &im, depth_csv,
+                       &converged_at, &reference_stable))
+        goto done;
+    if (fclose(depth_csv) != 0) {
+        depth_csv = NULL;
+        fprintf(stderr, "rt-bench: %s: cannot write\n", path);
+        goto done;
+    }
+    depth_csv = NULL;
+
+    settings reference = {RT_PRECISION_DOUBLE, 0, ref_grid,
+                          RT_SAMPLING_STRATIFIED, ref_depth};
+    double ref_seconds, check_seconds;
+    if (!a.quiet)
+        fprintf(stderr, "rt-bench: rendering the reference\n");
+    if (!render_or_complain(scene, &reference, a.threads, &im.reference,
+                            &ref_seconds))
+        goto done;
+    reference.sampling = RT_SAMPLING_REGULAR;
+    if (!render_or_complain(scene, &reference, a.threads, &im.scratch,
+                            &check_seconds))
+        goto done;
+    bench_error floor;
+    bench_compare(&im.scratch, &im.reference, &floor);
+    printf("\nreference: double, exact sqrt, depth %d (truncation <= %.3g "
+           "levels), %d x %d stratified = %d rays per pixel, %.2f s\n"
+           "its own uncertainty, against a %d x %d regular grid (%.2f s): "
+           "RMSE %.4f, max %d, %.3f%% of pixels differ, %.3f%% by > %d\n",
+           ref_depth, truncation_bound(&bound, ref_depth), ref_grid,
+           ref_grid, ref_grid * ref_grid, ref_seconds, ref_grid, ref_grid,
+           check_seconds, floor.rmse, floor.max_error,
+           bench_percent(floor.differing, floor.pixels),
+           bench_percent(floor.differing_much, floor.pixels),
+           BENCH_MUCH_LEVELS);
+
+    if (!measure(scene, &a, configs, count, &im))
+        goto done;
+    bench_row rows[MAX_CONFIGS];
+    double x[MAX_CONFIGS], y[MAX_CONFIGS];
+    int front[MAX_CONFIGS];
+    for (int i = 0; i < count; i++) {
+        rows[i] = configs[i].row;
+        x[i] = rows[i].median;
+        y[i] = rows[i].total.rmse;
+    }
+    bench_pareto_front(x, y, count, front);
+    for (int i = 0; i < count; i++)
+        rows[i].on_front = front[i];
+    qsort(rows, (size_t)count, sizeof rows[0], by_time);
+    printf("\nsettings by median time (%d runs; * = Pareto front of time "
+           "and total RMSE)\n", a.runs);
+    bench_print_table(stdout, rows, count);
+
+    char title[512], subtitle[512];
+    snprintf(title, sizeof title, "%s at %d x %d: error against render time",
+             name, info.width, info.height);
+    snprintf(subtitle, sizeof subtitle,
+             "reference: double, exact sqrt, depth %d, %d x %d stratified; "
+             "median of %d runs on %d threads; libraytrace %s",
+             ref_depth, ref_grid, ref_grid, a.runs,
+             a.threads ? a.threads : (int)cores, rt_version_string());
+    snprintf(path, sizeof path, "%s.csv", base);
+    if (!write_csv(path, name, info.width, info.height, rows, count))
+        goto done;
+    printf("\nwrote %s\n", path);
+    snprintf(path, sizeof path, "%s.svg", base);
+    if (!write_plot(path, title, subtitle, rows, count))
+        goto done;
+    printf("wrote %s\nwrote %s-depth.csv\n", path, base);
+    code = EXIT_SUCCESS;
+    if (a.compare != NULL && !compare_with(a.compare, rows, count))
+        code = EXIT_BAD_INPUT;
+done:
+    if (depth_csv != NULL)
+        fclose(depth_csv);
+    free_images(&im);
+    rt_scene_free(scene);
+    return code;
+}
