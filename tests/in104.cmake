@@ -19,17 +19,27 @@ add_test(NAME in104_student_program_gets_the_spec_results
 # The plain command line of docs/in104.md, against the build tree:
 #   cc -Wall -Wextra -Werror -I<src>/include/in104 in104_student.c
 #      -L<libdirs> -lraytrace-in104 -lraytrace -lm -lpthread
+# plus the build's own CMAKE_C_FLAGS (empty in a normal build; the
+# sanitizer flags under .ci/sanitize, which an instrumented library needs).
 if(UNIX AND CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
-  set(in104_plain "${CMAKE_CURRENT_BINARY_DIR}/in104_student_plain")
+  separate_arguments(in104_flags UNIX_COMMAND "${CMAKE_C_FLAGS}")
+  set(in104_script [=[
+cc=$1 include=$2 source=$3 libdir1=$4 libdir2=$5 program=$6 workdir=$7
+shift 7
+set -x
+"$cc" "$@" -Wall -Wextra -Werror -I"$include" "$source" -L"$libdir1" -L"$libdir2" -lraytrace-in104 -lraytrace -lm -lpthread -o "$program" || exit 1
+cd "$workdir" && "$program"
+]=])
   add_test(NAME in104_student_program_builds_with_the_plain_cc_command
-    COMMAND sh -c "\"$0\" -Wall -Wextra -Werror -I\"$1\" \"$2\" -L\"$3\" -L\"$4\" -lraytrace-in104 -lraytrace -lm -lpthread -o \"$5\" && cd \"$6\" && \"$5\""
+    COMMAND sh -c "${in104_script}" sh
       "${CMAKE_C_COMPILER}"
       "${PROJECT_SOURCE_DIR}/include/in104"
       "${CMAKE_CURRENT_SOURCE_DIR}/in104_student.c"
       "$<TARGET_FILE_DIR:raytrace::in104>"
       "$<TARGET_FILE_DIR:raytrace::raytrace>"
-      "${in104_plain}"
-      "${CMAKE_CURRENT_BINARY_DIR}")
+      "${CMAKE_CURRENT_BINARY_DIR}/in104_student_plain"
+      "${CMAKE_CURRENT_BINARY_DIR}"
+      ${in104_flags})
   # A shared build needs the loader to find the libraries of the build tree.
   set_tests_properties(in104_student_program_builds_with_the_plain_cc_command
     PROPERTIES ENVIRONMENT
