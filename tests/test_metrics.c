@@ -1,0 +1,156 @@
+/*
+ * test_metrics.c - rt-bench's error metrics (apps/bench/metrics.h) on tiny
+ * images whose answers are worked out by hand in the comments.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "metrics.h"
+#include "testutil.h"
+
+/* A width x height image whose channels are `values` in order. */
+static rt_image image_of(int width, int height, const unsigned char *values)
+{
+    rt_image image;
+    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    for (int y = 0; y < height; y++)
+        memcpy(rt_image_pixel(&image, 0, y), values + 3 * width * y,
+               (size_t)(3 * width));
+    return image;
+}
+
+START_TEST(identical_images_have_zero_error_and_infinite_psnr)
+{
+    const unsigned char v[] = {1, 2, 3, 250, 251, 252};
+    rt_image a = image_of(2, 1, v), b = image_of(2, 1, v);
+    bench_error e;
+    bench_compare(&a, &b, &e);
+    ck_assert_double_eq(e.rmse, 0.0);
+    ck_assert(isinf(e.psnr) && e.psnr > 0);
+    ck_assert_int_eq(e.max_error, 0);
+    ck_assert_int_eq(e.pixels, 2);
+    ck_assert_int_eq(e.differing, 0);
+    ck_assert_int_eq(e.differing_much, 0);
+    rt_image_destroy(&a);
+    rt_image_destroy(&b);
+}
+END_TEST
+
+/* 2 x 2 pixels, 12 channels.  Differences: pixel 0 (1, 0, 0), pixel 1
+ * none, pixel 2 (0, 3, 0), pixel 3 (2, 2, 2): sum of squares
+ * 1 + 9 + 4 + 4 + 4 = 22, RMSE sqrt(22 / 12) = 1.354006400...,
+ * PSNR 20 log10(255 / 1.3540064) = 45.4984 dB; max 3; three pixels
+ * differ, one (pixel 2) by more than 2 levels (pixel 3's 2 is not more). */
+START_TEST(small_differences_give_hand_computed_metrics)
+{
+    const unsigned char ref[] = {10, 20, 30, 40, 50, 60,
+                                 70, 80, 90, 100, 110, 120};
+    const unsigned char test[] = {11, 20, 30, 40, 50, 60,
+                                  70, 77, 90, 102, 112, 118};
+    rt_image a = image_of(2, 2, test), b = image_of(2, 2, ref);
+    bench_error e;
+    bench_compare(&a, &b, &e);
+    ck_assert_double_eq_tol(e.rmse, sqrt(22.0 / 12.0), 1e-12);
+    ck_assert_double_eq_tol(e.rmse, 1.3540064, 1e-7);
+    ck_assert_double_eq_tol(e.psnr, 45.4984, 1e-4);
+    ck_assert_int_eq(e.max_error, 3);
+    ck_assert_int_eq(e.pixels, 4);
+    ck_assert_int_eq(e.differing, 3);
+    ck_assert_int_eq(e.differing_much, 1);
+    ck_assert_double_eq_tol(bench_percent(e.differing, e.pixels), 75.0,
+                            1e-12);
+    rt_image_destroy(&a);
+    rt_image_destroy(&b);
+}
+END_TEST
+
+/* One full flip, black against white, in one channel of one pixel of
+ * four: RMSE sqrt(255^2 / 12) = 73.6122..., PSNR 10 log10(12) = 10.7918
+ * dB, max 255.  The average hides it; the counts do not. */
+START_TEST(one_full_flip_is_counted_as_a_pixel_changed_much)
+{
+    unsigned char ref[12] = {0}, test[12] = {0};
+    test[4] = 255;
+    rt_image a = image_of(4, 1, test), b = image_of(4, 1, ref);
+    bench_error e;
+    bench_compare(&a, &b, &e);
+    ck_assert_double_eq_tol(e.rmse, 255.0 / sqrt(12.0), 1e-12);
+    ck_assert_double_eq_tol(e.psnr, 10.0 * log10(12.0), 1e-12);
+    ck_assert_int_eq(e.max_error, 255);
+    ck_assert_int_eq(e.differing, 1);
+    ck_assert_int_eq(e.differing_much, 1);
+    rt_image_destroy(&a);
+    rt_image_destroy(&b);
+}
+END_TEST
+
+/* The error is symmetric, and padding beyond 3 * width is not compared. */
+START_TEST(padding_is_ignored_and_order_does_not_matter)
+{
+    unsigned char pa[2 * 8] = {5, 5, 5, 0, 0, 0, 99, 99,
+                               9, 9, 9, 1, 1, 1, 42, 42};
+    unsigned char pb[2 * 8] = {5, 5, 6, 0, 0, 0, 7, 7,
+                               9, 9, 9, 1, 1, 1, 13, 13};
+    rt_image a = {2, 2, 8, pa}, b = {2, 2, 8, pb};
+    bench_error e1, e2;
+    bench_compare(&a, &b, &e1);
+    bench_compare(&b, &a, &e2);
+    ck_assert_double_eq_tol(e1.rmse, sqrt(1.0 / 12.0), 1e-15);
+    ck_assert_double_eq(e1.rmse, e2.rmse);
+    ck_assert_int_eq(e1.max_error, 1);
+    ck_assert_int_eq(e1.differing, 1);
+    ck_assert_int_eq(e1.differing_much, 0);
+    ck_assert(bench_image_hash(&a) != bench_image_hash(&b));
+    pb[2] = 5;
+    ck_assert(bench_image_hash(&a) == bench_image_hash(&b));
+}
+END_TEST
+
+/* Median of an odd and an even count; min and max. */
+START_TEST(summary_gives_median_and_spread)
+{
+    double odd[] = {0.5, 0.1, 0.3, 0.9, 0.2};
+    double even[] = {4.0, 1.0, 3.0, 2.0};
+    double median, minimum, maximum;
+    bench_summarize(odd, 5, &median, &minimum, &maximum);
+    ck_assert_double_eq(median, 0.3);
+    ck_assert_double_eq(minimum, 0.1);
+    ck_assert_double_eq(maximum, 0.9);
+    bench_summarize(even, 4, &median, &minimum, &maximum);
+    ck_assert_double_eq(median, 2.5);
+    ck_assert_double_eq(minimum, 1.0);
+    ck_assert_double_eq(maximum, 4.0);
+}
+END_TEST
+
+/* Points (time, error): A (1, 10), B (2, 5), C (3, 6) is beaten by B on
+ * both, D (4, 1), E (4, 1) equal to D (both kept), F (0.5, 20) the fastest,
+ * G (2, 7) beaten by B (same time, more error). */
+START_TEST(pareto_front_keeps_only_points_nothing_beats)
+{
+    const double x[] = {1, 2, 3, 4, 4, 0.5, 2};
+    const double y[] = {10, 5, 6, 1, 1, 20, 7};
+    int front[7];
+    ck_assert_int_eq(bench_pareto_front(x, y, 7, front), 5);
+    const int expected[] = {1, 1, 0, 1, 1, 1, 0};
+    for (int i = 0; i < 7; i++)
+        ck_assert_int_eq(front[i], expected[i]);
+}
+END_TEST
+
+static Suite *metrics_suite(void)
+{
+    Suite *suite = suite_create("metrics");
+    TCase *tc = tcase_create("metrics");
+    tcase_add_test(tc, identical_images_have_zero_error_and_infinite_psnr);
+    tcase_add_test(tc, small_differences_give_hand_computed_metrics);
+    tcase_add_test(tc, one_full_flip_is_counted_as_a_pixel_changed_much);
+    tcase_add_test(tc, padding_is_ignored_and_order_does_not_matter);
+    tcase_add_test(tc, summary_gives_median_and_spread);
+    tcase_add_test(tc, pareto_front_keeps_only_points_nothing_beats);
+    suite_add_tcase(suite, tc);
+    return suite;
+}
+
+RT_CHECK_MAIN(metrics_suite)
