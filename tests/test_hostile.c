@@ -565,6 +565,56 @@ START_TEST(scene_counts_promising_more_than_the_file_holds_are_refused_before_al
 }
 END_TEST
 
+/*
+ * A refusal names the bad byte in printable form, as the scene loader does
+ * (`?` for what cannot be shown): a NUL would cut the message short, and a
+ * control byte from a hostile file would reach the user's terminal.
+ */
+START_TEST(ppm_refusal_shows_bad_bytes_as_printable_text)
+{
+    static const char *const inputs[] = {"P6\n1\0 1\n255\n",
+                                         "P6\n1\x1b[2J 1\n255\n",
+                                         "P6\n1 1\n255\xff"};
+    static const size_t lengths[] = {12, 15, 11};
+    for (int i = 0; i < 3; i++) {
+        rt_image image;
+        rt_error error;
+        rt_status status = rt_ppm_parse(inputs[i], lengths[i], "in.ppm",
+                                        &image, &error);
+        ck_assert_int_eq(status, RT_ERR_SYNTAX);
+        size_t length = strlen(error.message);
+        for (size_t k = 0; k < length; k++)
+            ck_assert_msg(error.message[k] >= 0x20 && error.message[k] < 0x7f,
+                          "input %d: byte %zu of the message is 0x%02x", i,
+                          k, (unsigned char)error.message[k]);
+        int quotes = 0;
+        for (size_t k = 0; k < length; k++)
+            quotes += error.message[k] == '`';
+        ck_assert_msg(quotes % 2 == 0, "input %d: the message is cut short: "
+                      "%s", i, error.message);
+    }
+}
+END_TEST
+
+/* A zero width is refused where it stands, saying what was found. */
+START_TEST(ppm_zero_width_is_refused_at_the_width)
+{
+    static const char text[] = "P6\n0 1\n255\n";
+    rt_image image;
+    rt_error error;
+    ck_assert_int_eq(rt_ppm_parse(text, sizeof text - 1, "in.ppm", &image,
+                                  &error),
+                     RT_ERR_RANGE);
+    ck_assert_msg(error.line == 2 && error.column == 1,
+                  "the error is at %d:%d, not at the width (2:1): %s",
+                  error.line, error.column, error.message);
+    ck_assert_msg(strstr(error.message, "width") &&
+                      strstr(error.message, "found 0"),
+                  "the message does not say the width was 0: %s",
+                  error.message);
+}
+END_TEST
+
 /* ------------------------------------------------------------------ */
 /* Resource bounds: time proportional to the input                      */
 
@@ -1218,6 +1268,8 @@ static Suite *hostile_suite(void)
     tcase_add_test(tc, line_of_commas_is_refused_at_the_first_stray_comma);
     tcase_add_test(tc, ppm_header_promising_more_pixels_than_the_file_holds_is_refused_before_allocating);
     tcase_add_test(tc, scene_counts_promising_more_than_the_file_holds_are_refused_before_allocating);
+    tcase_add_test(tc, ppm_refusal_shows_bad_bytes_as_printable_text);
+    tcase_add_test(tc, ppm_zero_width_is_refused_at_the_width);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("time proportional to the input");
