@@ -1,0 +1,37 @@
+# The core library's Check suites, one per module (STYLE.md point 10).
+# Included from tests/CMakeLists.txt, which defines raytrace_add_suite().
+foreach(suite
+    test_vec
+    test_parse
+    test_camera
+    test_intersect
+    test_shade
+    test_reflect
+    test_ppm
+    test_render)
+  raytrace_add_suite(${suite})
+endforeach()
+
+# The parser must read numbers in the C locale whatever the process's locale.
+# Most build machines have no French locale installed; when localedef can make
+# one into the build tree, test_parse gets it through LOCPATH.  Without it the
+# test falls back to another locale and says so in its output.
+find_program(RAYTRACE_LOCALEDEF localedef)
+if(RAYTRACE_LOCALEDEF)
+  set(rt_locale_dir "${CMAKE_CURRENT_BINARY_DIR}/locale")
+  if(NOT EXISTS "${rt_locale_dir}/fr_FR.UTF-8/LC_NUMERIC")
+    file(MAKE_DIRECTORY "${rt_locale_dir}")
+    execute_process(
+      COMMAND "${RAYTRACE_LOCALEDEF}" -i fr_FR -f UTF-8
+              "${rt_locale_dir}/fr_FR.UTF-8"
+      RESULT_VARIABLE rt_localedef_result
+      OUTPUT_QUIET ERROR_QUIET)
+  endif()
+  if(EXISTS "${rt_locale_dir}/fr_FR.UTF-8/LC_NUMERIC")
+    set_tests_properties(test_parse PROPERTIES
+      ENVIRONMENT "LOCPATH=${rt_locale_dir}")
+  else()
+    message(STATUS "test_parse: could not build fr_FR.UTF-8 with localedef; "
+                   "the locale test uses whatever locale is installed")
+  endif()
+endif()

@@ -1,0 +1,438 @@
+/*
+ * test_render.c - whole renders: every scene of scenes/ against its expected
+ * image in tests/expected/ (made by the independent Python renderer of
+ * tests/reference/), exactly; the same image whatever the thread count, the
+ * kernel or the split into bands; progress callbacks and cancellation;
+ * argument checks; and the handout's seed scenes of ../shared when present.
+ * A mismatching image is written as <scene>.actual.ppm in the test's
+ * working directory (the build tree's tests/).
+ */
+#include "testutil.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_SCENES 64
+
+/* Scene names (without .scn) found in scenes/ when the suite is built. */
+static char scene_names[MAX_SCENES][128];
+static int scene_count;
+
+static int compare_names(const void *a, const void *b)
+{
+    return strcmp(a, b);
+}
+
+static void find_scenes(void)
+{
+    DIR *dir = opendir(rt_test_source_path("scenes"));
+    if (!dir)
+        return;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL && scene_count < MAX_SCENES) {
+        size_t n = strlen(entry->d_name);
+        if (n > 4 && n < sizeof scene_names[0] + 4 &&
+            strcmp(entry->d_name + n - 4, ".scn") == 0) {
+            memcpy(scene_names[scene_count], entry->d_name, n - 4);
+            scene_names[scene_count][n - 4] = '\0';
+            scene_count++;
+        }
+    }
+    closedir(dir);
+    qsort(scene_names, (size_t)scene_count, sizeof scene_names[0],
+          compare_names);
+}
+
+static rt_scene *load_scene(const char *path)
+{
+    rt_scene *scene = NULL;
+    rt_error error;
+    rt_status status = rt_scene_load(path, &scene, &error);
+    ck_assert_msg(status == RT_OK, "%s does not load: %s", path,
+                  error.message);
+    return scene;
+}
+
+static rt_image render_with(const rt_scene *scene, rt_render_options *options)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_image image;
+    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    rt_status status = rt_render(scene, options, &image);
+    ck_assert_msg(status == RT_OK, "render: %s", rt_status_string(status));
+    return image;
+}
+
+START_TEST(project_scenes_render_exactly_their_expected_images)
+{
+    const char *name = scene_names[_i];
+    char relative[256];
+    snprintf(relative, sizeof relative, "scenes/%s.scn", name);
+    rt_scene *scene = load_scene(rt_test_source_path(relative));
+    rt_image actual = render_with(scene, NULL);
+
+    snprintf(relative, sizeof relative, "tests/expected/%s.ppm", name);
+    rt_image expected;
+    rt_error error;
+    rt_status status = rt_ppm_load(rt_test_source_path(relative), &expected,
+                                   &error);
+    ck_assert_msg(status == RT_OK, "scene %s has no usable expected image: %s",
+                  name, error.message);
+    ck_assert_msg(expected.width == actual.width &&
+                      expected.height == actual.height,
+                  "%s: expected %dx%d, rendered %dx%d", name, expected.width,
+                  expected.height, actual.width, actual.height);
+
+    int worst = 0;
+    long differing = rt_test_image_diff(&expected, &actual, &worst);
+    if (differing != 0) {
+        /* where: bounding box and the first few pixels */
+        int x0 = actual.width, y0 = actual.height, x1 = -1, y1 = -1;
+        char where[512] = "";
+        int listed = 0;
+        for (int y = 0; y < actual.height; y++)
+            for (int x = 0; x < actual.width; x++) {
+                const unsigned char *p = rt_image_pixel(&actual, x, y);
+                const unsigned char *q = rt_image_pixel(&expected, x, y);
+                if (memcmp(p, q, 3) == 0)
+                    continue;
+                x0 = x < x0 ? x : x0;
+                y0 = y < y0 ? y : y0;
+                x1 = x > x1 ? x : x1;
+                y1 = y > y1 ? y : y1;
+                if (listed++ < 6) {
+                    size_t used = strlen(where);
+                    snprintf(where + used, sizeof where - used,
+                             " (%d,%d) %d %d %d vs %d %d %d;", x, y, p[0],
+                             p[1], p[2], q[0], q[1], q[2]);
+                }
+            }
+        char out[300];
+        snprintf(out, sizeof out, "%s.actual.ppm", name);
+        rt_status saved = rt_ppm_save(out, &actual, RT_PPM_P6, &error);
+        ck_abort_msg("%s: %ld of %d pixels differ from tests/expected/%s.ppm, "
+                     "max channel difference %d, in x %d..%d y %d..%d; "
+                     "actual vs expected:%s actual image %s %s",
+                     name, differing, actual.width * actual.height, name,
+                     worst, x0, x1, y0, y1, where,
+                     saved == RT_OK ? "written to" : "NOT written to", out);
+    }
+    rt_image_destroy(&expected);
+    rt_image_destroy(&actual);
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(project_scenes_are_present)
+{
+    ck_abort_msg("no scene found in %s", rt_test_source_path("scenes"));
+}
+END_TEST
+
+/* A scene with shadows and reflections for the consistency tests: the
+ * project's mirror scene, its 400 x 400 image cut down to 120 x 90 so that
+ * the many renders below stay quick (and the image is not square). */
+static rt_scene *busy_scene(void)
+{
+    const char *path = rt_test_source_path("scenes/mirror.scn");
+    FILE *file = fopen(path, "rb");
+    ck_assert_msg(file != NULL, "cannot open %s", path);
+    static char text[1 << 16];
+    size_t length = fread(text, 1, sizeof text - 1, file);
+    fclose(file);
+    text[length] = '\0';
+    char *size = strstr(text, "400, 400");
+    ck_assert_msg(size != NULL, "%s: no \"400, 400\" image size to reduce",
+                  path);
+    memcpy(size, "120,  90", 8);
+    return rt_test_scene_from_string(text);
+}
+
+START_TEST(one_thread_and_two_threads_give_identical_images)
+{
+    rt_scene *scene = busy_scene();
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.threads = 1;
+    rt_image one = render_with(scene, &options);
+    options.threads = 2;
+    rt_image two = render_with(scene, &options);
+    options.threads = 7;
+    rt_image seven = render_with(scene, &options);
+    ck_assert_int_eq(memcmp(one.pixels, two.pixels,
+                            one.stride * (size_t)one.height),
+                     0);
+    ck_assert_int_eq(memcmp(one.pixels, seven.pixels,
+                            one.stride * (size_t)one.height),
+                     0);
+    rt_image_destroy(&one);
+    rt_image_destroy(&two);
+    rt_image_destroy(&seven);
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(scalar_and_automatic_kernels_give_identical_images)
+{
+    rt_scene *scene = busy_scene();
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.kernel = RT_KERNEL_SCALAR;
+    rt_image scalar = render_with(scene, &options);
+    options.kernel = RT_KERNEL_AUTO;
+    rt_image automatic = render_with(scene, &options);
+    int worst;
+    long differing = rt_test_image_diff(&scalar, &automatic, &worst);
+    ck_assert_msg(differing == 0, "%ld pixels differ (max %d)", differing,
+                  worst);
+    rt_image_destroy(&scalar);
+    rt_image_destroy(&automatic);
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(two_bands_rendered_apart_equal_the_whole_render)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_image whole = render_with(scene, NULL);
+    rt_image bands;
+    ck_assert_int_eq(rt_image_create(&bands, info.width, info.height), RT_OK);
+    int split = info.height / 3;
+    ck_assert_int_eq(rt_render_rows(scene, NULL, split, info.height, &bands),
+                     RT_OK);
+    /* rows before the band are untouched (still black from create) */
+    for (int y = 0; y < split; y++)
+        for (int x = 0; x < info.width * 3; x++)
+            ck_assert_int_eq(bands.pixels[(size_t)y * bands.stride + x], 0);
+    ck_assert_int_eq(rt_render_rows(scene, NULL, 0, split, &bands), RT_OK);
+    ck_assert_int_eq(memcmp(whole.pixels, bands.pixels,
+                            whole.stride * (size_t)whole.height),
+                     0);
+    rt_image_destroy(&whole);
+    rt_image_destroy(&bands);
+    rt_scene_free(scene);
+}
+END_TEST
+
+typedef struct row_log {
+    int calls;
+    int cancel_at; /* return 0 on this call (1-based); 0: never */
+    int seen[4096];
+} row_log;
+
+static int log_row(void *user, int row)
+{
+    row_log *log = user;
+    log->calls++;
+    if (row >= 0 && row < 4096)
+        log->seen[row]++;
+    return log->cancel_at == 0 || log->calls < log->cancel_at;
+}
+
+START_TEST(on_row_is_called_once_per_row)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    for (int threads = 1; threads <= 2; threads++) {
+        static row_log log;
+        memset(&log, 0, sizeof log);
+        rt_render_options options;
+        rt_render_options_init(&options);
+        options.threads = threads;
+        options.on_row = log_row;
+        options.user = &log;
+        rt_image image = render_with(scene, &options);
+        ck_assert_int_eq(log.calls, info.height);
+        for (int y = 0; y < info.height; y++)
+            ck_assert_msg(log.seen[y] == 1, "row %d reported %d times", y,
+                          log.seen[y]);
+        rt_image_destroy(&image);
+    }
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(cancel_from_on_row_returns_cancelled)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    for (int threads = 1; threads <= 2; threads++) {
+        static row_log log;
+        memset(&log, 0, sizeof log);
+        log.cancel_at = 1;
+        rt_render_options options;
+        rt_render_options_init(&options);
+        options.threads = threads;
+        options.on_row = log_row;
+        options.user = &log;
+        rt_image image;
+        ck_assert_int_eq(rt_image_create(&image, info.width, info.height),
+                         RT_OK);
+        ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_CANCELLED);
+        ck_assert_msg(log.calls < info.height,
+                      "%d threads: %d rows reported after the cancel",
+                      threads, log.calls);
+        ck_assert_int_eq(rt_render_rows(scene, &options, 0, info.height,
+                                        &image),
+                         RT_ERR_CANCELLED);
+        rt_image_destroy(&image);
+    }
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(render_refuses_wrong_image_size_and_negative_depth)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_image image;
+    ck_assert_int_eq(rt_image_create(&image, info.width + 1, info.height),
+                     RT_OK);
+    ck_assert_int_eq(rt_render(scene, NULL, &image), RT_ERR_ARGUMENT);
+    rt_image_destroy(&image);
+    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.max_depth = -1;
+    ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
+    rt_image_destroy(&image);
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(options_init_sets_the_documented_defaults)
+{
+    rt_render_options options;
+    memset(&options, 0x5A, sizeof options);
+    rt_render_options_init(&options);
+    ck_assert_int_eq(options.max_depth, RT_DEFAULT_DEPTH);
+    ck_assert_int_eq(RT_DEFAULT_DEPTH, 5);
+    ck_assert_int_eq(options.threads, 0);
+    ck_assert(options.on_row == NULL);
+    ck_assert_ptr_null(options.stats);
+    ck_assert_int_eq(options.samples, 1);
+}
+END_TEST
+
+START_TEST(stats_count_one_camera_ray_per_pixel)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_render_stats stats;
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.stats = &stats;
+    rt_image image = render_with(scene, &options);
+    uint64_t pixels = (uint64_t)info.width * (uint64_t)info.height;
+    ck_assert_uint_eq(stats.pixels, pixels);
+    ck_assert_uint_eq(stats.camera_rays, pixels);
+    ck_assert_uint_gt(stats.shadow_rays, 0);
+    ck_assert_uint_gt(stats.reflection_rays, 0);
+    rt_image_destroy(&image);
+    rt_scene_free(scene);
+}
+END_TEST
+
+/* Not every pixel is the background. */
+static void check_not_all_background(const char *name)
+{
+    const char *path = rt_test_shared_path(name);
+    if (!path) {
+        printf("NOTE seed scenes: ../shared is absent, %s not rendered\n",
+               name);
+        return;
+    }
+    rt_scene *scene = load_scene(path);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_image image = render_with(scene, NULL);
+    long other = 0;
+    for (int y = 0; y < image.height; y++)
+        for (int x = 0; x < image.width; x++) {
+            const unsigned char *p = rt_image_pixel(&image, x, y);
+            other += p[0] != info.background.r || p[1] != info.background.g ||
+                     p[2] != info.background.b;
+        }
+    ck_assert_msg(other > image.width * image.height / 100,
+                  "%s: only %ld pixels are not the background", name, other);
+    rt_image_destroy(&image);
+    rt_scene_free(scene);
+}
+
+START_TEST(seed_scenes_render_something)
+{
+    check_not_all_background("seed-scenes/cubes.scn");
+    check_not_all_background("seed-scenes/mirror.scn");
+    check_not_all_background("seed-scenes/test1.scn");
+    check_not_all_background("seed-scenes/test2.scn");
+}
+END_TEST
+
+START_TEST(seed_cubes_scene_needs_the_projection_of_b)
+{
+    const char *path = rt_test_shared_path("seed-scenes/cubes.scn");
+    if (!path) {
+        printf("NOTE seed scenes: ../shared is absent, cubes.scn not "
+               "checked\n");
+        return;
+    }
+    rt_scene *scene = load_scene(path);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_ne(info.camera.b_was_projected, 0);
+    ck_assert_int_eq(info.facet_count, 14);
+    ck_assert_int_eq(info.width, 400);
+    rt_scene_free(scene);
+    scene = load_scene(rt_test_shared_path("seed-scenes/test1.scn"));
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.camera.b_was_projected, 0);
+    rt_scene_free(scene);
+}
+END_TEST
+
+Suite *render_suite(void);
+
+Suite *render_suite(void)
+{
+    Suite *suite = suite_create("render");
+    find_scenes();
+    TCase *regression = tcase_create("regression");
+    tcase_set_timeout(regression, 60);
+    if (scene_count > 0)
+        tcase_add_loop_test(regression,
+                            project_scenes_render_exactly_their_expected_images,
+                            0, scene_count);
+    else
+        tcase_add_test(regression, project_scenes_are_present);
+    suite_add_tcase(suite, regression);
+
+    TCase *consistency = tcase_create("consistency");
+    tcase_set_timeout(consistency, 60);
+    tcase_add_test(consistency, one_thread_and_two_threads_give_identical_images);
+    tcase_add_test(consistency, scalar_and_automatic_kernels_give_identical_images);
+    tcase_add_test(consistency, two_bands_rendered_apart_equal_the_whole_render);
+    tcase_add_test(consistency, on_row_is_called_once_per_row);
+    tcase_add_test(consistency, cancel_from_on_row_returns_cancelled);
+    tcase_add_test(consistency, render_refuses_wrong_image_size_and_negative_depth);
+    tcase_add_test(consistency, options_init_sets_the_documented_defaults);
+    tcase_add_test(consistency, stats_count_one_camera_ray_per_pixel);
+    suite_add_tcase(suite, consistency);
+
+    TCase *seed = tcase_create("seed");
+    tcase_set_timeout(seed, 60);
+    tcase_add_test(seed, seed_scenes_render_something);
+    tcase_add_test(seed, seed_cubes_scene_needs_the_projection_of_b);
+    suite_add_tcase(suite, seed);
+    return suite;
+}
+
+RT_CHECK_MAIN(render_suite)
