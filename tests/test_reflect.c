@@ -35,18 +35,25 @@ static const double BG[3] = {11, 22, 33};    /* background */
  * (5, 0, 5) lights both points head-on (N.S = 1) and no shadow falls.
  * The 1x1 image's only primary ray is that ray.
  */
-static rt_scene *mirror_scene(double k)
+static rt_scene *mirror_scene_scaled(double k, double s)
 {
     char text[1024];
     snprintf(text, sizeof text,
-             "0 0 5\n1 0 4 1 1 4 1 1\n6\n"
-             "-20 -20 0\n20 -20 0\n0 20 0\n"
-             "10 -20 1\n10 20 1\n10 0 20\n"
+             "0 0 %.17g\n%.17g 0 %.17g %.17g %.17g %.17g 1 1\n6\n"
+             "%.17g %.17g 0\n%.17g %.17g 0\n0 %.17g 0\n"
+             "%.17g %.17g %.17g\n%.17g %.17g %.17g\n%.17g 0 %.17g\n"
              "2\n1 2 3 %.17g %g %g %g\n4 5 6 0 %g %g %g\n"
-             "%g %g %g\n5 0 5 %g %g %g\n",
-             k, CM[0], CM[1], CM[2], CF[0], CF[1], CF[2], BG[0], BG[1], BG[2],
-             CS[0], CS[1], CS[2]);
+             "%g %g %g\n%.17g 0 %.17g %g %g %g\n",
+             5 * s, 1 * s, 4 * s, 1 * s, 1 * s, 4 * s, -20 * s, -20 * s,
+             20 * s, -20 * s, 20 * s, 10 * s, -20 * s, 1 * s, 10 * s, 20 * s,
+             1 * s, 10 * s, 20 * s, k, CM[0], CM[1], CM[2], CF[0], CF[1],
+             CF[2], BG[0], BG[1], BG[2], 5 * s, 5 * s, CS[0], CS[1], CS[2]);
     return rt_test_scene_from_string(text);
+}
+
+static rt_scene *mirror_scene(double k)
+{
+    return mirror_scene_scaled(k, 1.0);
 }
 
 static const rt_ray to_mirror = {{0, 0, 5}, {1, 0, -1}};
@@ -129,6 +136,27 @@ START_TEST(reflection_that_misses_brings_background_weighted_by_k)
             e[ch] = k * BG[ch] + (1 - k) * ns * CS[ch] * CM[ch] / 255;
         assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
                      COLOR_TOL, k == 1 ? "k = 1" : "k = 0.5");
+        rt_scene_free(scene);
+    }
+}
+END_TEST
+
+START_TEST(mirror_works_at_every_scale_of_coordinates)
+{
+    /* the reflected ray must neither hit the mirror it leaves nor miss
+     * because of the offset that prevents it: same colour from 1e-6 to 1e9
+     * (tolerance 1e-6) */
+    const double scales[] = {1e-6, 1e-3, 1e3, 1e6, 1e9};
+    for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+        rt_scene *scene = mirror_scene_scaled(0.5, scales[i]);
+        rt_ray ray = {{0, 0, 5 * scales[i]}, {1, 0, -1}};
+        double e[3];
+        for (int ch = 0; ch < 3; ch++)
+            e[ch] = 0.5 * CS[ch] * CF[ch] / 255 + 0.5 * CS[ch] * CM[ch] / 255;
+        char what[32];
+        snprintf(what, sizeof what, "scale %g", scales[i]);
+        assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
+                     1e-6, what);
         rt_scene_free(scene);
     }
 }
@@ -217,6 +245,7 @@ Suite *reflect_suite(void)
     tcase_add_test(tc, half_mirror_mixes_reflection_and_own_colour);
     tcase_add_test(tc, depth_zero_follows_no_reflection);
     tcase_add_test(tc, reflection_that_misses_brings_background_weighted_by_k);
+    tcase_add_test(tc, mirror_works_at_every_scale_of_coordinates);
     tcase_add_test(tc, depth_limit_counts_reflections_exactly);
     tcase_add_test(tc, parallel_mirrors_terminate_at_any_depth);
     suite_add_tcase(suite, tc);

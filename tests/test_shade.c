@@ -215,6 +215,39 @@ START_TEST(shading_does_not_depend_on_the_scale_of_coordinates)
 }
 END_TEST
 
+START_TEST(shading_far_from_the_origin_has_no_self_shadowing)
+{
+    /* a facet of size ~60 in the plane z = 1e6, centred on (1e6, 1e6): the
+     * hit point carries rounding errors ~1e-10, which a fixed epsilon of
+     * 1e-5 would not cover at 1e9 and would swamp at 1e-6; N.S = 0.8 */
+    const double offsets[] = {1e6, 1e9};
+    for (size_t i = 0; i < 2; i++) {
+        double d = offsets[i];
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "%.17g %.17g %.17g\n%.17g %.17g %.17g %.17g %.17g %.17g 3 3\n"
+                 "3\n%.17g %.17g %.17g\n%.17g %.17g %.17g\n%.17g %.17g %.17g\n"
+                 "1\n1 2 3 0 200 100 50\n10 20 30\n"
+                 "%.17g %.17g %.17g 255 128 64\n",
+                 d, d, d + 5, d, d, d + 4, d + 1, d, d + 4, d - 30, d - 30, d,
+                 d + 30, d - 30, d, d, d + 30, d, d + 3.125 * 4, d + 0.3,
+                 d + 4 * 4);
+        rt_scene *scene = rt_test_scene_from_string(text);
+        /* the ray hits (d + 0.5, d + 0.3, d); the light is at
+         * (d + 12.5, d + 0.3, d + 16): S = (12, 0, 16) / 20 */
+        rt_ray ray = {{d + 0.5, d + 0.3, d + 5}, {0, 0, -1}};
+        rt_color c = rt_trace(scene, ray, RT_DEFAULT_DEPTH);
+        char what[64];
+        snprintf(what, sizeof what, "offset %g", d);
+        /* tolerance 1e-3: the coordinates themselves are rounded to
+         * 1e-7 (at 1e9) of distances ~10 */
+        assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
+                     0.8 * 64.0 * 50 / 255, 1e-3, what);
+        rt_scene_free(scene);
+    }
+}
+END_TEST
+
 START_TEST(channel_to_byte_clamps_and_rounds_halves_away_from_zero)
 {
     static const struct {
@@ -344,6 +377,7 @@ Suite *shade_suite(void)
     tcase_add_test(tc, facet_beyond_the_light_casts_no_shadow);
     tcase_add_test(tc, ray_that_hits_nothing_returns_the_background);
     tcase_add_test(tc, shading_does_not_depend_on_the_scale_of_coordinates);
+    tcase_add_test(tc, shading_far_from_the_origin_has_no_self_shadowing);
     suite_add_tcase(suite, tc);
 
     TCase *pixels = tcase_create("pixels");
