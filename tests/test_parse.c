@@ -187,6 +187,15 @@ static const bad_case bad_cases[] = {
      S_SYNTAX | S_RANGE | S_LIMIT, 7, 1, "2000000000", 1},
     {"vertex count past int", 3, "99999999999", ALL, NULL,
      S_SYNTAX | S_RANGE | S_LIMIT, 3, 1, "99999999999", 1},
+    /* at the boundary: lines 4..10 are 7 record lines */
+    {"vertex count 8 with 7 lines left", 3, "8", ALL, NULL,
+     S_SYNTAX | S_RANGE | S_LIMIT, 3, 1, "8", 1},
+    {"vertex count 7 eats the facet count", 3, "7", ALL, NULL, S_SYNTAX, 7, 2,
+     "", 1},
+    {"facet count 4 with 3 lines left", 7, "4", ALL, NULL,
+     S_SYNTAX | S_RANGE | S_LIMIT, 7, 1, "4", 1},
+    {"facet count 3 eats the background", 7, "3", ALL, NULL, S_SYNTAX, 9, 9,
+     "", 1},
     /* degenerate cameras: reported on the screen record */
     {"O = A", 1, "0 0 4", ALL, NULL, S_CAMERA, 2, 0, "", 0},
     {"B = A", 2, "0 0 4 0 0 4 2 2", ALL, NULL, S_CAMERA, 2, 0, "", 0},
