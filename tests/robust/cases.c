@@ -1,0 +1,1502 @@
+/*
+ * cases.c - the stiff and extreme cases of issue 5 (docs/robustness.md).
+ *
+ * A case builds its scene, runs one method in one precision and counts
+ * failures by its criterion.  Ray-level cases ask the engine for hits or
+ * colours of rays chosen to be hard (aimed exactly at shared edges, grazing,
+ * in a facet's plane); image-level cases render the scene's camera view and
+ * compare images.  Scenes and rays come from a fixed generator, so every run
+ * measures the same inputs.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "robust/robust.h"
+
+#define RB_PI 3.14159265358979323846
+
+static const rt_rgb8 WHITE = {255, 255, 255};
+static const rt_rgb8 GREY = {200, 200, 200};
+static const rt_rgb8 RED = {220, 60, 50};
+static const rt_rgb8 GREEN = {60, 200, 80};
+static const rt_rgb8 BLUE = {50, 80, 220};
+static const rt_rgb8 SKY = {40, 60, 120};
+
+static void not_applicable(rb_result *r, const char *why)
+{
+    r->applicable = 0;
+    snprintf(r->note, sizeof r->note, "%s", why);
+}
+
+/* A view for ray-level cases: a valid camera far above, the light given. */
+static rb_view ray_view(double scale, rt_vec3 light, rt_rgb8 background)
+{
+    rb_view v = {rb_v(0, 0, 50 * scale), rb_v(0, 0, 49 * scale),
+                 rb_v(scale, 0, 49 * scale), 16, 16, light, WHITE,
+                 background};
+    return v;
+}
+
+static int is_double(rt_precision p) { return p == RT_PRECISION_DOUBLE; }
+
+static rt_vec3 random_in_ball(rb_rng *rng, double radius)
+{
+    for (;;) {
+        rt_vec3 p = rb_v(rb_range(rng, -1, 1), rb_range(rng, -1, 1),
+                         rb_range(rng, -1, 1));
+        if (rb_dot(p, p) <= 1)
+            return rb_scale(p, radius);
+    }
+}
+
+static rt_vec3 random_unit(rb_rng *rng)
+{
+    rt_vec3 p = random_in_ball(rng, 1);
+    while (rb_length(p) < 1e-3)
+        p = random_in_ball(rng, 1);
+    return rb_scale(p, 1 / rb_length(p));
+}
+
+/* The edges two facets share, and the vertices all of whose edges are
+ * shared (the inside of a mesh): where rays are aimed. */
+typedef struct shared {
+    int (*edges)[2];
+    int edge_count;
+    int *vertices;
+    int vertex_count;
+} shared;
+
+static int compare_edges(const void *a, const void *b)
+{
+    const int *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] > y[0]) - (x[0] < y[0])
+                        : (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+static shared shared_of(const rb_mesh *m)
+{
+    shared sh = {0};
+    int n = 3 * m->facet_count;
+    int (*all)[2] = malloc(sizeof *all * (size_t)(n + 1));
+    for (int i = 0; i < m->facet_count; i++)
+        for (int e = 0; e < 3; e++) {
+            int a = m->facets[i].vertex[e], b = m->facets[i].vertex[(e + 1) % 3];
+            all[3 * i + e][0] = a < b ? a : b;
+            all[3 * i + e][1] = a < b ? b : a;
+        }
+    qsort(all, (size_t)n, sizeof *all, compare_edges);
+    sh.edges = malloc(sizeof *sh.edges * (size_t)(n + 1));
+    char *boundary = calloc((size_t)m->vertex_count + 1, 1);
+    char *used = calloc((size_t)m->vertex_count + 1, 1);
+    for (int i = 0; i < n;) {
+        int j = i;
+        while (j < n && compare_edges(all[i], all[j]) == 0)
+            j++;
+        used[all[i][0]] = used[all[i][1]] = 1;
+        if (j - i >= 2) {
+            sh.edges[sh.edge_count][0] = all[i][0];
+            sh.edges[sh.edge_count++][1] = all[i][1];
+        } else {
+            boundary[all[i][0]] = boundary[all[i][1]] = 1;
+        }
+        i = j;
+    }
+    sh.vertices = malloc(sizeof *sh.vertices * (size_t)(m->vertex_count + 1));
+    for (int v = 0; v < m->vertex_count; v++)
+        if (used[v] && !boundary[v])
+            sh.vertices[sh.vertex_count++] = v;
+    free(all);
+    free(boundary);
+    free(used);
+    return sh;
+}
+
+static void shared_free(shared *sh)
+{
+    free(sh->edges);
+    free(sh->vertices);
+}
+
+/* A point on an edge shared by two facets, or (with probability
+ * vertex_share) a vertex inside the mesh. */
+static rt_vec3 shared_point(const rb_mesh *m, const shared *sh, rb_rng *rng,
+                            double vertex_share)
+{
+    if (sh->vertex_count > 0 && rb_uniform(rng) < vertex_share)
+        return m->vertices[sh->vertices[(int)(rb_uniform(rng) * sh->vertex_count)]];
+    const int *e = sh->edges[(int)(rb_uniform(rng) * sh->edge_count)];
+    return rb_lerp(m->vertices[e[0]], m->vertices[e[1]], rb_uniform(rng));
+}
+
+static int hit_is_nan(const rb_hit *h)
+{
+    return isnan(h->t) || isnan(h->point.x) || isnan(h->point.y) ||
+           isnan(h->point.z);
+}
+
+/* ================================================================== */
+/* Watertightness                                                      */
+
+static void sphere_edges(rb_method method, rt_precision precision,
+                         rb_result *r, double scale)
+{
+    rb_mesh m = {0};
+    rt_vec3 centre = rb_scale(rb_v(0.1, -0.2, 0.3), scale);
+    rb_mesh_icosphere(&m, centre, scale, 2, 0, GREY);
+    rb_view view = ray_view(scale, centre, SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {5};
+    shared sh = shared_of(&m);
+    for (int i = 0; i < 100000; i++) {
+        rt_vec3 target = shared_point(&m, &sh, &rng, 0.3);
+        rt_vec3 origin = rb_add(centre, random_in_ball(&rng, 0.5 * scale));
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+        else
+            r->nans += hit_is_nan(&h);
+    }
+    shared_free(&sh);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+static void case_w1(rb_method m, rt_precision p, rb_result *r) { sphere_edges(m, p, r, 1e-3); }
+static void case_w2(rb_method m, rt_precision p, rb_result *r) { sphere_edges(m, p, r, 1); }
+static void case_w3(rb_method m, rt_precision p, rb_result *r) { sphere_edges(m, p, r, 1e3); }
+
+/* A cone of 64 thin facets around one apex; rays through the apex and the
+ * spokes from everywhere. */
+static void case_w4(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    int apex = rb_mesh_vertex(&m, rb_rotate(rb_v(0, 0, 0)));
+    int rim0 = m.vertex_count;
+    for (int i = 0; i < 64; i++) {
+        double a = 2 * RB_PI * i / 64;
+        rb_mesh_vertex(&m, rb_rotate(rb_v(cos(a), sin(a), 0.4)));
+    }
+    for (int i = 0; i < 64; i++)
+        rb_mesh_facet(&m, apex, rim0 + i, rim0 + (i + 1) % 64, 0, GREY);
+    rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {44};
+    for (int i = 0; i < 50000; i++) {
+        rt_vec3 target = m.vertices[apex];
+        if (i % 2)
+            target = rb_lerp(m.vertices[apex],
+                             m.vertices[rim0 + (int)(rb_uniform(&rng) * 64)],
+                             rb_uniform(&rng));
+        /* From within 60 degrees of the axis, above or below: there the
+         * fan covers the apex and the spokes from the ray's view. */
+        rt_vec3 axis = rb_rotate(rb_v(0, 0, rb_uniform(&rng) < 0.5 ? -1 : 1));
+        rt_vec3 d = random_unit(&rng);
+        while (rb_dot(d, axis) < 0.5)
+            d = random_unit(&rng);
+        rt_vec3 origin = rb_add(target, rb_scale(d, rb_range(&rng, 0.5, 3)));
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+        else
+            r->nans += hit_is_nan(&h);
+    }
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* A tilted grid with integer coordinates (exact in float too) near 1e6,
+ * windings alternating; rays from above aimed at shared edges. */
+static void case_w5(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rt_vec3 corner = rb_v(1048579, 1000000, 500000);
+    rb_mesh_grid(&m, corner, rb_v(1, 0, 1), rb_v(0, 2, 1), 16, 1, 0, GREY);
+    rt_vec3 normal = rb_cross(rb_v(1, 0, 1), rb_v(0, 2, 1));
+    normal = rb_scale(normal, 1 / rb_length(normal));
+    rb_view view = ray_view(1, rb_add(corner, rb_v(0, 0, 100)), SKY);
+    view.observer = rb_add(view.observer, corner);
+    view.screen_center = rb_add(view.screen_center, corner);
+    view.screen_right = rb_add(view.screen_right, corner);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {55};
+    shared sh = shared_of(&m);
+    for (int i = 0; i < 100000; i++) {
+        rt_vec3 target = shared_point(&m, &sh, &rng, 0.2);
+        rt_vec3 d = random_unit(&rng);
+        if (rb_dot(d, normal) < 0.1)
+            d = rb_add(d, rb_scale(normal, 1.1 - rb_dot(d, normal)));
+        rt_vec3 origin = rb_add(target, rb_scale(d, rb_range(&rng, 1, 5)));
+        /* An origin float holds exactly: the same ray in both precisions. */
+        origin = rb_v((float)origin.x, (float)origin.y, (float)origin.z);
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+        else
+            r->nans += hit_is_nan(&h);
+    }
+    shared_free(&sh);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* ================================================================== */
+/* Degenerate and sliver facets                                        */
+
+static void case_d1(rb_method method, rt_precision precision, rb_result *r)
+{
+    /* Collinear in exact binary arithmetic: repeated points, points on an
+     * axis, on a diagonal, and far from the origin. */
+    static const double triples[][9] = {
+        {1, 2, 3, 1, 2, 3, 1, 2, 3},
+        {0, 0, 0, 0, 0, 0, 1, 1, 1},
+        {1, 2, 3, 2, 4, 6, 3, 6, 9},
+        {0.5, 0.25, 0.125, 1.5, 0.75, 0.375, 1, 0.5, 0.25},
+        {-1, 0, 0, 1, 0, 0, 0.3, 0, 0},
+        {1e15, 1e15, 1e15, 3e15, 3e15, 3e15, 2e15, 2e15, 2e15},
+        {1e-9, 2e-9, 0, 3e-9, 6e-9, 0, 2e-9, 4e-9, 0}};
+    int n = (int)(sizeof triples / sizeof triples[0]);
+    rb_mesh m = {0};
+    for (int i = 0; i < n; i++)
+        rb_mesh_triangle(&m, rb_v(triples[i][0], triples[i][1], triples[i][2]),
+                         rb_v(triples[i][3], triples[i][4], triples[i][5]),
+                         rb_v(triples[i][6], triples[i][7], triples[i][8]), 0,
+                         GREY);
+    rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    if (method == RB_OURS && (info.live_facet_count != 0 ||
+                              info.warning_count != n))
+        r->failures += n;
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {11};
+    for (int i = 0; i < 70000; i++) {
+        const rt_facet_desc *f = &m.facets[i % n];
+        rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
+                c = m.vertices[f->vertex[2]];
+        rt_vec3 target = i % 3 == 0 ? a : rb_lerp(a, i % 3 == 1 ? b : c,
+                                                  rb_uniform(&rng));
+        double size = fmax(rb_length(rb_sub(b, a)), rb_length(rb_sub(c, a)));
+        if (size == 0)
+            size = 1;
+        rt_vec3 origin = rb_add(target, rb_scale(random_unit(&rng), size));
+        rb_hit h;
+        r->total++;
+        if (rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+    }
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* A random orthonormal frame (u, v, n). */
+static void random_frame(rb_rng *rng, rt_vec3 *u, rt_vec3 *v, rt_vec3 *n)
+{
+    *n = random_unit(rng);
+    rt_vec3 t = random_unit(rng);
+    *u = rb_cross(*n, t);
+    *u = rb_scale(*u, 1 / rb_length(*u));
+    *v = rb_cross(*n, *u);
+}
+
+/* 16 slivers of the given aspect ratio ("cap": the apex near the long edge;
+ * "needle": one edge that short), randomly oriented; rays aimed at interior
+ * points must hit their sliver, and the hit point must be where aimed. */
+static void slivers(rb_method method, rt_precision precision, rb_result *r,
+                    double aspect, int needle)
+{
+    rb_mesh m = {0};
+    rb_rng rng = {(uint64_t)(aspect * 7) + (uint64_t)needle};
+    rt_vec3 normals[16];
+    for (int i = 0; i < 16; i++) {
+        rt_vec3 u, v, n;
+        random_frame(&rng, &u, &v, &n);
+        rt_vec3 at = rb_v(10.0 * (i % 4) + 0.37, 10.0 * (i / 4) - 0.11, 0.29);
+        rt_vec3 a = at, b = rb_add(at, u);
+        rt_vec3 c = needle ? rb_add(b, rb_scale(v, 1 / aspect))
+                           : rb_add(at, rb_add(rb_scale(u, 0.37),
+                                               rb_scale(v, 1 / aspect)));
+        rb_mesh_triangle(&m, a, b, c, 0, GREY);
+        normals[i] = n;
+    }
+    rb_view view = ray_view(1, rb_v(0, 0, 30), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    double tolerance = is_double(precision) ? 1e-9 : 1e-3;
+    long misses = 0;
+    for (int i = 0; i < 64000; i++) {
+        int s = i % 16;
+        const rt_facet_desc *f = &m.facets[s];
+        rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
+                c = m.vertices[f->vertex[2]];
+        double wu = rb_range(&rng, 0.05, 0.9), wv = rb_range(&rng, 0.05, 0.95 - wu);
+        rt_vec3 target = rb_add(a, rb_add(rb_scale(rb_sub(b, a), wu),
+                                          rb_scale(rb_sub(c, a), wv)));
+        rt_vec3 d = random_unit(&rng);
+        if (fabs(rb_dot(d, normals[s])) < 0.2)
+            d = rb_add(d, rb_scale(normals[s], 0.5));
+        rt_vec3 origin = rb_add(target, d);
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h)) {
+            misses++;
+            continue;
+        }
+        if (hit_is_nan(&h)) {
+            r->nans++;
+            continue;
+        }
+        double error = rb_length(rb_sub(h.point, target));
+        if (!(error <= tolerance * (1 + rb_length(target))) ||
+            h.facet != s)
+            r->failures++;
+    }
+    if (is_double(precision) || method != RB_OURS)
+        r->failures += misses;
+    else
+        snprintf(r->note, sizeof r->note,
+                 "%ld misses allowed (the sliver is thinner than "
+                 "float's resolution)", misses);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+static void case_d2(rb_method m, rt_precision p, rb_result *r) { slivers(m, p, r, 1e8, 0); }
+static void case_d3(rb_method m, rt_precision p, rb_result *r) { slivers(m, p, r, 1e12, 0); }
+static void case_d4(rb_method m, rt_precision p, rb_result *r) { slivers(m, p, r, 1e12, 1); }
+
+/* Exact a - b as hi + lo (Knuth's two-sum). */
+static void two_diff(double a, double b, double *hi, double *lo)
+{
+    double s = a - b, bb = s - a;
+    *hi = s;
+    *lo = (a - (s - bb)) + (-b - bb);
+}
+
+/* x1 y2 - x2 y1 for double-double x and y, to about 1e-30 relative. */
+static double dd_cross(const double x1[2], const double y2[2],
+                       const double x2[2], const double y1[2])
+{
+    double p = x1[0] * y2[0], pe = fma(x1[0], y2[0], -p);
+    double q = x2[0] * y1[0], qe = fma(x2[0], y1[0], -q);
+    double small = pe - qe + x1[0] * y2[1] + x1[1] * y2[0] -
+                   x2[0] * y1[1] - x2[1] * y1[0];
+    return (p - q) + small;
+}
+
+/* The unit normal of the facet whose vertices are exactly a, b, c. */
+static rt_vec3 exact_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    double e[2][3][2];
+    two_diff(b.x, a.x, &e[0][0][0], &e[0][0][1]);
+    two_diff(b.y, a.y, &e[0][1][0], &e[0][1][1]);
+    two_diff(b.z, a.z, &e[0][2][0], &e[0][2][1]);
+    two_diff(c.x, a.x, &e[1][0][0], &e[1][0][1]);
+    two_diff(c.y, a.y, &e[1][1][0], &e[1][1][1]);
+    two_diff(c.z, a.z, &e[1][2][0], &e[1][2][1]);
+    rt_vec3 n = rb_v(dd_cross(e[0][1], e[1][2], e[0][2], e[1][1]),
+                     dd_cross(e[0][2], e[1][0], e[0][0], e[1][2]),
+                     dd_cross(e[0][0], e[1][1], e[0][1], e[1][0]));
+    return rb_scale(n, 1 / rb_length(n));
+}
+
+/* Normals of 2000 slivers, caps and needles of aspect 1e2 to 1e12. */
+static void case_d5(rb_method method, rt_precision precision, rb_result *r)
+{
+    if (!is_double(precision)) {
+        not_applicable(r, "normals are computed once, in double, for both");
+        return;
+    }
+    rb_rng rng = {505};
+    rb_mesh m = {0};
+    for (int i = 0; i < 2000; i++) {
+        double aspect = pow(10, 2 + (i % 11));
+        rt_vec3 u, v, n;
+        random_frame(&rng, &u, &v, &n);
+        rt_vec3 a = random_in_ball(&rng, 5), b = rb_add(a, u);
+        rt_vec3 c = i % 2 ? rb_add(b, rb_scale(v, 1 / aspect))
+                          : rb_add(a, rb_add(rb_scale(u, rb_range(&rng, 0.1, 0.9)),
+                                             rb_scale(v, 1 / aspect)));
+        rb_mesh_triangle(&m, a, b, c, 0, GREY);
+    }
+    rb_view view = ray_view(1, rb_v(0, 0, 30), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    double worst = 0;
+    for (int i = 0; i < m.facet_count; i++) {
+        rt_vec3 a = m.vertices[3 * i], b = m.vertices[3 * i + 1],
+                c = m.vertices[3 * i + 2];
+        rt_vec3 exact = exact_normal(a, b, c), n;
+        if (method == RB_OURS) {
+            rt_facet_info info;
+            rt_scene_facet(scene, i, &info);
+            n = info.normal;
+        } else {
+            n = rb_cross(rb_sub(b, a), rb_sub(c, a));
+            n = rb_scale(n, 1 / rb_length(n));
+        }
+        double error = rb_length(rb_sub(n, exact));
+        r->total++;
+        if (isnan(error))
+            r->nans++;
+        else if (!(error <= 1e-9))
+            r->failures++;
+        if (error > worst)
+            worst = error;
+    }
+    snprintf(r->note, sizeof r->note, "largest error %.1e", worst);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* ================================================================== */
+/* Translation and scale invariance (images)                           */
+
+/* Floor (reflective), a slab lifted by 1e-3 of the scene's size, a sphere,
+ * a mirror wall; 64 x 64. */
+static void invariance_scene(rb_mesh *m, rb_view *v)
+{
+    rb_mesh_grid(m, rb_v(-1, -1, 0), rb_v(0.25, 0, 0), rb_v(0, 0.25, 0), 8, 0,
+                 0.3, GREY);
+    rb_mesh_box(m, rb_v(-0.45, -0.3, 0.002), rb_v(0.15, 0.3, 0.152), 0, RED);
+    rb_mesh_icosphere(m, rb_v(0.5, 0.45, 0.36), 0.35, 1, 0.2, GREEN);
+    int w0 = rb_mesh_vertex(m, rb_v(-1, -1, 0)), w1 = rb_mesh_vertex(m, rb_v(-1, 1, 0)),
+        w2 = rb_mesh_vertex(m, rb_v(-1, 1, 1.2)), w3 = rb_mesh_vertex(m, rb_v(-1, -1, 1.2));
+    rb_mesh_facet(m, w0, w1, w2, 0.8, BLUE);
+    rb_mesh_facet(m, w0, w2, w3, 0.8, BLUE);
+    *v = (rb_view){rb_v(1.7, -2.3, 2.1), rb_v(1.19, -1.61, 1.53),
+                   rb_v(1.19 + 0.55, -1.61 + 0.4, 1.53), 64, 64,
+                   rb_v(1.3, 0.9, 3.1), WHITE, SKY};
+}
+
+/* The sequence of facets and shadow tests along a pixel's path (ours,
+ * double, unit scale): pixels whose 8 neighbours all share it are not on a
+ * crease, a silhouette or a shadow edge, even seen in a mirror. */
+static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
+{
+    uint64_t sig = 1469598103934665603u;
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    for (int bounce = 0; bounce < 6; bounce++) {
+        rt_hit h;
+        if (!rt_scene_nearest_hit(scene, ray, INFINITY, &h))
+            return sig * 1099511628211u;
+        rt_facet_info f;
+        rt_scene_facet(scene, h.facet, &f);
+        rt_vec3 off = rb_add(h.point, rb_scale(h.normal, 1e-9));
+        int lit = rb_dot(h.normal, rb_sub(info.light_position, h.point)) > 0 &&
+                  !rt_scene_occluded(scene, off, info.light_position, h.facet);
+        sig = (sig ^ (uint64_t)(h.facet * 2 + lit + 7)) * 1099511628211u;
+        if (f.k == 0)
+            break;
+        rt_vec3 d = rb_scale(ray.direction, 1 / rb_length(ray.direction));
+        d = rb_sub(d, rb_scale(h.normal, 2 * rb_dot(d, h.normal)));
+        ray = (rt_ray){off, d};
+    }
+    return sig;
+}
+
+static unsigned char *edge_mask(const rt_scene *scene)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    int w = info.width, hgt = info.height;
+    uint64_t *sig = malloc(sizeof *sig * (size_t)(w * hgt));
+    unsigned char *mask = calloc((size_t)(w * hgt), 1);
+    for (int j = 0; j < hgt; j++)
+        for (int i = 0; i < w; i++)
+            sig[j * w + i] = path_signature(scene, rt_camera_ray(&info.camera, i, j));
+    for (int j = 0; j < hgt; j++)
+        for (int i = 0; i < w; i++)
+            for (int dj = -1; dj <= 1; dj++)
+                for (int di = -1; di <= 1; di++) {
+                    int x = i + di, y = j + dj;
+                    if (x >= 0 && y >= 0 && x < w && y < hgt &&
+                        sig[y * w + x] != sig[j * w + i])
+                        mask[j * w + i] = 1;
+                }
+    free(sig);
+    return mask;
+}
+
+static long count_differing(const rt_image *a, const rt_image *b)
+{
+    if (a->pixels == NULL || b->pixels == NULL)
+        return (long)a->width * a->height;
+    long n = 0;
+    for (int j = 0; j < a->height; j++)
+        for (int i = 0; i < a->width; i++)
+            n += memcmp(rt_image_pixel(a, i, j), rt_image_pixel(b, i, j), 3) != 0;
+    return n;
+}
+
+static rt_image render_view(const rb_mesh *base, const rb_view *base_view,
+                            double scale, rt_vec3 shift, rb_method method,
+                            rt_precision precision, long *nans)
+{
+    rb_mesh m = {0};
+    for (int i = 0; i < base->vertex_count; i++)
+        rb_mesh_vertex(&m, rb_transform_point(base->vertices[i], scale, shift));
+    for (int i = 0; i < base->facet_count; i++)
+        rb_mesh_facet(&m, base->facets[i].vertex[0], base->facets[i].vertex[1],
+                      base->facets[i].vertex[2], base->facets[i].k,
+                      base->facets[i].color);
+    rb_view view = *base_view;
+    rb_view_transform(&view, scale, shift);
+    rt_scene *scene = rb_scene(&m, &view);
+    rt_image image = {0};
+    if (scene == NULL) {
+        *nans = -1;
+        rb_mesh_free(&m);
+        return image;
+    }
+    rt_image_create(&image, view.width, view.height);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    *nans = rb_engine_render(e, 5, 2, &image);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+    return image;
+}
+
+/* The scene at unit scale against the same scene moved: differing pixels
+ * at most 0.1 % of the image, each on an edge of the mask. */
+static void invariance(rb_method method, rt_precision precision, rb_result *r,
+                       double scale, rt_vec3 shift)
+{
+    rb_mesh m = {0};
+    rb_view view;
+    invariance_scene(&m, &view);
+    rt_scene *reference_scene = rb_scene(&m, &view);
+    unsigned char *mask = edge_mask(reference_scene);
+    long nans_a, nans_b;
+    rt_image a = render_view(&m, &view, 1, rb_v(0, 0, 0), method, precision, &nans_a);
+    rt_image b = render_view(&m, &view, scale, shift, method, precision, &nans_b);
+    long differ = 0, off_edge = 0, edges = 0;
+    r->total = (long)view.width * view.height;
+    if (b.pixels == NULL || nans_b < 0) {
+        r->failures = r->total;
+        snprintf(r->note, sizeof r->note, "the moved scene was refused");
+    } else {
+        for (int j = 0; j < view.height; j++)
+            for (int i = 0; i < view.width; i++) {
+                edges += mask[j * view.width + i];
+                if (memcmp(rt_image_pixel(&a, i, j), rt_image_pixel(&b, i, j), 3)) {
+                    differ++;
+                    off_edge += !mask[j * view.width + i];
+                }
+            }
+        r->failures = differ * 1000 > r->total ? differ : off_edge;
+        r->nans = nans_a + nans_b;
+        snprintf(r->note, sizeof r->note,
+                 "%ld pixels differ, %ld of them off the %ld edge pixels",
+                 differ, off_edge, edges);
+    }
+    rt_image_destroy(&a);
+    rt_image_destroy(&b);
+    free(mask);
+    rt_scene_free(reference_scene);
+    rb_mesh_free(&m);
+}
+
+static void case_t1(rb_method m, rt_precision p, rb_result *r)
+{
+    if (!is_double(p)) {
+        not_applicable(r, "float's step at 1e6 is 0.06: the scene loses its shape (V6)");
+        return;
+    }
+    invariance(m, p, r, 1, rb_v(1e6, -1e6, 1e6));
+}
+static void case_t2(rb_method m, rt_precision p, rb_result *r) { invariance(m, p, r, 1e-6, rb_v(0, 0, 0)); }
+static void case_t3(rb_method m, rt_precision p, rb_result *r) { invariance(m, p, r, 1e6, rb_v(0, 0, 0)); }
+static void case_t4(rb_method m, rt_precision p, rb_result *r)
+{
+    invariance(m, p, r, is_double(p) ? 1e-150 : 1e-15, rb_v(0, 0, 0));
+}
+static void case_t5(rb_method m, rt_precision p, rb_result *r)
+{
+    invariance(m, p, r, is_double(p) ? 1e150 : 1e15, rb_v(0, 0, 0));
+}
+
+/* ================================================================== */
+/* Self-intersection: contact shadows and acne                        */
+
+/* A tessellated floor, a slab lifted by 1e-3 of the scene's size, the
+ * light above; camera rays from inside the gap to the floor under the slab
+ * must find it dark, and rays from above to the open floor must find it
+ * lit with the exact N.S. */
+static void contact(rb_method method, rt_precision precision, rb_result *r,
+                    double scale, rt_vec3 shift)
+{
+    rb_mesh m = {0};
+    double h = 2e-3;
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.25, 0, 0), rb_v(0, 0.25, 0), 8,
+                 1, 0, GREY);
+    rb_mesh_box(&m, rb_v(-0.5, -0.5, h), rb_v(0.5, 0.5, h + 0.2), 0, RED);
+    rb_mesh_transform(&m, scale, shift);
+    rt_vec3 light = rb_v(0.2, 0.1, 3);
+    rb_view view = ray_view(1, light, SKY);
+    rb_view_transform(&view, scale, shift);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {77};
+    long leaks = 0, acne = 0;
+    for (int i = 0; i < 100000; i++) {
+        int under = i % 2;
+        rt_vec3 origin, target;
+        if (under) {
+            origin = rb_v(rb_range(&rng, -0.45, 0.45), rb_range(&rng, -0.45, 0.45), h / 2);
+            target = rb_v(rb_range(&rng, -0.4, 0.4), rb_range(&rng, -0.4, 0.4), 0);
+        } else {
+            double x = rb_range(&rng, 0.7, 0.98) * (rb_uniform(&rng) < 0.5 ? -1 : 1);
+            double y = rb_range(&rng, -0.98, 0.98);
+            if (i % 4 == 0) {
+                double s = x;
+                x = y, y = s;
+            }
+            target = rb_v(x, y, 0);
+            origin = rb_add(target, rb_v(rb_range(&rng, -0.1, 0.1), rb_range(&rng, -0.1, 0.1), 1));
+        }
+        rt_vec3 to_light = rb_sub(light, target);
+        double expected = 200 * to_light.z / rb_length(to_light);
+        origin = rb_transform_point(origin, scale, shift);
+        target = rb_transform_point(target, scale, shift);
+        rt_color c = rb_engine_trace(e, (rt_ray){origin, rb_sub(target, origin)}, 0);
+        r->total++;
+        if (rb_color_has_nan(c))
+            r->nans++;
+        else if (under && c.r != 0)
+            leaks++;
+        else if (!under && !(fabs(c.r - expected) <= 1e-3 * expected))
+            acne++;
+    }
+    r->failures = leaks + acne;
+    snprintf(r->note, sizeof r->note, "%ld leaks (under the slab), %ld acne (open floor)",
+             leaks, acne);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+static void case_s1(rb_method m, rt_precision p, rb_result *r) { contact(m, p, r, 1e-6, rb_v(0, 0, 0)); }
+static void case_s2(rb_method m, rt_precision p, rb_result *r) { contact(m, p, r, 1e-3, rb_v(0, 0, 0)); }
+static void case_s3(rb_method m, rt_precision p, rb_result *r) { contact(m, p, r, 1, rb_v(0, 0, 0)); }
+static void case_s4(rb_method m, rt_precision p, rb_result *r) { contact(m, p, r, 1e3, rb_v(0, 0, 0)); }
+static void case_s5(rb_method m, rt_precision p, rb_result *r) { contact(m, p, r, 1e6, rb_v(0, 0, 0)); }
+static void case_s6(rb_method m, rt_precision p, rb_result *r)
+{
+    if (!is_double(p)) {
+        not_applicable(r, "float's step at 1e12 is 65536: no scene of size 2 survives");
+        return;
+    }
+    contact(m, p, r, 1, rb_v(1e12, -1e12, 1e12));
+}
+
+/* ================================================================== */
+/* Lights                                                              */
+
+/* Rays from above to a floor (optionally tilted); each colour against what
+ * the light should give there (`expect` returns it, or -1 for "exactly 0"). */
+typedef double (*expect_fn)(rt_vec3 target, rt_vec3 light);
+
+static double expect_zero(rt_vec3 target, rt_vec3 light)
+{
+    (void)target, (void)light;
+    return -1;
+}
+
+static double expect_lit_z(rt_vec3 target, rt_vec3 light)
+{
+    rt_vec3 s = rb_sub(light, target);
+    return 200 * s.z / rb_length(s);
+}
+
+static void floor_rays(rb_method method, rt_precision precision, rb_result *r,
+                       rb_mesh *m, rt_vec3 light, int tilted, expect_fn expect,
+                       double tolerance, double extent, int skip_wall)
+{
+    rb_view view = ray_view(1, tilted ? rb_rotate(light) : light, SKY);
+    if (tilted)
+        for (int i = 0; i < m->vertex_count; i++)
+            m->vertices[i] = rb_rotate(m->vertices[i]);
+    rt_scene *scene = rb_scene(m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    /* In the plane up to rounding: the light gives at most what its own
+     * rounding (relative 1e-16, float 6e-8) lets through - invisible. */
+    double zero_tolerance = is_double(precision) ? 1e-6 : 1e-2;
+    rb_rng rng = {99};
+    for (int i = 0; i < 50000; i++) {
+        rt_vec3 target = rb_v(rb_range(&rng, -extent, extent),
+                              rb_range(&rng, -extent, extent), 0);
+        if (skip_wall && fabs(target.x) < 0.05)
+            target.x = 0.05 + target.x;
+        rt_vec3 origin = rb_add(target, rb_v(rb_range(&rng, -0.2, 0.2),
+                                             rb_range(&rng, -0.2, 0.2), 0.5));
+        if (skip_wall && origin.x * target.x <= 0)
+            origin.x = target.x;
+        double expected = expect(target, light);
+        if (tilted)
+            target = rb_rotate(target), origin = rb_rotate(origin);
+        rt_color c = rb_engine_trace(e, (rt_ray){origin, rb_sub(target, origin)}, 0);
+        r->total++;
+        if (rb_color_has_nan(c))
+            r->nans++;
+        else if (expected < 0 ? c.r != 0 && !(tilted && fabs(c.r) < zero_tolerance)
+                              : !(fabs(c.r - expected) <= tolerance * expected))
+            r->failures++;
+    }
+    rb_engine_free(e);
+    rt_scene_free(scene);
+}
+
+static void light_in_plane(rb_method method, rt_precision precision,
+                           rb_result *r, int tilted)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.25, 0, 0), rb_v(0, 0.25, 0), 8, 1,
+                 0, GREY);
+    floor_rays(method, precision, r, &m, rb_v(3, 0.5, 0), tilted, expect_zero,
+               0, 0.98, 0);
+    rb_mesh_free(&m);
+}
+
+static void case_l1(rb_method m, rt_precision p, rb_result *r) { light_in_plane(m, p, r, 0); }
+static void case_l2(rb_method m, rt_precision p, rb_result *r) { light_in_plane(m, p, r, 1); }
+
+/* The light at the apex of a cone of facets opening upwards; the floor
+ * below is lit everywhere (the apex ends every shadow segment). */
+static void case_l3(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-3, -3, 0), rb_v(0.5, 0, 0), rb_v(0, 0.5, 0), 12, 1,
+                 0, GREY);
+    rt_vec3 apex = rb_v(0.1, 0.05, 1.0);
+    int a = rb_mesh_vertex(&m, apex), rim = m.vertex_count;
+    for (int i = 0; i < 16; i++) {
+        double t = 2 * RB_PI * i / 16;
+        rb_mesh_vertex(&m, rb_v(0.1 + cos(t), 0.05 + sin(t), 2));
+    }
+    for (int i = 0; i < 16; i++)
+        rb_mesh_facet(&m, a, rim + i, rim + (i + 1) % 16, 0, RED);
+    floor_rays(method, precision, r, &m, apex, 0, expect_lit_z,
+               is_double(precision) ? 1e-9 : 1e-4, 2.5, 0);
+    rb_mesh_free(&m);
+}
+
+/* The light on a wall (inside one of its facets); the floor on both sides
+ * is lit (the wall meets each shadow segment only at its end). */
+static void case_l4(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-2, -2, 0), rb_v(0.5, 0, 0), rb_v(0, 0.5, 0), 8, 1,
+                 0, GREY);
+    rb_mesh_grid(&m, rb_v(0, -2, 0), rb_v(0, 1, 0), rb_v(0, 0, 0.5), 4, 1, 0,
+                 BLUE);
+    floor_rays(method, precision, r, &m, rb_v(0, 0.3, 0.8), 0, expect_lit_z,
+               is_double(precision) ? 1e-9 : 1e-4, 1.95, 1);
+    rb_mesh_free(&m);
+}
+
+/* A tilted tessellated floor lit at a grazing angle: no acne. */
+static void grazing_light(rb_method method, rt_precision precision,
+                          rb_result *r, double angle)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.125, 0, 0), rb_v(0, 0.125, 0), 16,
+                 1, 0, GREY);
+    rt_vec3 light = rb_v(10 * cos(angle), 0.3, 10 * sin(angle));
+    floor_rays(method, precision, r, &m, light, 1, expect_lit_z,
+               is_double(precision) ? 1e-2 : 0.5, 0.98, 0);
+    rb_mesh_free(&m);
+}
+
+static void case_l5(rb_method m, rt_precision p, rb_result *r) { grazing_light(m, p, r, 1e-6); }
+static void case_l6(rb_method m, rt_precision p, rb_result *r)
+{
+    if (!is_double(p)) {
+        not_applicable(r, "1e-12 rad is below float's resolution: the light is in the plane (L2)");
+        return;
+    }
+    grazing_light(m, p, r, 1e-12);
+}
+
+/* ================================================================== */
+/* Camera                                                              */
+
+/* The observer on the floor (on a shared vertex, then inside a facet),
+ * looking along it: no camera ray may hit a facet through the observer. */
+static void case_c1(rb_method method, rt_precision precision, rb_result *r)
+{
+    static const double observers[2][2] = {{0, 0}, {0.3, 0.1}};
+    for (int o = 0; o < 2; o++) {
+        rb_mesh m = {0};
+        rb_mesh_grid(&m, rb_v(-2, -2, 0), rb_v(0.5, 0, 0), rb_v(0, 0.5, 0), 8,
+                     1, 0, GREY);
+        int floor_facets = m.facet_count;
+        rb_mesh_box(&m, rb_v(1, -0.5, -0.5), rb_v(1.5, 0.5, 0.5), 0, RED);
+        rt_vec3 eye = rb_v(observers[o][0], observers[o][1], 0);
+        rb_view view = {eye, rb_add(eye, rb_v(1, 0, 0)), rb_add(eye, rb_v(1, -0.8, 0)),
+                        64, 64, rb_v(0.5, 0.5, 2), WHITE, SKY};
+        rt_scene *scene = rb_scene(&m, &view);
+        rt_scene_info info;
+        rt_scene_get_info(scene, &info);
+        rb_engine *e = rb_engine_create(scene, method, precision);
+        rb_rng rng = {31};
+        for (int i = 0; i < 4096 + 20000; i++) {
+            rt_ray ray = i < 4096 ? rt_camera_ray(&info.camera, i % 64, i / 64)
+                                  : (rt_ray){eye, random_unit(&rng)};
+            rb_hit h;
+            r->total++;
+            if (!rb_engine_hit(e, ray, &h))
+                continue;
+            if (hit_is_nan(&h)) {
+                r->nans++;
+                continue;
+            }
+            if (h.facet >= floor_facets)
+                continue;
+            /* The observer is in the floor's plane: a floor facet could
+             * only be met at t = 0. */
+            r->failures++;
+        }
+        rt_image image;
+        rt_image_create(&image, 64, 64);
+        r->nans += rb_engine_render(e, 5, 1, &image);
+        rt_image_destroy(&image);
+        rb_engine_free(e);
+        rt_scene_free(scene);
+        rb_mesh_free(&m);
+    }
+}
+
+/* Rays lying in the plane of a floor, through it: never a hit. */
+static void case_c2(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.25, 0, 0), rb_v(0, 0.25, 0), 8, 1,
+                 0, GREY);
+    rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {21};
+    shared sh = shared_of(&m);
+    for (int i = 0; i < 100000; i++) {
+        rt_vec3 origin = rb_v(rb_range(&rng, -3, 3), rb_range(&rng, -3, 3), 0);
+        rt_vec3 target = i % 2 ? shared_point(&m, &sh, &rng, 0.3)
+                               : rb_v(rb_range(&rng, -1, 1), rb_range(&rng, -1, 1), 0);
+        rt_vec3 d = rb_sub(target, origin);
+        if (d.x == 0 && d.y == 0)
+            d.x = 1;
+        rb_hit h;
+        r->total++;
+        if (rb_engine_hit(e, (rt_ray){origin, d}, &h)) {
+            r->failures++;
+            r->nans += hit_is_nan(&h);
+        }
+        r->nans += rb_color_has_nan(rb_engine_trace(e, (rt_ray){origin, d}, 2));
+    }
+    shared_free(&sh);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* Camera rays grazing a tilted tessellated floor at 1e-12 rad (double) or
+ * 1e-4 rad (float), aimed at its shared edges: every one hits the floor. */
+static void case_c3(rb_method method, rt_precision precision, rb_result *r)
+{
+    double angle = is_double(precision) ? 1e-12 : 1e-4;
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.125, 0, 0), rb_v(0, 0.125, 0), 16,
+                 1, 0, GREY);
+    rb_mesh inner = {0};    /* the same grid, unrotated: where to aim */
+    rb_mesh_grid(&inner, rb_v(-1, -1, 0), rb_v(0.125, 0, 0), rb_v(0, 0.125, 0),
+                 16, 1, 0, GREY);
+    for (int i = 0; i < m.vertex_count; i++)
+        m.vertices[i] = rb_rotate(m.vertices[i]);
+    rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {12};
+    shared sh = shared_of(&inner);
+    for (int i = 0; i < 100000; i++) {
+        rt_vec3 target = shared_point(&inner, &sh, &rng, 0.2);
+        while (fabs(target.x) > 0.5 || fabs(target.y) > 0.5)
+            target = shared_point(&inner, &sh, &rng, 0.2);
+        double heading = rb_range(&rng, 0, 2 * RB_PI);
+        rt_vec3 back = rb_v(cos(heading) * 0.5, sin(heading) * 0.5, 0.5 * tan(angle));
+        rt_vec3 origin = rb_rotate(rb_add(target, back));
+        target = rb_rotate(target);
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+        else
+            r->nans += hit_is_nan(&h);
+    }
+    snprintf(r->note, sizeof r->note, "grazing angle %g rad", angle);
+    shared_free(&sh);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&inner);
+    rb_mesh_free(&m);
+}
+
+/* ================================================================== */
+/* Recursion                                                           */
+
+static void mirror_pair(rb_mesh *m, rb_view *v)
+{
+    rb_mesh_grid(m, rb_v(-10, -10, 0), rb_v(20, 0, 0), rb_v(0, 20, 0), 1, 0, 1,
+                 WHITE);
+    rb_mesh_grid(m, rb_v(-10, -10, 1), rb_v(20, 0, 0), rb_v(0, 20, 0), 1, 0, 1,
+                 WHITE);
+    *v = (rb_view){rb_v(0.1, 0.2, 0.5), rb_v(0.1, 0.2, 0.4),
+                   rb_v(0.1 + 1e-7, 0.2, 0.4), 4, 4, rb_v(0, 0, 0.5), WHITE,
+                   WHITE};
+}
+
+/* Runs fn in a child process; returns its exit status, or -signal. */
+static int in_child(void (*fn)(void *), void *arg)
+{
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        fn(arg);
+        _exit(0);
+    }
+    int status = 0;
+    if (pid < 0 || waitpid(pid, &status, 0) < 0)
+        return -1000;
+    if (WIFSIGNALED(status))
+        return -WTERMSIG(status);
+    return WEXITSTATUS(status);
+}
+
+typedef struct naive_render_job {
+    const rb_engine *engine;
+    int depth;
+    int expected_black;
+} naive_render_job;
+
+static void naive_render_child(void *arg)
+{
+    naive_render_job *job = arg;
+    rt_image image;
+    rt_scene_info info;
+    (void)info;
+    rt_image_create(&image, 4, 4);
+    long nans = rb_engine_render(job->engine, job->depth, 1, &image);
+    int bad = nans != 0;
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++)
+            bad |= rt_image_pixel(&image, i, j)[0] != 0;
+    _exit(bad ? 3 : 0);
+}
+
+/* Two facing mirrors (k = 1), depth 100,000: every pixel black (the depth
+ * runs out), the work exactly linear in the depth, no stack overflow. */
+static void case_r1(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_view view;
+    mirror_pair(&m, &view);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    const int depth = 100000;
+    r->total = 16;
+    if (method != RB_OURS) {
+        naive_render_job job = {e, depth, 1};
+        int status = in_child(naive_render_child, &job);
+        if (status != 0) {
+            r->failures = 16;
+            snprintf(r->note, sizeof r->note,
+                     status < 0 ? "recursion: the process died (signal %d)"
+                                : "wrong pixels (exit %d)",
+                     status < 0 ? -status : status);
+        }
+    } else {
+        rt_render_stats stats[2];
+        int depths[2] = {depth / 10, depth};
+        for (int run = 0; run < 2; run++) {
+            rt_image image;
+            rt_image_create(&image, 4, 4);
+            rt_render_options options;
+            rt_render_options_init(&options);
+            options.max_depth = depths[run];
+            options.precision = precision;
+            options.stats = &stats[run];
+            if (rt_render(scene, &options, &image) != RT_OK)
+                r->failures = 16;
+            for (int j = 0; j < 4 && run == 1; j++)
+                for (int i = 0; i < 4; i++)
+                    r->failures += rt_image_pixel(&image, i, j)[0] != 0;
+            rt_image_destroy(&image);
+        }
+        if (stats[1].reflection_rays != 16u * (uint64_t)depth ||
+            stats[0].reflection_rays != 16u * (uint64_t)(depth / 10))
+            r->failures += 16;
+        snprintf(r->note, sizeof r->note,
+                 "%llu reflections; %.2f s at depth 10,000, %.2f s at 100,000",
+                 (unsigned long long)stats[1].reflection_rays,
+                 stats[0].seconds, stats[1].seconds);
+    }
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* A closed cube of mirrors (k = 1), rays from inside aimed at its edges and
+ * corners, 1000 bounces: none may escape (the background is white). */
+static void case_r2(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_mesh_box(&m, rb_v(-1, -1.1, -0.9), rb_v(1.05, 1, 1.2), 1, WHITE);
+    rb_view view = ray_view(1, rb_v(0.1, 0.2, 0.3), WHITE);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {3};
+    shared sh = shared_of(&m);
+    for (int i = 0; i < 3000; i++) {
+        rt_vec3 target = shared_point(&m, &sh, &rng, 0.3);
+        rt_vec3 origin = random_in_ball(&rng, 0.6);
+        rt_color c = rb_engine_trace(e, (rt_ray){origin, rb_sub(target, origin)}, 1000);
+        r->total++;
+        if (rb_color_has_nan(c))
+            r->nans++;
+        else if (c.r != 0 || c.g != 0 || c.b != 0)
+            r->failures++;
+    }
+    shared_free(&sh);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* ================================================================== */
+/* Special values                                                      */
+
+static const char *const bad_scenes[] = {
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\nnan 0 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\ninf 0 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\n0 -INF 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\n0 0 1e400\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 NaN 255 255 255\n",
+    "NAN 0 5\n0 0 4 1 0 4 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 infinity 0 4 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n1\n1 2 3 nan 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+    "0 0 5\n0 0 4 1 0 4 8 8\n3\n0 0 0\n-1e309 0 0\n0 1 0\n1\n1 2 3 0 255 0 0\n0 0 0\n0 0 9 255 255 255\n",
+};
+
+/* What a loader built on strtod alone accepts: every token a number. */
+static int naive_accepts(const char *text)
+{
+    const char *p = text;
+    while (*p) {
+        while (*p == ' ' || *p == '\n')
+            p++;
+        if (!*p)
+            break;
+        char *end;
+        (void)strtod(p, &end);
+        if (end == p)
+            return 0;
+        p = end;
+    }
+    return 1;
+}
+
+static void case_v1(rb_method method, rt_precision precision, rb_result *r)
+{
+    (void)precision;
+    if (method == RB_NAIVE_MT_FMA || method == RB_NAIVE_PLANE) {
+        not_applicable(r, "the loader does not depend on the intersection test");
+        return;
+    }
+    int n = (int)(sizeof bad_scenes / sizeof bad_scenes[0]);
+    for (int i = 0; i < n; i++) {
+        r->total++;
+        if (method != RB_OURS) {
+            r->failures += naive_accepts(bad_scenes[i]);
+            continue;
+        }
+        rt_scene *scene = NULL;
+        rt_error error;
+        if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", &scene,
+                           &error) == RT_OK || scene != NULL)
+            r->failures++;
+        rt_scene_free(scene);
+    }
+    /* The same values through rt_scene_create. */
+    const double specials[3] = {NAN, INFINITY, -INFINITY};
+    for (int s = 0; s < 3; s++) {
+        for (int where = 0; where < 3; where++) {
+            if (method != RB_OURS)
+                break;
+            rb_mesh m = {0};
+            rb_mesh_triangle(&m, rb_v(0, 0, 0), rb_v(1, 0, 0), rb_v(0, 1, 0), 0, GREY);
+            rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+            if (where == 0)
+                m.vertices[1].y = specials[s];
+            else if (where == 1)
+                view.observer.z = specials[s];
+            else
+                view.light.x = specials[s];
+            rt_scene_desc desc = {view.observer, view.screen_center,
+                                  view.screen_right, 8, 8, m.vertices,
+                                  m.vertex_count, m.facets, m.facet_count,
+                                  SKY, view.light, WHITE};
+            rt_scene *scene = NULL;
+            r->total++;
+            if (rt_scene_create(&desc, &scene, NULL) == RT_OK || scene != NULL)
+                r->failures++;
+            rt_scene_free(scene);
+            rb_mesh_free(&m);
+        }
+    }
+}
+
+/* Rays of every magnitude, and rays that are not rays, at a sphere. */
+static void case_v2(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_mesh_icosphere(&m, rb_v(0, 0, 0), 1, 2, 0, GREY);
+    rb_view view = ray_view(1, rb_v(0.2, 0.1, 0), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    static const double doubles[] = {1e-300, 1e-150, 1e-20, 1, 1e20, 1e150, 1e300};
+    static const double floats[] = {1e-30, 1e-15, 1e-5, 1, 1e5, 1e15, 1e30};
+    const double *magnitudes = is_double(precision) ? doubles : floats;
+    rb_rng rng = {8};
+    for (int i = 0; i < 2000; i++) {
+        rt_vec3 origin = random_in_ball(&rng, 0.5), d = random_unit(&rng);
+        rb_hit first;
+        int found = rb_engine_hit(e, (rt_ray){origin, d}, &first);
+        for (int k = 0; k < 7; k++) {
+            rb_hit h;
+            r->total++;
+            if (!found || !rb_engine_hit(e, (rt_ray){origin, rb_scale(d, magnitudes[k])}, &h)) {
+                r->failures++;
+                continue;
+            }
+            if (hit_is_nan(&h))
+                r->nans++;
+            else if (h.facet != first.facet ||
+                     !(fabs(h.t * magnitudes[k] - first.t) <= 1e-5 * first.t))
+                r->failures++;
+        }
+        /* Not rays: a NaN or infinite origin or direction, a zero
+         * direction: no hit, and a finite colour. */
+        rt_ray bad[5] = {{rb_v(NAN, 0, 0), d}, {origin, rb_v(0, NAN, 0)},
+                         {origin, rb_v(0, 0, INFINITY)}, {origin, rb_v(0, 0, 0)},
+                         {rb_v(INFINITY, 0, 0), d}};
+        for (int k = 0; k < 5; k++) {
+            rb_hit h;
+            r->total++;
+            if (rb_engine_hit(e, bad[k], &h))
+                r->failures++;
+            r->nans += rb_color_has_nan(rb_engine_trace(e, bad[k], 3));
+        }
+    }
+    if (!is_double(precision))
+        snprintf(r->note, sizeof r->note, "magnitudes 1e-30 to 1e30");
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* The light far away (1e200: beyond float's range): the same image as with
+ * the light at 1e30 in the same direction, and no NaN. */
+static void case_v3(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_view view;
+    invariance_scene(&m, &view);
+    rt_vec3 dir = rb_v(0.4, 0.3, 0.866);
+    long nans[2];
+    rt_image images[2];
+    for (int k = 0; k < 2; k++) {
+        view.light = rb_scale(dir, k ? 1e200 : 1e30);
+        images[k] = render_view(&m, &view, 1, rb_v(0, 0, 0), method, precision, &nans[k]);
+    }
+    r->total = 64 * 64;
+    r->nans = nans[0] + nans[1];
+    r->failures = count_differing(&images[0], &images[1]);
+    rt_image_destroy(&images[0]);
+    rt_image_destroy(&images[1]);
+    rb_mesh_free(&m);
+}
+
+/* Facets a few units wide near 1e8, where float's step is 8: in float they
+ * collapse to lines and points.  Defined result: no NaN, every reported hit
+ * finite; double renders them. */
+static void case_v4(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_rng rng = {404};
+    rt_vec3 base = rb_v(1e8, -1e8, 3e7);
+    for (int i = 0; i < 200; i++) {
+        rt_vec3 a = rb_add(base, random_in_ball(&rng, 40));
+        rb_mesh_triangle(&m, a, rb_add(a, random_in_ball(&rng, 3)),
+                         rb_add(a, random_in_ball(&rng, 3)), i % 3 ? 0 : 0.5,
+                         i % 2 ? RED : GREEN);
+    }
+    rb_view view = {rb_add(base, rb_v(0, -120, 30)), rb_add(base, rb_v(0, -119, 29.75)),
+                    rb_add(base, rb_v(0.6, -119, 29.75)), 64, 64,
+                    rb_add(base, rb_v(20, -60, 90)), WHITE, SKY};
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    for (int i = 0; i < 30000; i++) {
+        const rt_facet_desc *f = &m.facets[i % m.facet_count];
+        rt_vec3 target = rb_lerp(m.vertices[f->vertex[0]],
+                                 rb_lerp(m.vertices[f->vertex[1]],
+                                         m.vertices[f->vertex[2]], rb_uniform(&rng)),
+                                 rb_uniform(&rng));
+        rt_vec3 origin = rb_add(target, random_in_ball(&rng, 60));
+        rt_ray ray = {origin, rb_sub(target, origin)};
+        rb_hit h;
+        r->total++;
+        if (rb_engine_hit(e, ray, &h) && (hit_is_nan(&h) || !isfinite(h.t)))
+            r->nans++;
+        r->nans += rb_color_has_nan(rb_engine_trace(e, ray, 3));
+    }
+    rt_image image;
+    rt_image_create(&image, 64, 64);
+    r->nans += rb_engine_render(e, 5, 2, &image);
+    rt_image_destroy(&image);
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+/* The whole scene at subnormal coordinates (scale 1e-310): refused as a
+ * degenerate camera, or rendered without NaN - never NaN. */
+static void case_v5(rb_method method, rt_precision precision, rb_result *r)
+{
+    rb_mesh m = {0};
+    rb_view view;
+    invariance_scene(&m, &view);
+    long nans;
+    double scale = is_double(precision) ? 1e-310 : 1e-40;
+    rt_image image = render_view(&m, &view, scale, rb_v(0, 0, 0), method,
+                                 precision, &nans);
+    r->total = 64 * 64;
+    if (image.pixels == NULL) {
+        snprintf(r->note, sizeof r->note, "refused by rt_scene_create");
+    } else {
+        r->nans = nans;
+        long background = 0;
+        for (int j = 0; j < 64; j++)
+            for (int i = 0; i < 64; i++)
+                background += rt_image_pixel(&image, i, j)[2] == SKY.b &&
+                              rt_image_pixel(&image, i, j)[0] == SKY.r;
+        snprintf(r->note, sizeof r->note, "scale %g: rendered, %ld background pixels",
+                 scale, background);
+    }
+    rt_image_destroy(&image);
+    rb_mesh_free(&m);
+}
+
+/* ================================================================== */
+/* Coincident facets                                                   */
+
+/* A floor whose every facet is listed twice (red, then blue), the second
+ * copy's vertices `rotation` places on (or reversed with -1): the first
+ * record wins every hit. */
+static void duplicates(rb_method method, rt_precision precision, rb_result *r,
+                       int rotation)
+{
+    rb_mesh m = {0};
+    rb_mesh_grid(&m, rb_v(-1, -1, 0), rb_v(0.25, 0, 0), rb_v(0, 0.25, 0), 8, 1,
+                 0, RED);
+    int n = m.facet_count;
+    for (int i = 0; i < n; i++) {
+        const int *v = m.facets[i].vertex;
+        if (rotation < 0)
+            rb_mesh_facet(&m, v[2], v[1], v[0], 0, BLUE);
+        else
+            rb_mesh_facet(&m, v[rotation % 3], v[(rotation + 1) % 3],
+                          v[(rotation + 2) % 3], 0, BLUE);
+    }
+    /* Tilted: a plane no axis is aligned with. */
+    for (int i = 0; i < m.vertex_count; i++)
+        m.vertices[i] = rb_rotate(m.vertices[i]);
+    rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_engine *e = rb_engine_create(scene, method, precision);
+    rb_rng rng = {66};
+    for (int i = 0; i < 50000; i++) {
+        rt_vec3 target = rb_v(rb_range(&rng, -0.98, 0.98), rb_range(&rng, -0.98, 0.98), 0);
+        rt_vec3 origin = rb_add(target, rb_add(random_in_ball(&rng, 0.8), rb_v(0, 0, 1)));
+        target = rb_rotate(target), origin = rb_rotate(origin);
+        rb_hit h;
+        r->total++;
+        if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
+            r->failures++;
+        else if (hit_is_nan(&h))
+            r->nans++;
+        else if (h.facet >= n)
+            r->failures++;
+    }
+    rb_engine_free(e);
+    rt_scene_free(scene);
+    rb_mesh_free(&m);
+}
+
+static void case_q1(rb_method m, rt_precision p, rb_result *r) { duplicates(m, p, r, 0); }
+static void case_q2(rb_method m, rt_precision p, rb_result *r)
+{
+    rb_result parts[3];
+    static const int rotations[3] = {1, 2, -1};
+    for (int k = 0; k < 3; k++) {
+        memset(&parts[k], 0, sizeof parts[k]);
+        duplicates(m, p, &parts[k], rotations[k]);
+        r->total += parts[k].total;
+        r->failures += parts[k].failures;
+        r->nans += parts[k].nans;
+    }
+    snprintf(r->note, sizeof r->note, "rotated once %ld, twice %ld, reversed %ld",
+             parts[0].failures, parts[1].failures, parts[2].failures);
+}
+
+/* ================================================================== */
+/* Determinism                                                         */
+
+static rt_scene *determinism_scene(int which)
+{
+    rb_mesh m = {0};
+    rb_view view;
+    invariance_scene(&m, &view);
+    double scales[3] = {1, 1e-6, 1};
+    rt_vec3 shifts[3] = {rb_v(0, 0, 0), rb_v(0, 0, 0), rb_v(1e6, 1e6, -1e6)};
+    rb_mesh_transform(&m, scales[which], shifts[which]);
+    rb_view_transform(&view, scales[which], shifts[which]);
+    rt_scene *scene = rb_scene(&m, &view);
+    rb_mesh_free(&m);
+    return scene;
+}
+
+static void render_with(const rt_scene *scene, rt_precision precision,
+                        int threads, rt_kernel_choice kernel, rt_image *image)
+{
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.precision = precision;
+    options.threads = threads;
+    options.kernel = kernel;
+    rt_render(scene, &options, image);
+}
+
+/* Thread counts 1, 2, 3 and 8, and the scalar and AVX2 loops, give the
+ * same image bit for bit. */
+static void determinism(rb_method method, rt_precision precision, rb_result *r,
+                        int vary_kernel)
+{
+    if (method != RB_OURS) {
+        not_applicable(r, "a single-threaded scalar loop");
+        return;
+    }
+    for (int which = 0; which < 3; which++) {
+        rt_scene *scene = determinism_scene(which);
+        rt_image reference, other;
+        rt_image_create(&reference, 64, 64);
+        rt_image_create(&other, 64, 64);
+        render_with(scene, precision, 1, RT_KERNEL_SCALAR, &reference);
+        static const int threads[4] = {1, 2, 3, 8};
+        for (int k = 0; k < 4; k++) {
+            memset(other.pixels, 0x55, 64 * 64 * 3);
+            render_with(scene, precision, vary_kernel ? 2 : threads[k],
+                        vary_kernel && k % 2 ? RT_KERNEL_SCALAR : RT_KERNEL_AUTO,
+                        &other);
+            r->total += 64 * 64;
+            r->failures += count_differing(&reference, &other);
+        }
+        rt_image_destroy(&reference);
+        rt_image_destroy(&other);
+        rt_scene_free(scene);
+    }
+}
+
+static void case_x1(rb_method m, rt_precision p, rb_result *r) { determinism(m, p, r, 0); }
+static void case_x2(rb_method m, rt_precision p, rb_result *r) { determinism(m, p, r, 1); }
+
+/* ================================================================== */
+/* The table                                                           */
+
+const rb_case rb_cases[] = {
+    {"W1", "watertightness", "Closed icosphere (320 facets), radius 1e-3; 100,000 rays from inside aimed at shared edges (70%) and vertices (30%)", "a ray that hits nothing", case_w1},
+    {"W2", "watertightness", "The same sphere at radius 1", "a ray that hits nothing", case_w2},
+    {"W3", "watertightness", "The same sphere at radius 1e3", "a ray that hits nothing", case_w3},
+    {"W4", "watertightness", "Cone of 64 thin facets around one apex; 50,000 rays from all around aimed at the apex and along the spokes", "a ray that hits nothing", case_w4},
+    {"W5", "watertightness", "Tilted 16x16 grid near (1e6, 1e6, 5e5), integer vertices, windings alternating; 100,000 rays from above aimed at shared edges and vertices", "a ray that hits nothing", case_w5},
+    {"D1", "degenerate facets", "Seven zero-area facets (repeated and exactly collinear vertices, at 1e-9 to 1e15); 70,000 rays aimed at their segments", "any hit (zero-area facets are never hit); ours also: live count 0 and one warning each", case_d1},
+    {"D2", "degenerate facets", "16 randomly oriented cap slivers (apex 1e-8 from the long edge: aspect 1e8); 64,000 rays aimed at interior points", "a miss, a hit on another facet, or a hit point farther than 1e-9 (float 1e-3) times (1 + the distance of p from the origin) from the aim", case_d2},
+    {"D3", "degenerate facets", "The same with aspect 1e12", "as D2 (float: misses allowed, documented refusal)", case_d3},
+    {"D4", "degenerate facets", "16 needles (one edge 1e-12 long, aspect 1e12); 64,000 rays at interior points", "as D2", case_d4},
+    {"D5", "degenerate facets", "Normals of 2,000 caps and needles of aspect 1e2 to 1e12, random orientation", "normal farther than 1e-9 from the exact normal of the binary vertices", case_d5},
+    {"T1", "invariance", "Floor, slab lifted 1e-3 of the size, sphere, mirrors (64x64, depth 5) translated by (1e6, -1e6, 1e6), against the original", "more than 0.1% of pixels differ, or a differing pixel not on a crease, silhouette or shadow edge", case_t1},
+    {"T2", "invariance", "The same scene scaled by 1e-6", "as T1", case_t2},
+    {"T3", "invariance", "The same scene scaled by 1e6", "as T1", case_t3},
+    {"T4", "invariance", "The same scene scaled by 1e-150 (float: 1e-15)", "as T1", case_t4},
+    {"T5", "invariance", "The same scene scaled by 1e150 (float: 1e15)", "as T1", case_t5},
+    {"S1", "self-intersection", "Tessellated floor, slab box lifted 2e-3 over it (1e-3 of the size), light above; all scaled by 1e-6; 50,000 rays from the gap to the floor under the slab, 50,000 from above to the open floor", "under the slab: any light (a leak); open floor: N.S off by more than 1e-3 (acne)", case_s1},
+    {"S2", "self-intersection", "The same at scale 1e-3", "as S1", case_s2},
+    {"S3", "self-intersection", "The same at scale 1", "as S1", case_s3},
+    {"S4", "self-intersection", "The same at scale 1e3", "as S1", case_s4},
+    {"S5", "self-intersection", "The same at scale 1e6", "as S1", case_s5},
+    {"S6", "self-intersection", "The same at scale 1, translated to (1e12, -1e12, 1e12)", "as S1", case_s6},
+    {"L1", "lights", "Light in the plane of a floor (z = 0, 128 facets); 50,000 rays from above", "any light on the floor (the real colour must be exactly 0)", case_l1},
+    {"L2", "lights", "The same, floor and light rotated (the light is in the plane up to rounding)", "a colour above 1e-6 (float: 1e-2; both invisible, continuity with L1)", case_l2},
+    {"L3", "lights", "Light exactly at the apex vertex of a cone of 16 facets above a floor; 50,000 rays to the floor", "a floor point not lit with the exact N.S (1e-9; float 1e-4)", case_l3},
+    {"L4", "lights", "Light on a wall (inside one of its facets), floor on both sides; 50,000 rays to the floor", "as L3 (a facet through the light does not shadow)", case_l4},
+    {"L5", "lights", "Tilted 16x16 floor, light 1e-6 rad above its plane; 50,000 rays from above", "N.S off by more than 1% (float 50%): acne", case_l5},
+    {"L6", "lights", "The same at 1e-12 rad", "as L5", case_l6},
+    {"C1", "camera", "Observer on the floor (on a shared vertex, then inside a facet) looking along it; 64x64 camera rays and 20,000 random rays, twice", "a camera ray that hits a floor facet (only possible at t = 0)", case_c1},
+    {"C2", "camera", "100,000 rays lying in the floor's plane, through it", "any hit; any NaN colour", case_c2},
+    {"C3", "camera", "Rays grazing a tilted 16x16 floor at 1e-12 rad (float: 1e-4), aimed at shared edges and vertices; 100,000", "a ray that hits nothing", case_c3},
+    {"R1", "recursion", "Two facing mirrors (k = 1), 4x4 image, depth 100,000 (and 10,000)", "a pixel not black, reflection count not exactly 16 x depth, a crash", case_r1},
+    {"R2", "recursion", "Closed box of mirrors (k = 1, white background); 3,000 rays from inside at its edges and corners, 1000 bounces", "a ray that escapes (any colour)", case_r2},
+    {"V1", "special values", "Scene files with nan, inf, -INF, infinity, 1e400, -1e309 in vertices, camera, light, k; rt_scene_create with NaN and infinities", "an input accepted", case_v1},
+    {"V2", "special values", "Rays at a sphere with directions scaled by 1e-300 to 1e300 (float 1e-30 to 1e30); NaN, infinite and zero rays", "a different facet, or t times the direction's length off by 1e-5; a hit or NaN colour for a non-ray", case_v2},
+    {"V3", "special values", "The T1 scene with the light at 1e200 along a direction (beyond float's range), against the light at 1e30", "a pixel that differs", case_v3},
+    {"V4", "special values", "200 facets 3 units wide near 1e8 (float's step there is 8: they collapse in float); 30,000 rays, a 64x64 render", "a NaN (hit, colour or pixel)", case_v4},
+    {"V5", "special values", "The T1 scene at subnormal scale 1e-310 (float: 1e-40)", "a NaN pixel (refusal is allowed)", case_v5},
+    {"Q1", "coincident facets", "Tilted floor whose 128 facets are each listed twice, same vertex order, red then blue; 50,000 rays", "a hit on the second copy", case_q1},
+    {"Q2", "coincident facets", "The same with the second copy's vertices rotated once, twice, reversed", "a hit on the second copy", case_q2},
+    {"X1", "determinism", "Three stiff scenes (unit, 1e-6, translated 1e6) rendered with 1, 2, 3, 8 threads", "a pixel that differs from the 1-thread scalar image", case_x1},
+    {"X2", "determinism", "The same rendered with the AVX2 and scalar loops", "a pixel that differs", case_x2},
+};
+
+const int rb_case_count = (int)(sizeof rb_cases / sizeof rb_cases[0]);
+
+const rb_case *rb_case_find(const char *id)
+{
+    for (int i = 0; i < rb_case_count; i++)
+        if (strcmp(rb_cases[i].id, id) == 0)
+            return &rb_cases[i];
+    return NULL;
+}
+
+void rb_case_run(const rb_case *c, rb_method method, rt_precision precision,
+                 rb_result *result)
+{
+    memset(result, 0, sizeof *result);
+    result->applicable = 1;
+    c->run(method, precision, result);
+}
