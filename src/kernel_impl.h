@@ -149,11 +149,37 @@ static REAL edge(REAL x, REAL w, REAL y, REAL z)
 
 typedef struct hit {
     REAL t;
+    REAL t_error;           /* bound on the rounding error of t */
+    REAL point_error;       /* estimate of the error of the point the
+                               barycentric weights give, along the facet */
     REAL b0, b1, b2;        /* barycentric weights of a, b, c */
     int index;              /* into the kernel's tris */
 } hit;
 
-/* The watertight test: non-zero when the ray meets *f at t in (0, t_max). */
+/* Higham's gamma(n) = n u / (1 - n u), u the unit roundoff. */
+static REAL gamma_bound(int n)
+{
+    REAL u = REAL_EPS / 2;
+    return n * u / (1 - n * u);
+}
+
+static REAL max3(REAL a, REAL b, REAL c)
+{
+    return fmax(fabs(a), fmax(fabs(b), fabs(c)));
+}
+
+/*
+ * The watertight test: non-zero when the ray meets *f at a t that is
+ * provably in (0, t_max): t must exceed its own rounding-error bound, and
+ * t plus that bound must stay below t_max.  So a ray never meets a facet
+ * through its own origin (a camera lying on a facet does not see it), and a
+ * shadow ray is not stopped by a facet through the light.  The bound is
+ * pbrt-v4's (Pharr, Jakob, Humphreys, section 6.8.4), with the products
+ * regrouped so that none grows like the cube of the coordinates: t is
+ * computed from the barycentric weights, and the bound from ratios to the
+ * determinant, so coordinates from 1e-150 to 1e150 neither overflow nor
+ * underflow.
+ */
 static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
 {
     vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
@@ -168,19 +194,43 @@ static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
     if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
         return 0;
     REAL det = u + v + w;
-    if (det == 0)
+    if (det == 0 || !isfinite(det))
         return 0;
-    REAL t = (u * (az * r->sz) + v * (bz * r->sz) + w * (cz * r->sz)) / det;
-    if (!(t > 0 && t < t_max))
+    REAL b0 = u / det, b1 = v / det, b2 = w / det;
+    /* The shear's error comes with the unscaled z; t's with the scaled z
+     * (pbrt-v4 does not tell them apart, as its directions are near unit
+     * length; ours may be of any length). */
+    REAL shear_z = max3(az, bz, cz);
+    az *= r->sz;
+    bz *= r->sz;
+    cz *= r->sz;
+    REAL t = b0 * az + b1 * bz + b2 * cz;
+
+    REAL abs_det = fabs(det);
+    REAL max_x = max3(ax, bx, cx), max_y = max3(ay, by, cy);
+    REAL max_z = max3(az, bz, cz);
+    REAL dx = gamma_bound(5) * (max_x + shear_z);
+    REAL dy = gamma_bound(5) * (max_y + shear_z);
+    REAL dz = gamma_bound(3) * max_z;
+    REAL edge_error = 2 * (gamma_bound(2) * max_x * (max_y / abs_det) +
+                           dy * (max_x / abs_det) + dx * (max_y / abs_det));
+    REAL edge_ratio = max3(u, v, w) / abs_det;  /* <= 1: all of one sign */
+    REAL t_error = 4 * (gamma_bound(3) * edge_ratio * max_z +
+                        edge_error * max_z + dz * edge_ratio);
+    if (!(t > t_error && t + t_error < t_max))
         return 0;
     h->t = t;
-    h->b0 = u / det;
-    h->b1 = v / det;
-    h->b2 = w / det;
+    h->t_error = t_error;
+    h->point_error = edge_error * (max_x + max_y);
+    h->b0 = b0;
+    h->b1 = b1;
+    h->b2 = b2;
     return 1;
 }
 
-/* Nearest hit, all facets but `skip`; equal t keeps the lower index. */
+/* Nearest hit, all facets but `skip`.  A facet replaces the nearest so far
+ * only when it is closer beyond both their error bounds: hits that cannot
+ * be told apart (coincident facets) go to the facet first in the file. */
 static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
                           int skip, hit *h, uint64_t *tests)
 {
@@ -190,7 +240,7 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
         if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
             candidate.index = i;
             *h = candidate;
-            t_max = candidate.t;
+            t_max = candidate.t - candidate.t_error;
             found = 1;
         }
     }
@@ -249,21 +299,40 @@ static int any_hit(const KERNEL_T *k, int simd, const ray *r, REAL t_max,
     return any_hit_scalar(k, r, t_max, skip, tests, saved);
 }
 
-/* Higham's gamma(n) = n u / (1 - n u), u the unit roundoff. */
-static REAL gamma_bound(int n)
-{
-    REAL u = REAL_EPS / 2;
-    return n * u / (1 - n * u);
-}
 
-/* The hit point from barycentric weights, and its error bound. */
-static vec hit_point(const tri *f, const hit *h, vec *error_bound)
+/*
+ * The hit point and its rounding-error bound per component.  Normally the
+ * point is the barycentric combination of the vertices (pbrt-v4's choice:
+ * whatever the weights' errors, it lies on the facet's plane to within the
+ * bound).  On a sliver the weights themselves are inaccurate - the point
+ * may slide along the facet by a large fraction of it - so when that error
+ * exceeds the error of intersecting the ray with the facet's plane (whose
+ * normal is accurate for any shape, see scene.c), the plane's point is
+ * used instead.  `direction` is the ray's, in the units of t.
+ */
+static vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
+                     vec *error_bound)
 {
     vec pa = scale(f->a, h->b0), pb = scale(f->b, h->b1),
         pc = scale(f->c, h->b2);
     *error_bound = scale(add(vabs(pa), add(vabs(pb), vabs(pc))),
                          gamma_bound(7));
-    return add(pa, add(pb, pc));
+    vec point = add(pa, add(pb, pc));
+    if (!(h->point_error > 0))
+        return point;
+    vec to_facet = sub(f->a, origin);
+    REAL along = dot(f->normal, to_facet), across = dot(f->normal, direction);
+    REAL t = along / across;
+    REAL condition = dot(vabs(f->normal), vabs(to_facet)) / fabs(along) +
+                     dot(vabs(f->normal), vabs(direction)) / fabs(across);
+    REAL t_error = fabs(t) * gamma_bound(8) * condition;
+    REAL length = max3(direction.x, direction.y, direction.z);
+    if (!(t > 0 && isfinite(t_error) && t_error * length < h->point_error))
+        return point;
+    vec step = scale(direction, t);
+    *error_bound = add(scale(add(vabs(origin), vabs(step)), gamma_bound(2)),
+                       scale(vabs(direction), t_error));
+    return add(origin, step);
 }
 
 static REAL step_away(REAL x, REAL direction)
@@ -338,7 +407,7 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
         }
         const tri *f = &k->tris[h.index];
         vec error_bound;
-        vec point = hit_point(f, &h, &error_bound);
+        vec point = hit_point(f, &h, origin, incoming, &error_bound);
         vec normal = dot(f->normal, incoming) > 0 ? neg(f->normal) : f->normal;
         add_direct_light(k, f, h.index, point, error_bound, normal, weight,
                          fast, simd, color, counters);
@@ -446,8 +515,8 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
                         rt_kernel_hit *out)
 {
     vec direction = from_rt(query.direction);
-    if (!isfinite(dot(direction, direction)) ||
-        fmax(fabs(direction.x), fmax(fabs(direction.y), fabs(direction.z))) == 0)
+    REAL length = max3(direction.x, direction.y, direction.z);
+    if (!isfinite(length) || length == 0)
         return 0;
     ray r = prepare(from_rt(query.origin), direction);
     hit h;
@@ -458,7 +527,7 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
     vec error_bound;
     out->t = h.t;
     out->facet = f->facet;
-    out->point = to_rt(hit_point(f, &h, &error_bound));
+    out->point = to_rt(hit_point(f, &h, r.origin, direction, &error_bound));
     out->normal = to_rt(dot(f->normal, direction) > 0 ? neg(f->normal)
                                                       : f->normal);
     return 1;
@@ -469,7 +538,8 @@ int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
 {
     vec o = from_rt(from);
     vec d = sub(from_rt(to), o);
-    if (!isfinite(dot(d, d)) || fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))) == 0)
+    REAL length = max3(d.x, d.y, d.z);
+    if (!isfinite(length) || length == 0 || !isfinite(max3(o.x, o.y, o.z)))
         return 0;
     int skip = -1;
     for (int i = 0; skip_facet >= 0 && i < k->count; i++)

@@ -173,7 +173,7 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
             if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
                 candidate.index = i;
                 *h = candidate;
-                t_max = candidate.t;
+                t_max = candidate.t - candidate.t_error;
                 found = 1;
             }
         }

@@ -188,9 +188,19 @@ static void skip_blank(reader *r)
     }
 }
 
-/* Reads a decimal integer in [0, max] into *value; `what` names it. */
-static rt_status read_uint(reader *r, long max, const char *what, long *value,
-                           rt_error *error)
+/* A byte for a message: itself when printable, else "\xNN". */
+static const char *show_byte(unsigned char c, char buffer[8])
+{
+    if (c >= 0x20 && c < 0x7f)
+        snprintf(buffer, 8, "%c", c);
+    else
+        snprintf(buffer, 8, "\\x%02X", c);
+    return buffer;
+}
+
+/* Reads a decimal integer in [min, max] into *value; `what` names it. */
+static rt_status read_uint(reader *r, long min, long max, const char *what,
+                           long *value, rt_error *error)
 {
     skip_blank(r);
     int line = r->line, column = r->column;
@@ -205,14 +215,16 @@ static rt_status read_uint(reader *r, long max, const char *what, long *value,
         digits++;
         advance(r);
     }
-    if (digits == 0 || (r->at < r->end && !is_space(*r->at) && *r->at != '#'))
-        return rt__error_set(error, RT_ERR_SYNTAX, r->name, line, column,
-                             "expected %s, found `%c`", what,
-                             digits ? *r->at : *r->at);
-    if (v > max)
+    if (digits == 0 || (r->at < r->end && !is_space(*r->at) && *r->at != '#')) {
+        char shown[8];
+        return rt__error_set(error, RT_ERR_SYNTAX, r->name, r->line,
+                             r->column, "expected %s, found `%s`", what,
+                             show_byte(*r->at, shown));
+    }
+    if (v < min || v > max)
         return rt__error_set(error, RT_ERR_RANGE, r->name, line, column,
-                             "expected %s in 0..%ld, found a larger number",
-                             what, max);
+                             "expected %s in %ld..%ld, found %s", what, min,
+                             max, v > max ? "a larger number" : "0");
     *value = v;
     return RT_OK;
 }
@@ -231,16 +243,13 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
     advance(&r);
     long width, height, maxval;
     rt_status status;
-    if ((status = read_uint(&r, RT_MAX_IMAGE_SIDE, "the width", &width,
+    if ((status = read_uint(&r, 1, RT_MAX_IMAGE_SIDE, "the width", &width,
                             error)) != RT_OK ||
-        (status = read_uint(&r, RT_MAX_IMAGE_SIDE, "the height", &height,
+        (status = read_uint(&r, 1, RT_MAX_IMAGE_SIDE, "the height", &height,
                             error)) != RT_OK ||
-        (status = read_uint(&r, 65535, "the maximum value", &maxval,
+        (status = read_uint(&r, 1, 65535, "the maximum value", &maxval,
                             error)) != RT_OK)
         return status;
-    if (width < 1 || height < 1)
-        return rt__error_set(error, RT_ERR_RANGE, r.name, r.line, r.column,
-                             "expected a width and height of at least 1");
     if (maxval != 255)
         return rt__error_set(error, RT_ERR_FORMAT, r.name, r.line, r.column,
                              "expected a maximum value of 255, found %ld",
@@ -275,7 +284,7 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
     }
     for (size_t i = 0; i < bytes; i++) {
         long v;
-        if ((status = read_uint(&r, 255, "a pixel value", &v, error)) !=
+        if ((status = read_uint(&r, 0, 255, "a pixel value", &v, error)) !=
             RT_OK) {
             rt_image_destroy(image);
             return status;

@@ -8,6 +8,7 @@
  * row callback is serialised by a mutex; cancellation is a flag every thread
  * reads before each pixel.
  */
+#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -236,6 +237,22 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
         skipped_rays * (live + dead) + cast * dead + j->totals.early_exit_saved;
 }
 
+/* Non-zero when every coordinate of the scene is within float's range (a
+ * float render of a scene beyond it is refused rather than producing
+ * infinities). */
+static int fits_float(const rt_scene *scene)
+{
+    const rt_camera *c = &scene->camera;
+    double largest = fmax(v3_max_abs(c->observer),
+                          v3_max_abs(v3_add(c->screen_center,
+                                            v3_add(v3_abs(c->right),
+                                                   v3_abs(c->up)))));
+    largest = fmax(largest, v3_max_abs(scene->light));
+    for (int i = 0; i < scene->vertex_count; i++)
+        largest = fmax(largest, v3_max_abs(scene->vertices[i]));
+    return largest < FLT_MAX;
+}
+
 rt_status rt_render_rows(const rt_scene *scene,
                          const rt_render_options *options, int row_begin,
                          int row_end, rt_image *image)
@@ -270,6 +287,8 @@ rt_status rt_render_rows(const rt_scene *scene,
      * for float data, and the scene stays immutable. */
     rt_kernel_f *float_kernel = NULL;
     if (options->precision == RT_PRECISION_FLOAT) {
+        if (!fits_float(scene))
+            return RT_ERR_RANGE;
         rt_kernel_source source;
         rt__scene_kernel_source(scene, &source);
         float_kernel = rt__kernel_f_create(&source);

@@ -30,10 +30,11 @@ static void two_sum(double a, double b, double *s, double *e)
     *e = (a - (*s - bb)) + (b - bb);
 }
 
-/* Sign of the exact sum of n doubles: accumulate them into a nonoverlapping
- * expansion (Shewchuk's grow-expansion); its largest component has the sign
- * of the sum. */
-static int exact_sum_sign(const double *terms, int n)
+/* The sum of n doubles, rounded once (to within an ulp): the terms are
+ * accumulated into a nonoverlapping expansion (Shewchuk's grow-expansion),
+ * whose components are then added from the smallest up.  Its sign is
+ * exact, and it is zero only when the exact sum is. */
+static double expansion_sum(const double *terms, int n)
 {
     double expansion[16];
     int length = 0;
@@ -51,16 +52,18 @@ static int exact_sum_sign(const double *terms, int n)
             expansion[kept++] = q;
         length = kept;
     }
-    if (length == 0)
-        return 0;
-    return expansion[length - 1] > 0.0 ? 1 : -1;
+    double sum = 0.0;
+    for (int j = 0; j < length; j++)
+        sum += expansion[j];
+    return sum;
 }
 
-/* Exact sign of the 2D orientation of (a, b, c) in coordinates (x, y). */
-static int orient2d_sign(double ax, double ay, double bx, double by,
-                         double cx, double cy)
+/* The 2D orientation ax by - ay bx + bx cy - by cx + cx ay - cy ax of
+ * (a, b, c), from exact products: the value to within an ulp, the sign
+ * exactly. */
+static double orient2d(double ax, double ay, double bx, double by, double cx,
+                       double cy)
 {
-    /* ax by - ay bx + bx cy - by cx + cx ay - cy ax */
     double t[12];
     two_product(ax, by, &t[0], &t[1]);
     two_product(-ay, bx, &t[2], &t[3]);
@@ -68,39 +71,41 @@ static int orient2d_sign(double ax, double ay, double bx, double by,
     two_product(-by, cx, &t[6], &t[7]);
     two_product(cx, ay, &t[8], &t[9]);
     two_product(-cy, ax, &t[10], &t[11]);
-    return exact_sum_sign(t, 12);
+    return expansion_sum(t, 12);
+}
+
+/*
+ * (b - a) x (c - a) evaluated from the vertices without rounding the edges:
+ * each component is the orientation of the triangle projected on a
+ * coordinate plane.  The vertices are first scaled by a power of two (an
+ * exact operation) so that the products neither overflow nor underflow.
+ * Accurate to an ulp per component whatever the facet's shape, zero exactly
+ * when the vertices are collinear.
+ */
+static rt_vec3 exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    double largest = fmax(v3_max_abs(a), fmax(v3_max_abs(b), v3_max_abs(c)));
+    int exponent = 0;
+    if (largest > 0.0)
+        frexp(largest, &exponent);
+    a = v3(ldexp(a.x, -exponent), ldexp(a.y, -exponent), ldexp(a.z, -exponent));
+    b = v3(ldexp(b.x, -exponent), ldexp(b.y, -exponent), ldexp(b.z, -exponent));
+    c = v3(ldexp(c.x, -exponent), ldexp(c.y, -exponent), ldexp(c.z, -exponent));
+    return v3(orient2d(a.y, a.z, b.y, b.z, c.y, c.z),
+              orient2d(a.z, a.x, b.z, b.x, c.z, c.x),
+              orient2d(a.x, a.y, b.x, b.y, c.x, c.y));
 }
 
 int rt__points_collinear(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
-    return orient2d_sign(a.x, a.y, b.x, b.y, c.x, c.y) == 0 &&
-           orient2d_sign(a.y, a.z, b.y, b.z, c.y, c.z) == 0 &&
-           orient2d_sign(a.z, a.x, b.z, b.x, c.z, c.x) == 0;
+    return v3_max_abs(exact_cross(a, b, c)) == 0.0;
 }
 
-/* Unit normal in the direction of (b - a) x (c - a), computed from the two
- * shortest edges (a cyclic relabelling keeps the direction), which is the
- * accurate choice for slivers. */
+/* Unit normal in the direction of (b - a) x (c - a), accurate for any
+ * shape (slivers and needles included); zero for a zero-area facet. */
 static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
-    rt_vec3 p[3] = {a, b, c};
-    double longest = -1.0;
-    int opposite = 0;       /* the vertex facing the longest edge */
-    for (int i = 0; i < 3; i++) {
-        double l = v3_length(v3_sub(p[(i + 2) % 3], p[(i + 1) % 3]));
-        if (l > longest)
-            longest = l, opposite = i;
-    }
-    rt_vec3 o = p[opposite];
-    rt_vec3 e1 = v3_sub(p[(opposite + 1) % 3], o);
-    rt_vec3 e2 = v3_sub(p[(opposite + 2) % 3], o);
-    /* Scale before the cross product so it can neither overflow nor
-     * underflow. */
-    double s1 = v3_max_abs(e1), s2 = v3_max_abs(e2);
-    if (s1 == 0.0 || s2 == 0.0)
-        return v3(0, 0, 0);
-    return v3_normalize(v3_cross(v3_scale(e1, 1.0 / s1),
-                                 v3_scale(e2, 1.0 / s2)));
+    return v3_normalize(exact_cross(a, b, c));
 }
 
 static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
@@ -205,8 +210,8 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
         info->k = f->k;
         info->color = f->color;
         info->line = facet_lines ? facet_lines[i] : 0;
-        info->degenerate = rt__points_collinear(a, b, c);
-        info->normal = info->degenerate ? v3(0, 0, 0) : facet_normal(a, b, c);
+        info->normal = facet_normal(a, b, c);
+        info->degenerate = v3_max_abs(info->normal) == 0.0;
         if (info->degenerate) {
             add_degenerate_warning(s, i, info->line);
             continue;

@@ -209,7 +209,8 @@ static rt_status expect_record(parser *p, const char *text, int count,
     }
     if (p->value_count > count) {
         char expected[160];
-        snprintf(expected, sizeof expected, "%d values for %s", count, what);
+        snprintf(expected, sizeof expected, "%d value%s for %s", count,
+                 count == 1 ? "" : "s", what);
         return fail_at(p, RT_ERR_SYNTAX, p->values[count].column, expected,
                        &p->values[count]);
     }
@@ -217,8 +218,9 @@ static rt_status expect_record(parser *p, const char *text, int count,
         const token *last = &p->values[p->value_count - 1];
         int column = last->column + (int)last->length;
         return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, p->record_line,
-                             column, "expected %d values for %s, found %d",
-                             count, what, p->value_count);
+                             column, "expected %d value%s for %s, found %d",
+                             count, count == 1 ? "" : "s", what,
+                             p->value_count);
     }
     return RT_OK;
 }

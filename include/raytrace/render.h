@@ -110,9 +110,10 @@ void rt_render_options_init(rt_render_options *options);
 /*
  * Renders the whole image into `image`, which must be width x height of the
  * scene (see rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image
- * size, negative depth, samples not a square in 1..1024), RT_ERR_NOMEM
- * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the others hold
- * whatever they held before).  Thread-safe as long as no two calls write the
+ * size, negative depth, samples not a square in 1..1024), RT_ERR_RANGE (a
+ * float render of a scene with coordinates beyond float's range), RT_ERR_NOMEM
+ * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the
+ * others hold whatever they held before).  Thread-safe as long as no two calls write the
  * same rows of the same image.
  */
 rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
