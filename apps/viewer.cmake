@@ -1,0 +1,79 @@
+# rt-view, the SDL2 viewer (issue 4).
+#
+# RAYTRACE_VIEWER: AUTO builds it when SDL2 is found, ON requires SDL2, OFF
+# skips it.  SDL2 comes from the system: its CMake package (Debian's
+# libsdl2-dev installs sdl2-config.cmake) or else pkg-config's sdl2.pc.
+# Only rt-view and the viewer's own code link SDL2, never libraytrace.
+#
+# The viewer's logic is a static library, raytrace_viewer, so that
+# tests/viewer.cmake can link it into test_viewer; the SDL2 target is made
+# global for the same reason (tests/ is a sibling directory).
+
+string(TOUPPER "${RAYTRACE_VIEWER}" _rt_viewer_mode)
+if(NOT _rt_viewer_mode MATCHES "^(AUTO|ON|OFF)$")
+  message(FATAL_ERROR
+    "RAYTRACE_VIEWER must be AUTO, ON or OFF, not '${RAYTRACE_VIEWER}'")
+endif()
+
+set(RAYTRACE_SDL2_TARGET "")
+if(NOT _rt_viewer_mode STREQUAL "OFF")
+  find_package(SDL2 CONFIG QUIET)
+  if(TARGET SDL2::SDL2)
+    set(RAYTRACE_SDL2_TARGET SDL2::SDL2)
+  elseif(TARGET SDL2::SDL2-static)
+    set(RAYTRACE_SDL2_TARGET SDL2::SDL2-static)
+  else()
+    find_package(PkgConfig QUIET)
+    if(PKG_CONFIG_FOUND)
+      pkg_check_modules(RAYTRACE_SDL2 QUIET IMPORTED_TARGET GLOBAL sdl2)
+      if(RAYTRACE_SDL2_FOUND)
+        set(RAYTRACE_SDL2_TARGET PkgConfig::RAYTRACE_SDL2)
+      endif()
+    endif()
+  endif()
+  if(RAYTRACE_SDL2_TARGET MATCHES "^SDL2::")
+    get_target_property(_rt_sdl2_global ${RAYTRACE_SDL2_TARGET} IMPORTED_GLOBAL)
+    if(NOT _rt_sdl2_global)
+      set_target_properties(${RAYTRACE_SDL2_TARGET} PROPERTIES
+                            IMPORTED_GLOBAL TRUE)
+    endif()
+  endif()
+endif()
+
+set(RAYTRACE_VIEWER_ENABLED OFF)
+if(RAYTRACE_SDL2_TARGET)
+  set(RAYTRACE_VIEWER_ENABLED ON)
+elseif(_rt_viewer_mode STREQUAL "ON")
+  message(FATAL_ERROR
+    "RAYTRACE_VIEWER=ON but SDL2 was not found (neither its CMake package "
+    "nor pkg-config's sdl2).  Install SDL2's development files "
+    "(Debian/Ubuntu: apt-get install libsdl2-dev), point SDL2_DIR at "
+    "sdl2-config.cmake, or configure with -DRAYTRACE_VIEWER=OFF.")
+elseif(_rt_viewer_mode STREQUAL "AUTO")
+  message(STATUS "viewer disabled: SDL2 not found")
+endif()
+add_feature_info(rt-view RAYTRACE_VIEWER_ENABLED
+  "SDL2 window showing a render as it happens (RAYTRACE_VIEWER=${_rt_viewer_mode})")
+
+if(RAYTRACE_VIEWER_ENABLED)
+  find_package(Threads REQUIRED)
+
+  add_library(raytrace_viewer STATIC
+    viewer/view_scene.c
+    viewer/view_session.c
+    viewer/view_window.c)
+  target_include_directories(raytrace_viewer PUBLIC
+    "${CMAKE_CURRENT_SOURCE_DIR}/viewer")
+  target_compile_definitions(raytrace_viewer PRIVATE _POSIX_C_SOURCE=200809L)
+  find_library(RAYTRACE_VIEWER_LIBM m)
+  target_link_libraries(raytrace_viewer PUBLIC raytrace::raytrace
+    ${RAYTRACE_SDL2_TARGET} Threads::Threads
+    $<$<BOOL:${RAYTRACE_VIEWER_LIBM}>:${RAYTRACE_VIEWER_LIBM}>)
+  raytrace_set_warnings(raytrace_viewer)
+
+  add_executable(rt-view rt-view.c)
+  target_link_libraries(rt-view PRIVATE raytrace_viewer)
+  target_compile_definitions(rt-view PRIVATE _POSIX_C_SOURCE=200809L)
+  raytrace_set_warnings(rt-view)
+  install(TARGETS rt-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()

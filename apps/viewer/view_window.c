@@ -1,0 +1,273 @@
+/*
+ * view_window.c - the SDL window, renderer and texture that show a
+ * view_session (see view_window.h).  Only finished rows are uploaded, each
+ * once; the rest of the texture holds the placeholder checker.
+ */
+#include "view_window.h"
+
+#define SDL_MAIN_HANDLED
+#include <SDL.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct view_window {
+    SDL_Window *window;
+    SDL_Renderer *renderer;
+    SDL_Texture *texture;       /* image-sized, RGB24; NULL when detached */
+    int width, height;          /* of the texture */
+    view_session *session;
+    unsigned generation;        /* of the picture in the texture */
+    int *rows;                  /* scratch for take_finished_rows */
+};
+
+/* Background around the letterboxed picture. */
+static const SDL_Color background = {18, 18, 18, 255};
+
+void view_placeholder_color(int x, int y, unsigned char rgb[3])
+{
+    int dark = ((x / VIEW_CHECKER_SIZE) + (y / VIEW_CHECKER_SIZE)) % 2;
+    unsigned char value = dark ? 40 : 56;
+    rgb[0] = rgb[1] = rgb[2] = value;
+}
+
+void view_fit_size(int width, int height, int max_width, int max_height,
+                   int *out_width, int *out_height)
+{
+    if (max_width < 1)
+        max_width = 1;
+    if (max_height < 1)
+        max_height = 1;
+    if (width <= max_width && height <= max_height) {
+        *out_width = width;
+        *out_height = height;
+        return;
+    }
+    double sx = (double)max_width / width;
+    double sy = (double)max_height / height;
+    double scale = sx < sy ? sx : sy;
+    int w = (int)(width * scale);
+    int h = (int)(height * scale);
+    *out_width = w < 1 ? 1 : w > max_width ? max_width : w;
+    *out_height = h < 1 ? 1 : h > max_height ? max_height : h;
+}
+
+view_window *view_window_create(const char *title, int width, int height,
+                                unsigned flags, char *error,
+                                size_t error_size)
+{
+    view_window *window = calloc(1, sizeof *window);
+    if (window == NULL) {
+        snprintf(error, error_size, "cannot create window: out of memory");
+        return NULL;
+    }
+    Uint32 window_flags = SDL_WINDOW_RESIZABLE |
+                          ((flags & VIEW_WINDOW_HIDDEN) ? SDL_WINDOW_HIDDEN
+                                                        : SDL_WINDOW_SHOWN);
+    window->window = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED,
+                                      SDL_WINDOWPOS_CENTERED, width, height,
+                                      window_flags);
+    if (window->window == NULL) {
+        snprintf(error, error_size, "cannot create window: %s",
+                 SDL_GetError());
+        free(window);
+        return NULL;
+    }
+    Uint32 renderer_flags = (flags & VIEW_WINDOW_SOFTWARE)
+                                ? SDL_RENDERER_SOFTWARE : 0;
+    window->renderer = SDL_CreateRenderer(window->window, -1,
+                                          renderer_flags);
+    if (window->renderer == NULL && !(flags & VIEW_WINDOW_SOFTWARE))
+        window->renderer = SDL_CreateRenderer(window->window, -1,
+                                              SDL_RENDERER_SOFTWARE);
+    if (window->renderer == NULL) {
+        snprintf(error, error_size, "cannot create renderer: %s",
+                 SDL_GetError());
+        SDL_DestroyWindow(window->window);
+        free(window);
+        return NULL;
+    }
+    return window;
+}
+
+static void detach(view_window *window)
+{
+    if (window->texture)
+        SDL_DestroyTexture(window->texture);
+    free(window->rows);
+    window->texture = NULL;
+    window->rows = NULL;
+    window->session = NULL;
+    window->width = window->height = 0;
+}
+
+void view_window_destroy(view_window *window)
+{
+    if (window == NULL)
+        return;
+    detach(window);
+    SDL_DestroyRenderer(window->renderer);
+    SDL_DestroyWindow(window->window);
+    free(window);
+}
+
+/* Fills the whole texture with the checker, a band of two squares' height
+ * at a time (the pattern repeats every band). */
+static void fill_placeholder(view_window *window)
+{
+    int band = 2 * VIEW_CHECKER_SIZE;
+    size_t pitch = (size_t)window->width * 3;
+    unsigned char *pixels = malloc(pitch * (size_t)band);
+    if (pixels == NULL)
+        return;
+    for (int y = 0; y < band; y++)
+        for (int x = 0; x < window->width; x++)
+            view_placeholder_color(x, y, pixels + (size_t)y * pitch +
+                                             (size_t)x * 3);
+    for (int y = 0; y < window->height; y += band) {
+        int rows = window->height - y < band ? window->height - y : band;
+        SDL_Rect rect = {0, y, window->width, rows};
+        SDL_UpdateTexture(window->texture, &rect, pixels, (int)pitch);
+    }
+    free(pixels);
+}
+
+int view_window_attach(view_window *window, view_session *session,
+                       char *error, size_t error_size)
+{
+    detach(window);
+    if (session == NULL)
+        return 1;
+    const rt_image *image = view_session_image(session);
+    window->rows = malloc(sizeof *window->rows * (size_t)image->height);
+    window->texture = SDL_CreateTexture(window->renderer,
+                                        SDL_PIXELFORMAT_RGB24,
+                                        SDL_TEXTUREACCESS_STATIC,
+                                        image->width, image->height);
+    if (window->rows == NULL || window->texture == NULL) {
+        snprintf(error, error_size, "cannot show a %dx%d image: %s",
+                 image->width, image->height,
+                 window->texture ? "out of memory" : SDL_GetError());
+        detach(window);
+        return 0;
+    }
+    window->session = session;
+    window->width = image->width;
+    window->height = image->height;
+    view_progress progress;
+    view_session_get_progress(session, &progress);
+    window->generation = progress.generation;
+    fill_placeholder(window);
+    return 1;
+}
+
+int view_window_sync(view_window *window)
+{
+    if (window->session == NULL)
+        return 0;
+    unsigned generation;
+    int count = view_session_take_finished_rows(
+        window->session, window->rows, window->height, &generation);
+    int changed = 0;
+    if (generation != window->generation) {
+        fill_placeholder(window);
+        window->generation = generation;
+        changed = 1;
+    }
+    const rt_image *image = view_session_image(window->session);
+    for (int i = 0; i < count;) {
+        int first = window->rows[i];
+        int run = 1;
+        while (i + run < count && window->rows[i + run] == first + run)
+            run++;
+        SDL_Rect rect = {0, first, window->width, run};
+        SDL_UpdateTexture(window->texture, &rect,
+                          rt_image_pixel(image, 0, first),
+                          (int)image->stride);
+        i += run;
+        changed = 1;
+    }
+    return changed;
+}
+
+/* Clears the window and copies the picture, scaled to fit and centred. */
+static void render(view_window *window)
+{
+    SDL_SetRenderDrawColor(window->renderer, background.r, background.g,
+                           background.b, background.a);
+    SDL_RenderClear(window->renderer);
+    if (window->texture == NULL)
+        return;
+    int out_width, out_height;
+    if (SDL_GetRendererOutputSize(window->renderer, &out_width,
+                                  &out_height) != 0)
+        return;
+    double sx = (double)out_width / window->width;
+    double sy = (double)out_height / window->height;
+    double scale = sx < sy ? sx : sy;
+    SDL_Rect target;
+    target.w = (int)(window->width * scale + 0.5);
+    target.h = (int)(window->height * scale + 0.5);
+    target.x = (out_width - target.w) / 2;
+    target.y = (out_height - target.h) / 2;
+    SDL_RenderCopy(window->renderer, window->texture, NULL, &target);
+}
+
+void view_window_draw(view_window *window)
+{
+    render(window);
+    SDL_RenderPresent(window->renderer);
+}
+
+int view_window_read(view_window *window, rt_image *out)
+{
+    memset(out, 0, sizeof *out);
+    int width, height;
+    if (SDL_GetRendererOutputSize(window->renderer, &width, &height) != 0)
+        return 0;
+    if (rt_image_create(out, width, height) != RT_OK)
+        return 0;
+    render(window);
+    int ok = SDL_RenderReadPixels(window->renderer, NULL,
+                                  SDL_PIXELFORMAT_RGB24, out->pixels,
+                                  (int)out->stride) == 0;
+    SDL_RenderPresent(window->renderer);
+    if (!ok)
+        rt_image_destroy(out);
+    return ok;
+}
+
+void view_window_set_title(view_window *window, const char *title)
+{
+    SDL_SetWindowTitle(window->window, title);
+}
+
+void view_window_place(view_window *window, int width, int height,
+                       const int bounds[4], int center)
+{
+    SDL_SetWindowSize(window->window, width, height);
+    int x, y;
+    SDL_GetWindowPosition(window->window, &x, &y);
+    if (center || x < bounds[0] || y < bounds[1] || x + width > bounds[0] + bounds[2] ||
+        y + height > bounds[1] + bounds[3])
+        SDL_SetWindowPosition(window->window,
+                              bounds[0] + (bounds[2] - width) / 2,
+                              bounds[1] + (bounds[3] - height) / 2);
+}
+
+void view_window_show(view_window *window)
+{
+    SDL_ShowWindow(window->window);
+}
+
+void view_window_hide(view_window *window)
+{
+    SDL_HideWindow(window->window);
+}
+
+int view_window_display(const view_window *window)
+{
+    int display = SDL_GetWindowDisplayIndex(window->window);
+    return display < 0 ? 0 : display;
+}

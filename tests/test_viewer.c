@@ -1,0 +1,727 @@
+/*
+ * test_viewer.c - the viewer's logic without its event loop: a view_session
+ * rendering on its own thread, shown by a view_window on SDL's dummy video
+ * driver with the software renderer (no display needed), and read back
+ * pixel by pixel.  Dummy rather than offscreen: offscreen initialises EGL,
+ * whose allocations LeakSanitizer reports as leaks.
+ *
+ * What is checked: the finished window shows exactly rt-export's image; a
+ * frame taken while rendering shows finished rows exactly and the
+ * placeholder everywhere else; cancelling stops the render well under a
+ * second and leaves no thread; restarting starts from the placeholder; and
+ * the small pure helpers (window fitting, save path, rescaling, errors).
+ */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <semaphore.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define SDL_MAIN_HANDLED
+#include <SDL.h>
+
+#include "testutil.h"
+#include "view_scene.h"
+#include "view_session.h"
+#include "view_window.h"
+
+/* Longest a test waits for a render before failing. */
+#define WAIT_SECONDS 60.0
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static void sleep_ms(int ms)
+{
+    struct timespec ts = {ms / 1000, (long)(ms % 1000) * 1000000L};
+    nanosleep(&ts, NULL);
+}
+
+/* Threads of this process, from /proc/self/task. */
+static int thread_count(void)
+{
+    DIR *dir = opendir("/proc/self/task");
+    ck_assert_msg(dir != NULL, "cannot open /proc/self/task");
+    int count = 0;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL)
+        if (entry->d_name[0] != '.')
+            count++;
+    closedir(dir);
+    return count;
+}
+
+/*
+ * Threads once those that were joined have gone: pthread_join returns when a
+ * thread has finished, and the kernel may list it for a moment longer, so
+ * this waits up to 200 ms for the count to come down to `expected`.
+ */
+static int settled_thread_count(int expected)
+{
+    double deadline = now_seconds() + 0.2;
+    int count;
+    while ((count = thread_count()) > expected && now_seconds() < deadline)
+        sleep_ms(1);
+    return count;
+}
+
+static void *do_nothing(void *argument)
+{
+    return argument;
+}
+
+/*
+ * Threads before a test starts any: after one thread has come and gone,
+ * because ThreadSanitizer starts its own helper thread at the first
+ * pthread_create, and that one stays.
+ */
+static int baseline_thread_count(void)
+{
+    pthread_t thread;
+    ck_assert_int_eq(pthread_create(&thread, NULL, do_nothing, NULL), 0);
+    ck_assert_int_eq(pthread_join(thread, NULL), 0);
+    return settled_thread_count(1);
+}
+
+static rt_scene *load_scene(const char *relative)
+{
+    rt_scene *scene = NULL;
+    rt_error error;
+    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
+                                     &error);
+    ck_assert_msg(status == RT_OK, "%s", error.message);
+    return scene;
+}
+
+/*
+ * A scene slow to render: `count` small reflective triangles scattered in
+ * front of a large floor (brute force tests every facet for every ray).
+ * Same camera as scenes/two-facets.scn.
+ */
+static rt_scene *heavy_scene(int count, int width, int height)
+{
+    rt_vec3 *vertices = malloc(sizeof *vertices * (size_t)(3 * count + 3));
+    rt_facet_desc *facets = malloc(sizeof *facets * (size_t)(count + 1));
+    ck_assert(vertices != NULL && facets != NULL);
+    unsigned seed = 12345u;
+    for (int i = 0; i < count; i++) {
+        double p[3];
+        for (int c = 0; c < 3; c++) {
+            seed = seed * 1103515245u + 12345u;
+            p[c] = (double)(seed >> 8 & 0xffff) / 65535.0;
+        }
+        rt_vec3 centre = {-8 + 16 * p[0], -6 + 12 * p[1], 0.5 + 1.5 * p[2]};
+        vertices[3 * i] = (rt_vec3){centre.x - 0.2, centre.y - 0.1, centre.z};
+        vertices[3 * i + 1] = (rt_vec3){centre.x + 0.2, centre.y - 0.1,
+                                        centre.z + 0.1};
+        vertices[3 * i + 2] = (rt_vec3){centre.x, centre.y + 0.2, centre.z};
+        facets[i] = (rt_facet_desc){{3 * i, 3 * i + 1, 3 * i + 2},
+                                    0.3,
+                                    {(unsigned char)(i * 37),
+                                     (unsigned char)(i * 91), 200}};
+    }
+    vertices[3 * count] = (rt_vec3){-30, -30, 0};
+    vertices[3 * count + 1] = (rt_vec3){30, -30, 0};
+    vertices[3 * count + 2] = (rt_vec3){0, 40, 0};
+    facets[count] = (rt_facet_desc){{3 * count, 3 * count + 1, 3 * count + 2},
+                                    0.5,
+                                    {180, 180, 180}};
+    rt_scene_desc desc = {
+        .observer = {0, 0, 10},
+        .screen_center = {0, 0, 5},
+        .screen_right = {4, 0, 5},
+        .width = width,
+        .height = height,
+        .vertices = vertices,
+        .vertex_count = 3 * count + 3,
+        .facets = facets,
+        .facet_count = count + 1,
+        .background = {30, 30, 60},
+        .light_position = {-3, 2, 20},
+        .light_color = {255, 255, 255},
+    };
+    rt_scene *scene = NULL;
+    rt_error error;
+    rt_status status = rt_scene_create(&desc, &scene, &error);
+    free(vertices);
+    free(facets);
+    ck_assert_msg(status == RT_OK, "%s", error.message);
+    return scene;
+}
+
+static view_session *new_session(rt_scene *scene, int threads,
+                                 view_notify_func notify, void *context)
+{
+    view_session_options options;
+    view_session_options_init(&options);
+    options.threads = threads;
+    options.notify = notify;
+    options.notify_context = context;
+    view_session *session = NULL;
+    ck_assert_int_eq(view_session_create(scene, &options, &session), RT_OK);
+    return session;
+}
+
+static view_state wait_until_finished(view_session *session)
+{
+    view_progress progress;
+    double deadline = now_seconds() + WAIT_SECONDS;
+    for (;;) {
+        view_session_get_progress(session, &progress);
+        if (progress.state != VIEW_RENDERING)
+            return progress.state;
+        ck_assert_msg(now_seconds() < deadline, "render did not finish");
+        sleep_ms(2);
+    }
+}
+
+static view_window *open_window(int width, int height)
+{
+    /* Headless unless told otherwise (tests/viewer.cmake sets it too). */
+    setenv("SDL_VIDEODRIVER", "dummy", 0);
+    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
+                  SDL_GetError());
+    char error[256];
+    view_window *window = view_window_create(
+        "test", width, height, VIEW_WINDOW_SOFTWARE | VIEW_WINDOW_HIDDEN,
+        error, sizeof error);
+    ck_assert_msg(window != NULL, "%s", error);
+    return window;
+}
+
+static void close_window(view_window *window)
+{
+    view_window_destroy(window);
+    SDL_Quit();
+}
+
+static rt_image read_window(view_window *window)
+{
+    rt_image frame;
+    ck_assert_msg(view_window_read(window, &frame), "read back: %s",
+                  SDL_GetError());
+    return frame;
+}
+
+static int row_is_placeholder(const rt_image *frame, int y)
+{
+    for (int x = 0; x < frame->width; x++) {
+        unsigned char expected[3];
+        view_placeholder_color(x, y, expected);
+        if (memcmp(rt_image_pixel(frame, x, y), expected, 3) != 0)
+            return 0;
+    }
+    return 1;
+}
+
+static int row_equals(const rt_image *a, const rt_image *b, int y)
+{
+    return memcmp(rt_image_pixel(a, 0, y), rt_image_pixel(b, 0, y),
+                  (size_t)a->width * 3) == 0;
+}
+
+/* Fails the test, after writing both images, when they differ. */
+static void assert_same_image(const rt_image *actual, const rt_image *expected,
+                              const char *name)
+{
+    int max_diff;
+    long differ = rt_test_image_diff(actual, expected, &max_diff);
+    if (differ != 0) {
+        char path[256];
+        snprintf(path, sizeof path, "viewer-%s-actual.ppm", name);
+        rt_ppm_save(path, actual, RT_PPM_P6, NULL);
+        snprintf(path, sizeof path, "viewer-%s-expected.ppm", name);
+        rt_ppm_save(path, expected, RT_PPM_P6, NULL);
+    }
+    ck_assert_msg(differ == 0,
+                  "%s: %ld pixels differ (by up to %d), images written to "
+                  "viewer-%s-*.ppm",
+                  name, differ, max_diff, name);
+}
+
+/* Renders `scene` through a session and a window of its size; returns what
+ * the window shows at the end. */
+static rt_image show_until_done(rt_scene *scene, int threads)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    view_window *window = open_window(info.width, info.height);
+    view_session *session = new_session(scene, threads, NULL, NULL);
+    ck_assert(view_window_attach(window, session, NULL, 0));
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    double deadline = now_seconds() + WAIT_SECONDS;
+    view_progress progress;
+    do {
+        view_session_get_progress(session, &progress);
+        if (view_window_sync(window))
+            view_window_draw(window);
+        ck_assert_msg(now_seconds() < deadline, "render did not finish");
+        sleep_ms(5);
+    } while (progress.state == VIEW_RENDERING);
+    view_window_sync(window);
+    ck_assert_int_eq(progress.state, VIEW_DONE);
+    ck_assert_int_eq(progress.rows_done, info.height);
+    rt_image frame = read_window(window);
+    view_window_attach(window, NULL, NULL, 0);
+    view_session_destroy(session);
+    close_window(window);
+    return frame;
+}
+
+START_TEST(finished_window_equals_rt_export_image_pixel_for_pixel)
+{
+    const char *scene_path = rt_test_source_path("scenes/cubes.scn");
+    char command[4096];
+    snprintf(command, sizeof command,
+             "'%s' '%s' -o viewer-cubes-export.ppm -q >/dev/null",
+             RT_EXPORT_PATH, scene_path);
+    ck_assert_msg(system(command) == 0, "failed: %s", command);
+    rt_image exported;
+    rt_error error;
+    ck_assert_msg(rt_ppm_load("viewer-cubes-export.ppm", &exported, &error) ==
+                      RT_OK,
+                  "%s", error.message);
+    remove("viewer-cubes-export.ppm");
+
+    rt_image frame = show_until_done(load_scene("scenes/cubes.scn"), 0);
+    ck_assert_int_eq(frame.width, exported.width);
+    ck_assert_int_eq(frame.height, exported.height);
+    assert_same_image(&frame, &exported, "cubes");
+    rt_image_destroy(&frame);
+    rt_image_destroy(&exported);
+}
+END_TEST
+
+START_TEST(finished_window_equals_library_render_for_each_scene)
+{
+    static const char *const scenes[] = {
+        "scenes/two-facets.scn", "scenes/one-facet.scn", "scenes/empty.scn"};
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        rt_scene *reference_scene = load_scene(scenes[i]);
+        rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
+        rt_scene_free(reference_scene);
+        rt_image frame = show_until_done(load_scene(scenes[i]), (int)i % 3);
+        assert_same_image(&frame, &expected, "scene");
+        rt_image_destroy(&frame);
+        rt_image_destroy(&expected);
+    }
+}
+END_TEST
+
+/* Freezes the render at each notification until the test lets it go: the
+ * thread in the row callback waits, and the others wait for the callback's
+ * lock, so no row is marked finished while a frame is checked. */
+typedef struct gate {
+    sem_t paused;
+    sem_t resume;
+} gate;
+
+static void gate_notify(void *context)
+{
+    gate *g = context;
+    sem_post(&g->paused);
+    sem_wait(&g->resume);
+}
+
+static void wait_paused(gate *g)
+{
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += (time_t)WAIT_SECONDS;
+    int result;
+    do
+        result = sem_timedwait(&g->paused, &deadline);
+    while (result != 0 && errno == EINTR);
+    ck_assert_msg(result == 0, "the render never notified");
+}
+
+START_TEST(intermediate_frames_show_only_finished_rows)
+{
+    rt_scene *reference_scene = heavy_scene(300, 96, 72);
+    rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
+    rt_scene_free(reference_scene);
+
+    gate g;
+    ck_assert_int_eq(sem_init(&g.paused, 0, 0), 0);
+    ck_assert_int_eq(sem_init(&g.resume, 0, 0), 0);
+    view_window *window = open_window(expected.width, expected.height);
+    view_session *session = new_session(heavy_scene(300, 96, 72), 2,
+                                        gate_notify, &g);
+    ck_assert(view_window_attach(window, session, NULL, 0));
+
+    rt_image first = read_window(window);
+    for (int y = 0; y < first.height; y++)
+        ck_assert_msg(row_is_placeholder(&first, y),
+                      "row %d is not the placeholder before the render", y);
+    rt_image_destroy(&first);
+
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    int partial_frames = 0;
+    for (;;) {
+        wait_paused(&g);
+        view_window_sync(window);
+        rt_image frame = read_window(window);
+        int finished = 0;
+        for (int y = 0; y < frame.height; y++) {
+            if (view_session_row_done(session, y)) {
+                finished++;
+                ck_assert_msg(row_equals(&frame, &expected, y),
+                              "finished row %d is not the rendered row", y);
+            } else {
+                ck_assert_msg(row_is_placeholder(&frame, y),
+                              "unfinished row %d shows something", y);
+            }
+        }
+        rt_image_destroy(&frame);
+        partial_frames += finished > 0 && finished < expected.height;
+        view_progress progress;
+        view_session_get_progress(session, &progress);
+        sem_post(&g.resume);
+        if (progress.state != VIEW_RENDERING) {
+            ck_assert_int_eq(progress.state, VIEW_DONE);
+            break;
+        }
+    }
+    ck_assert_int_ge(partial_frames, 2);
+    view_window_sync(window);
+    rt_image final_frame = read_window(window);
+    assert_same_image(&final_frame, &expected, "gated");
+
+    rt_image_destroy(&final_frame);
+    view_window_attach(window, NULL, NULL, 0);
+    view_session_destroy(session);
+    close_window(window);
+    sem_destroy(&g.paused);
+    sem_destroy(&g.resume);
+    rt_image_destroy(&expected);
+}
+END_TEST
+
+START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
+{
+    int threads_before = baseline_thread_count();
+    view_session *session = new_session(heavy_scene(2000, 48, 1500), 0,
+                                        NULL, NULL);
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+
+    view_progress progress;
+    double deadline = now_seconds() + WAIT_SECONDS;
+    do {
+        sleep_ms(1);
+        view_session_get_progress(session, &progress);
+        ck_assert(now_seconds() < deadline);
+    } while (progress.rows_done < 3 && progress.state == VIEW_RENDERING);
+    ck_assert_msg(progress.state == VIEW_RENDERING,
+                  "the heavy scene finished before it could be cancelled");
+    ck_assert_int_gt(thread_count(), threads_before);
+
+    double started = now_seconds();
+    view_session_cancel(session);
+    double took = now_seconds() - started;
+    if (getenv("RT_TEST_VERBOSE"))
+        fprintf(stderr, "cancel: %.4f s after %d rows\n", took,
+                progress.rows_done);
+    ck_assert_msg(took < 0.5, "cancelling took %.3f s", took);
+    ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+
+    view_session_get_progress(session, &progress);
+    ck_assert_int_eq(progress.state, VIEW_CANCELLED);
+    ck_assert_int_eq(progress.status, RT_ERR_CANCELLED);
+    ck_assert_int_lt(progress.rows_done, progress.rows_total);
+    char text[96];
+    view_progress_describe(&progress, text, sizeof text);
+    ck_assert_msg(strncmp(text, "cancelled at ", 13) == 0, "%s", text);
+
+    /* Rows it reports finished stay; nothing else is marked. */
+    int marked = 0;
+    for (int y = 0; y < progress.rows_total; y++)
+        marked += view_session_row_done(session, y);
+    ck_assert_int_eq(marked, progress.rows_done);
+
+    view_session_destroy(session);
+    ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+}
+END_TEST
+
+START_TEST(destroying_a_rendering_session_joins_its_thread)
+{
+    int threads_before = baseline_thread_count();
+    for (int i = 0; i < 5; i++) {
+        view_session *session = new_session(heavy_scene(1500, 64, 400),
+                                            i % 3, NULL, NULL);
+        ck_assert_int_eq(view_session_start(session), RT_OK);
+        sleep_ms(i * 7);
+        double started = now_seconds();
+        view_session_destroy(session);
+        double took = now_seconds() - started;
+        ck_assert_msg(took < 0.5, "destroying took %.3f s", took);
+        ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+    }
+}
+END_TEST
+
+START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
+{
+    rt_scene *reference_scene = heavy_scene(400, 80, 60);
+    rt_image expected = rt_test_render(reference_scene, 2, 1);
+    rt_scene_free(reference_scene);
+
+    view_window *window = open_window(80, 60);
+    view_session *session = new_session(heavy_scene(400, 80, 60), 0, NULL,
+                                        NULL);
+    ck_assert(view_window_attach(window, session, NULL, 0));
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    wait_until_finished(session);
+    view_window_sync(window);
+
+    /* A depth change takes effect at the next start. */
+    ck_assert_int_eq(view_session_set_depth(session, -1), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(view_session_set_depth(session, VIEW_MAX_DEPTH + 1),
+                     RT_ERR_ARGUMENT);
+    ck_assert_int_eq(view_session_set_depth(session, 2), RT_OK);
+    view_session_cancel(session);
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    view_session_cancel(session);
+    view_progress progress;
+    view_session_get_progress(session, &progress);
+    ck_assert_int_eq(progress.generation, 2);
+    ck_assert_int_eq(progress.max_depth, 2);
+
+    /* The frame after a restart shows only the new render's rows. */
+    view_window_sync(window);
+    rt_image frame = read_window(window);
+    for (int y = 0; y < frame.height; y++) {
+        if (view_session_row_done(session, y))
+            ck_assert(row_equals(&frame, &expected, y));
+        else
+            ck_assert_msg(row_is_placeholder(&frame, y),
+                          "row %d kept the old render", y);
+    }
+    rt_image_destroy(&frame);
+
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    ck_assert_int_eq(wait_until_finished(session), VIEW_DONE);
+    view_window_sync(window);
+    frame = read_window(window);
+    assert_same_image(&frame, &expected, "restart");
+    rt_image_destroy(&frame);
+
+    view_window_attach(window, NULL, NULL, 0);
+    view_session_destroy(session);
+    close_window(window);
+    rt_image_destroy(&expected);
+}
+END_TEST
+
+START_TEST(taking_rows_returns_each_finished_row_once_in_order)
+{
+    view_session *session = new_session(heavy_scene(50, 32, 300), 0, NULL,
+                                        NULL);
+    const rt_image *image = view_session_image(session);
+    int *rows = malloc(sizeof *rows * (size_t)image->height);
+    char *seen = calloc((size_t)image->height, 1);
+    ck_assert(rows != NULL && seen != NULL);
+    unsigned generation = 0;
+    ck_assert_int_eq(view_session_take_finished_rows(session, rows,
+                                                     image->height,
+                                                     &generation),
+                     0);
+    ck_assert_int_eq(generation, 0);
+
+    ck_assert_int_eq(view_session_start(session), RT_OK);
+    int total = 0;
+    view_progress progress;
+    do {
+        view_session_get_progress(session, &progress);
+        int count = view_session_take_finished_rows(session, rows, 7,
+                                                    &generation);
+        ck_assert_int_eq(generation, 1);
+        for (int i = 0; i < count; i++) {
+            ck_assert(rows[i] >= 0 && rows[i] < image->height);
+            ck_assert_msg(!seen[rows[i]], "row %d taken twice", rows[i]);
+            if (i > 0)
+                ck_assert_int_lt(rows[i - 1], rows[i]);
+            seen[rows[i]] = 1;
+        }
+        total += count;
+    } while (progress.state == VIEW_RENDERING || total < image->height);
+    ck_assert_int_eq(total, image->height);
+    ck_assert_int_eq(view_session_take_finished_rows(session, rows,
+                                                     image->height, NULL),
+                     0);
+    free(rows);
+    free(seen);
+    view_session_destroy(session);
+}
+END_TEST
+
+START_TEST(progress_describes_each_state)
+{
+    view_progress p = {VIEW_RENDERING, 42, 100, 5, 1.25, RT_OK, 1};
+    char text[96];
+    view_progress_describe(&p, text, sizeof text);
+    ck_assert_str_eq(text, "42% - 1.2 s");
+    p.state = VIEW_DONE;
+    p.rows_done = 100;
+    p.seconds = 2.414;
+    view_progress_describe(&p, text, sizeof text);
+    ck_assert_str_eq(text, "done in 2.41 s");
+    p.state = VIEW_FAILED;
+    p.status = RT_ERR_NOMEM;
+    view_progress_describe(&p, text, sizeof text);
+    ck_assert_str_eq(text, "failed: out of memory");
+}
+END_TEST
+
+START_TEST(window_fits_the_screen_keeping_the_aspect_ratio)
+{
+    int w, h;
+    view_fit_size(400, 300, 1264, 976, &w, &h);
+    ck_assert_int_eq(w, 400);
+    ck_assert_int_eq(h, 300);
+    view_fit_size(4000, 1000, 1264, 976, &w, &h);
+    ck_assert_int_eq(w, 1264);
+    ck_assert_int_eq(h, 316);
+    view_fit_size(1000, 4000, 1264, 976, &w, &h);
+    ck_assert_int_eq(w, 244);
+    ck_assert_int_eq(h, 976);
+    view_fit_size(16384, 1, 800, 600, &w, &h);
+    ck_assert_int_eq(w, 800);
+    ck_assert_int_eq(h, 1);
+}
+END_TEST
+
+START_TEST(image_is_saved_next_to_the_scene)
+{
+    char path[64];
+    ck_assert(view_scene_image_path("scenes/cubes.scn", path, sizeof path));
+    ck_assert_str_eq(path, "scenes/cubes.ppm");
+    ck_assert(view_scene_image_path("/a.b/scene", path, sizeof path));
+    ck_assert_str_eq(path, "/a.b/scene.ppm");
+    ck_assert(view_scene_image_path("x.txt", path, sizeof path));
+    ck_assert_str_eq(path, "x.txt.ppm");
+    ck_assert(view_scene_image_path("dir/.scn", path, sizeof path));
+    ck_assert_str_eq(path, "dir/.scn.ppm");
+    ck_assert(!view_scene_image_path("a-rather-long-name.scn", path, 8));
+}
+END_TEST
+
+START_TEST(scale_renders_the_same_picture_with_more_pixels)
+{
+    rt_scene *scene = NULL;
+    rt_error error;
+    const char *path = rt_test_source_path("scenes/two-facets.scn");
+    ck_assert_int_eq(view_scene_load(path, 2.0, &scene, &error), RT_OK);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.width, 128);
+    ck_assert_int_eq(info.height, 96);
+    rt_image big = rt_test_render(scene, RT_DEFAULT_DEPTH, 0);
+    rt_scene_free(scene);
+
+    /* Pixel (2i+1, 2j+1) of the double-size image is close to pixel
+     * (i, j)'s centre; compare away from edges, where both see the same
+     * facet: most of them match within 2 (rounding of the camera). */
+    scene = load_scene("scenes/two-facets.scn");
+    rt_image small = rt_test_render(scene, RT_DEFAULT_DEPTH, 0);
+    rt_scene_free(scene);
+    int close = 0, total = 0;
+    for (int j = 0; j < small.height; j++) {
+        for (int i = 0; i < small.width; i++) {
+            const unsigned char *a = rt_image_pixel(&small, i, j);
+            const unsigned char *b = rt_image_pixel(&big, 2 * i + 1, 2 * j + 1);
+            total++;
+            close += abs(a[0] - b[0]) <= 2 && abs(a[1] - b[1]) <= 2 &&
+                     abs(a[2] - b[2]) <= 2;
+        }
+    }
+    ck_assert_msg(close * 10 >= total * 9, "%d of %d pixels agree", close,
+                  total);
+    rt_image_destroy(&big);
+    rt_image_destroy(&small);
+
+    ck_assert_int_eq(view_scene_load(path, 1000.0, &scene, &error),
+                     RT_ERR_ARGUMENT);
+    ck_assert_ptr_null(scene);
+    ck_assert_int_eq(view_scene_load(path, 60.0, &scene, &error),
+                     RT_OK);
+    rt_scene_free(scene);
+}
+END_TEST
+
+START_TEST(scale_beyond_the_image_limit_is_an_error_naming_the_file)
+{
+    rt_scene *scene = (rt_scene *)1;
+    rt_error error;
+    const char *path = rt_test_source_path("scenes/cubes.scn");
+    ck_assert_int_eq(view_scene_load(path, 50.0, &scene, &error),
+                     RT_ERR_LIMIT);
+    ck_assert_ptr_null(scene);
+    ck_assert_msg(strncmp(error.message, path, strlen(path)) == 0, "%s",
+                  error.message);
+}
+END_TEST
+
+START_TEST(bad_scene_reports_file_line_and_column)
+{
+    FILE *file = fopen("viewer-bad.scn", "w");
+    ck_assert(file != NULL);
+    fputs("0 0 10\n0 0 5 4 0 5 64 48\n2\n1 2 3\n1 2\n", file);
+    fclose(file);
+    rt_scene *scene = (rt_scene *)1;
+    rt_error error;
+    ck_assert_int_ne(view_scene_load("viewer-bad.scn", 1.0, &scene, &error),
+                     RT_OK);
+    ck_assert_ptr_null(scene);
+    ck_assert_msg(strncmp(error.message, "viewer-bad.scn:5:", 17) == 0, "%s",
+                  error.message);
+    ck_assert_int_ne(view_scene_load("viewer-missing.scn", 2.0, &scene,
+                                     &error),
+                     RT_OK);
+    ck_assert_ptr_null(scene);
+    remove("viewer-bad.scn");
+}
+END_TEST
+
+static Suite *viewer_suite(void)
+{
+    Suite *suite = suite_create("viewer");
+    TCase *window = tcase_create("window");
+    tcase_set_timeout(window, 120);
+    tcase_add_test(window,
+                   finished_window_equals_rt_export_image_pixel_for_pixel);
+    tcase_add_test(window, finished_window_equals_library_render_for_each_scene);
+    tcase_add_test(window, intermediate_frames_show_only_finished_rows);
+    tcase_add_test(window,
+                   restart_goes_back_to_the_placeholder_and_renders_again);
+    suite_add_tcase(suite, window);
+
+    TCase *session = tcase_create("session");
+    tcase_set_timeout(session, 120);
+    tcase_add_test(session, cancel_stops_the_render_promptly_and_leaves_no_thread);
+    tcase_add_test(session, destroying_a_rendering_session_joins_its_thread);
+    tcase_add_test(session, taking_rows_returns_each_finished_row_once_in_order);
+    tcase_add_test(session, progress_describes_each_state);
+    suite_add_tcase(suite, session);
+
+    TCase *helpers = tcase_create("helpers");
+    tcase_add_test(helpers, window_fits_the_screen_keeping_the_aspect_ratio);
+    tcase_add_test(helpers, image_is_saved_next_to_the_scene);
+    tcase_add_test(helpers, scale_renders_the_same_picture_with_more_pixels);
+    tcase_add_test(helpers,
+                   scale_beyond_the_image_limit_is_an_error_naming_the_file);
+    tcase_add_test(helpers, bad_scene_reports_file_line_and_column);
+    suite_add_tcase(suite, helpers);
+    return suite;
+}
+
+RT_CHECK_MAIN(viewer_suite)
