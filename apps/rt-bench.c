@@ -351,10 +351,10 @@ static int non_nesting_grid(int grid, const config *configs, int count)
         int nests = 0;
         for (int i = 0; i < count; i++) {
             int n = configs[i].s.grid;
-            nests |= configs[i].s.sampling == RT_SAMPLING_REGULAR ||
-                             n == 1
-                         ? m % n == 0 && (m / n) % 2 == 1
-                         : 0;
+            int regular = configs[i].s.sampling == RT_SAMPLING_REGULAR ||
+                          n == 1;
+            if (regular && m % n == 0 && (m / n) % 2 == 1)
+                nests = 1;
         }
         if (!nests || m >= 32)
             return m;
@@ -467,7 +467,7 @@ static int build_configs(config *configs, int max_samples, int ref_depth)
 
 /* Images of the run, freed together. */
 typedef struct images {
-    rt_image reference, scratch, depth_reference, previous;
+    rt_image reference, scratch, depth_reference;
     rt_image kept[MAX_CONFIGS];     /* round one's double/exact images */
 } images;
 
@@ -476,7 +476,6 @@ static void free_images(images *im)
     rt_image_destroy(&im->reference);
     rt_image_destroy(&im->scratch);
     rt_image_destroy(&im->depth_reference);
-    rt_image_destroy(&im->previous);
     for (int i = 0; i < MAX_CONFIGS; i++)
         rt_image_destroy(&im->kept[i]);
 }
