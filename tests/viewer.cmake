@@ -9,6 +9,5 @@ if(TARGET raytrace_viewer)
   target_compile_definitions(test_viewer PRIVATE
     RT_EXPORT_PATH="$<TARGET_FILE:rt-export>")
   set_tests_properties(test_viewer PROPERTIES
-    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy"
-    TIMEOUT 600)
+    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()
