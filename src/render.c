@@ -46,6 +46,53 @@ typedef struct job {
     uint64_t pixels;
 } job;
 
+struct rt_cancel {
+    atomic_int raised;
+};
+
+rt_cancel *rt_cancel_create(void)
+{
+    rt_cancel *cancel = malloc(sizeof *cancel);
+    if (cancel != NULL)
+        atomic_init(&cancel->raised, 0);
+    return cancel;
+}
+
+void rt_cancel_free(rt_cancel *cancel)
+{
+    free(cancel);
+}
+
+void rt_cancel_request(rt_cancel *cancel)
+{
+    atomic_store(&cancel->raised, 1);
+}
+
+void rt_cancel_reset(rt_cancel *cancel)
+{
+    atomic_store(&cancel->raised, 0);
+}
+
+int rt_cancel_requested(const rt_cancel *cancel)
+{
+    return atomic_load(&((rt_cancel *)cancel)->raised);
+}
+
+/* Non-zero once the render must stop: its callback said so, or the caller
+ * raised its cancellation flag (which is then remembered for the job). */
+static int stopping(job *j)
+{
+    if (atomic_load_explicit(&j->cancelled, memory_order_relaxed))
+        return 1;
+    rt_cancel *cancel = j->options->cancel;
+    if (cancel != NULL &&
+        atomic_load_explicit(&cancel->raised, memory_order_relaxed)) {
+        atomic_store(&j->cancelled, 1);
+        return 1;
+    }
+    return 0;
+}
+
 void rt_render_options_init(rt_render_options *options)
 {
     memset(options, 0, sizeof *options);
@@ -150,7 +197,7 @@ static int render_row(job *j, int row, rt_counters *counters,
 {
     unsigned char *out = rt_image_pixel(j->image, 0, row);
     for (int i = 0; i < j->scene->camera.width; i++) {
-        if (atomic_load_explicit(&j->cancelled, memory_order_relaxed))
+        if (stopping(j))
             return 0;
         rt_color c = render_pixel(j, i, row, counters, rays);
         out[3 * i + 0] = rt_channel_to_byte(c.r);

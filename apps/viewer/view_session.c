@@ -1,8 +1,8 @@
 /*
  * view_session.c - a scene rendered by a worker thread, row by row, for the
  * viewer (see view_session.h).  The library's row callback records finished
- * rows under a mutex; the main thread collects them; a flag read by the
- * callback cancels the render.
+ * rows under a mutex; the main thread collects them; the library's
+ * cancellation flag, polled before every pixel, stops the render at once.
  */
 #include "view_session.h"
 
@@ -20,7 +20,7 @@ struct view_session {
 
     pthread_t worker;
     int worker_joinable;        /* controlling thread only */
-    atomic_int cancel;
+    rt_cancel *cancel;          /* raised to stop the worker's render */
     atomic_int wake_pending;    /* notify sent, rows not yet taken */
 
     pthread_mutex_t lock;       /* guards everything below */
@@ -62,7 +62,7 @@ static int on_row(void *user, int row)
     pthread_mutex_unlock(&session->lock);
     if (!atomic_exchange(&session->wake_pending, 1))
         notify(session);
-    return !atomic_load(&session->cancel);
+    return !rt_cancel_requested(session->cancel);
 }
 
 static void *worker_main(void *arg)
@@ -74,6 +74,7 @@ static void *worker_main(void *arg)
     options.threads = session->options.threads;
     options.on_row = on_row;
     options.user = session;
+    options.cancel = session->cancel;
     rt_status status = rt_render_rows(session->scene, &options, 0,
                                       session->image.height, &session->image);
 
@@ -122,7 +123,7 @@ rt_status view_session_create(rt_scene *scene,
     session->options = *options;
     session->state = VIEW_IDLE;
     session->status = RT_OK;
-    atomic_init(&session->cancel, 0);
+    session->cancel = rt_cancel_create();
     atomic_init(&session->wake_pending, 0);
 
     rt_scene_info info;
@@ -135,9 +136,12 @@ rt_status view_session_create(rt_scene *scene,
         if (session->done == NULL || session->fresh == NULL)
             status = RT_ERR_NOMEM;
     }
+    if (status == RT_OK && session->cancel == NULL)
+        status = RT_ERR_NOMEM;
     if (status == RT_OK && pthread_mutex_init(&session->lock, NULL) != 0)
         status = RT_ERR_NOMEM;
     if (status != RT_OK) {
+        rt_cancel_free(session->cancel);
         free(session->done);
         free(session->fresh);
         rt_image_destroy(&session->image);
@@ -155,6 +159,7 @@ void view_session_destroy(view_session *session)
         return;
     view_session_cancel(session);
     pthread_mutex_destroy(&session->lock);
+    rt_cancel_free(session->cancel);
     free(session->done);
     free(session->fresh);
     rt_image_destroy(&session->image);
@@ -164,14 +169,14 @@ void view_session_destroy(view_session *session)
 
 void view_session_request_cancel(view_session *session)
 {
-    atomic_store(&session->cancel, 1);
+    rt_cancel_request(session->cancel);
 }
 
 void view_session_cancel(view_session *session)
 {
     if (!session->worker_joinable)
         return;
-    atomic_store(&session->cancel, 1);
+    rt_cancel_request(session->cancel);
     pthread_join(session->worker, NULL);
     session->worker_joinable = 0;
 }
@@ -193,7 +198,7 @@ rt_status view_session_start(view_session *session)
     session->started = now_seconds();
     session->finished = session->started;
     pthread_mutex_unlock(&session->lock);
-    atomic_store(&session->cancel, 0);
+    rt_cancel_reset(session->cancel);
     atomic_store(&session->wake_pending, 0);
 
     if (pthread_create(&session->worker, NULL, worker_main, session) != 0) {

@@ -84,6 +84,21 @@ typedef enum rt_kernel_choice {
     RT_KERNEL_SCALAR = 1    /* one facet at a time, plain C */
 } rt_kernel_choice;
 
+/*
+ * A cancellation flag that renders poll before every pixel.  Any thread may
+ * raise it while renders that were given it run; each then stops within one
+ * pixel's work on every thread and returns RT_ERR_CANCELLED.  It stays raised
+ * until reset.  All functions are thread-safe on the same flag, except
+ * rt_cancel_free, which must wait until no render uses it.
+ */
+typedef struct rt_cancel rt_cancel;
+
+rt_cancel *rt_cancel_create(void);      /* NULL when out of memory */
+void rt_cancel_free(rt_cancel *cancel); /* NULL: no-op */
+void rt_cancel_request(rt_cancel *cancel);
+void rt_cancel_reset(rt_cancel *cancel);
+int rt_cancel_requested(const rt_cancel *cancel);
+
 typedef struct rt_render_options {
     int max_depth;              /* reflections after a primary ray; default 5 */
     int threads;                /* 0: one per online core (default); 1: the
@@ -97,6 +112,7 @@ typedef struct rt_render_options {
                                    SPEC.md says; the pixel is their mean */
     rt_sampling sampling;       /* default RT_SAMPLING_REGULAR */
     rt_row_callback on_row;     /* optional progress / cancellation */
+    rt_cancel *cancel;          /* optional: cancels within one pixel */
     void *user;                 /* passed to on_row */
     rt_render_stats *stats;     /* optional; zeroed then filled */
     rt_kernel_choice kernel;    /* default RT_KERNEL_AUTO */
