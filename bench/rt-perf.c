@@ -6,7 +6,8 @@
  * sphere and a random soup of about 1,000, 10,000 and 100,000 facets) - with
  * six renderer settings in the same run: the plain scalar loops and the fast
  * kernel, in double and in float, the fast kernel on one thread and on all.
- * Each is timed as the median of N renders (default 5); the program prints
+ * Each is timed as the median of N renders (default 5, the settings taking
+ * turns so that a change of load affects them alike); the program prints
  * Markdown tables of Mrays/s, G ray-facet tests/s and the ratios, and checks
  * that every setting of one precision gives the same image, byte for byte.
  *
@@ -74,6 +75,7 @@ static const setting settings[] = {
 #define SETTING_COUNT 6
 
 typedef struct result {
+    double times[MAX_RUNS];
     double seconds;         /* median */
     rt_render_stats stats;  /* of the last run */
 } result;
@@ -112,25 +114,25 @@ static rt_status make_scene(const entry *e, const char *shared_dir,
     return status;
 }
 
-/* Renders `runs` times with setting *s; 0 on failure. */
-static int measure(const rt_scene *scene, const setting *s, int runs,
-                   rt_image *image, result *r)
+/* Renders once with setting *s and adds the time to r->times; 0 on
+ * failure. */
+static int measure_once(const rt_scene *scene, const setting *s,
+                        rt_image *image, result *r, int run)
 {
-    double times[MAX_RUNS];
     rt_render_options options;
     rt_render_options_init(&options);
     options.precision = s->precision;
     options.kernel = s->kernel;
     options.threads = s->threads;
     options.stats = &r->stats;
-    for (int i = 0; i < runs; i++) {
-        double start = now();
-        if (rt_render(scene, &options, image) != RT_OK)
-            return 0;
-        times[i] = now() - start;
+    double start = now();
+    rt_status status = rt_render(scene, &options, image);
+    if (status != RT_OK) {
+        fprintf(stderr, "\nrt-perf: %s: %s\n", s->name,
+                rt_status_string(status));
+        return 0;
     }
-    qsort(times, (size_t)runs, sizeof times[0], compare_double);
-    r->seconds = times[runs / 2];
+    r->times[run] = now() - start;
     return 1;
 }
 
@@ -201,12 +203,21 @@ int main(int argc, char **argv)
         facets[e] = info.live_facet_count;
         rt_image images[SETTING_COUNT] = {{0}};
         int ok = 1;
+        for (int s = 0; s < SETTING_COUNT && ok; s++)
+            ok = rt_image_create(&images[s], en->width, en->height) == RT_OK;
+        /* round robin, so that a change of load on the machine hits every
+         * setting alike */
+        for (int run = 0; run < runs && ok; run++) {
+            fprintf(stderr, "\r%-12s %4dx%-4d run %d of %d ", en->name,
+                    en->width, en->height, run + 1, runs);
+            for (int s = 0; s < SETTING_COUNT && ok; s++)
+                ok = measure_once(scene, &settings[s], &images[s],
+                                  &results[e][s], run);
+        }
         for (int s = 0; s < SETTING_COUNT && ok; s++) {
-            fprintf(stderr, "\r%-12s %4dx%-4d %-16s", en->name, en->width,
-                    en->height, settings[s].name);
-            ok = rt_image_create(&images[s], en->width, en->height) == RT_OK &&
-                 measure(scene, &settings[s], runs, &images[s],
-                         &results[e][s]);
+            result *r = &results[e][s];
+            qsort(r->times, (size_t)runs, sizeof r->times[0], compare_double);
+            r->seconds = r->times[runs / 2];
         }
         if (ok) {
             done[e] = 1;
