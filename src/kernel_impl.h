@@ -179,6 +179,11 @@ static REAL max3(REAL a, REAL b, REAL c)
  * computed from the barycentric weights, and the bound from ratios to the
  * determinant, so coordinates from 1e-150 to 1e150 neither overflow nor
  * underflow.
+ *
+ * The fast loops (kernel_simd_impl.h) repeat the computation of the edge
+ * functions u, v, w below, operation for operation, and skip the facets
+ * where two of them have strictly opposite signs: keep both in step, and
+ * keep that rejection the first thing this test does with u, v, w.
  */
 static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
 {
