@@ -1037,9 +1037,9 @@ END_TEST
  * non-negative `kill_after` sends SIGKILL once the process has used that
  * much CPU time.  Returns the exit status, or 128 + signal.
  */
-static int run_export(const char *dir, const char *const *args,
-                      double kill_after, rlim_t file_size_limit, char **out,
-                      char **err)
+static int run_program(const char *program, const char *dir,
+                       const char *const *args, double kill_after,
+                       rlim_t file_size_limit, char **out, char **err)
 {
     char *out_path = join(dir, "..stdout"), *err_path = join(dir, "..stderr");
     fflush(NULL);
@@ -1060,11 +1060,11 @@ static int run_export(const char *dir, const char *const *args,
         }
         char *argv[16];
         int argc = 0;
-        argv[argc++] = (char *)RT_EXPORT_PATH;
+        argv[argc++] = (char *)program;
         for (int i = 0; args[i] && argc < 15; i++)
             argv[argc++] = (char *)args[i];
         argv[argc] = NULL;
-        execv(RT_EXPORT_PATH, argv);
+        execv(program, argv);
         _exit(127);
     }
     int status;
@@ -1109,6 +1109,14 @@ finished:
     free(out_path);
     free(err_path);
     return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
+}
+
+static int run_export(const char *dir, const char *const *args,
+                      double kill_after, rlim_t file_size_limit, char **out,
+                      char **err)
+{
+    return run_program(RT_EXPORT_PATH, dir, args, kill_after,
+                       file_size_limit, out, err);
 }
 
 START_TEST(export_refuses_to_write_over_its_own_scene)
@@ -1265,6 +1273,77 @@ START_TEST(export_killed_mid_render_keeps_the_previous_image)
 }
 END_TEST
 
+/*
+ * rt-bench's files (two CSV files and an SVG plot) follow the same rule as
+ * images: a run that cannot write them leaves the previous ones whole.
+ */
+START_TEST(bench_that_cannot_write_keeps_the_previous_files)
+{
+#ifndef RT_BENCH_PATH
+    fprintf(stderr, "test_hostile: rt-bench is not built; skipped\n");
+#else
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "scene.scn");
+    write_bytes(scene, small_scene, strlen(small_scene));
+    const char *args[] = {"scene.scn", "--size", "16x12", "--runs", "5",
+                          "--ref-samples", "16", "--max-samples", "4",
+                          "--threads", "1", "-q", NULL};
+    char *out, *err;
+    int code = run_program(RT_BENCH_PATH, dir, args, -1, RLIM_INFINITY, &out,
+                           &err);
+    ck_assert_msg(code == 0, "rt-bench failed (%d): %s", code, err);
+    free(out);
+    free(err);
+    static const char *const files[] = {"accuracy-scene-16x12.csv",
+                                        "accuracy-scene-16x12-depth.csv",
+                                        "accuracy-scene-16x12.svg"};
+    char *before[3];
+    size_t sizes[3];
+    for (int i = 0; i < 3; i++) {
+        char *path = join(dir, files[i]);
+        before[i] = read_bytes(path, &sizes[i]);
+        ck_assert_msg(before[i] != NULL, "rt-bench wrote no %s", files[i]);
+        free(path);
+    }
+    char *listing = list_dir(dir);
+    /* every file is larger than 100 bytes: a 100-byte limit fails each
+     * write; then one that lets the small depth CSV through */
+    rlim_t limits[2] = {100, 1024};
+    for (int l = 0; l < 2; l++) {
+        code = run_program(RT_BENCH_PATH, dir, args, -1, limits[l], &out,
+                           &err);
+        ck_assert_msg(code == 1, "rt-bench exit %d with a %d-byte file "
+                      "limit, expected 1", code, (int)limits[l]);
+        for (int i = 0; i < 3; i++) {
+            char *path = join(dir, files[i]);
+            size_t size;
+            char *now = read_bytes(path, &size);
+            ck_assert_msg(now != NULL && size == sizes[i] &&
+                              memcmp(now, before[i], size) == 0,
+                          "%s was changed by a run that failed to write "
+                          "(%zu bytes, was %zu)", files[i],
+                          now ? size : 0, sizes[i]);
+            free(now);
+            free(path);
+        }
+        char *names = list_dir(dir);
+        ck_assert_msg(strcmp(names, listing) == 0,
+                      "the directory holds `%s`, was `%s`", names, listing);
+        free(names);
+        ck_assert_msg(strstr(err, "File too large") != NULL,
+                      "the message does not say why: %s", err);
+        free(out);
+        free(err);
+    }
+    free(listing);
+    for (int i = 0; i < 3; i++)
+        free(before[i]);
+    free(scene);
+    remove_dir(dir);
+#endif
+}
+END_TEST
+
 static Suite *hostile_suite(void)
 {
     Suite *s = suite_create("hostile");
@@ -1306,6 +1385,7 @@ static Suite *hostile_suite(void)
     tcase_add_test(tc, export_exit_codes_say_what_went_wrong);
     tcase_add_test(tc, export_that_cannot_write_keeps_the_previous_image);
     tcase_add_test(tc, export_killed_mid_render_keeps_the_previous_image);
+    tcase_add_test(tc, bench_that_cannot_write_keeps_the_previous_files);
     suite_add_tcase(s, tc);
     return s;
 }
