@@ -169,11 +169,11 @@ static REAL max3(REAL a, REAL b, REAL c)
 }
 
 /*
- * The watertight test: non-zero when the ray meets *f at a t that is
- * provably in (0, t_max): t must exceed its own rounding-error bound, and
- * t plus that bound must stay below t_max.  So a ray never meets a facet
- * through its own origin (a camera lying on a facet does not see it), and a
- * shadow ray is not stopped by a facet through the light.  The bound is
+ * The watertight test: non-zero when the ray meets *f at a t in (0, t_max)
+ * that provably exceeds 0: t must exceed its own rounding-error bound, so a
+ * ray never meets a facet through its own origin (a camera lying on a facet
+ * does not see it).  Shadow rays also ask that t plus the bound stays below
+ * the light (blocks()), so a facet through the light does not shadow it.  The bound is
  * pbrt-v4's (Pharr, Jakob, Humphreys, section 6.8.4), with the products
  * regrouped so that none grows like the cube of the coordinates: t is
  * computed from the barycentric weights, and the bound from ratios to the
@@ -222,7 +222,7 @@ static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
     REAL edge_ratio = max3(u, v, w) / abs_det;  /* <= 1: all of one sign */
     REAL t_error = 4 * (gamma_bound(3) * edge_ratio * max_z +
                         edge_error * max_z + dz * edge_ratio);
-    if (!(t > t_error && t + t_error < t_max))
+    if (!(t > t_error && t < t_max))
         return 0;
     h->t = t;
     h->t_error = t_error;
@@ -233,9 +233,24 @@ static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
     return 1;
 }
 
-/* Nearest hit, all facets but `skip`.  A facet replaces the nearest so far
- * only when it is closer beyond both their error bounds: hits that cannot
- * be told apart (coincident facets) go to the facet first in the file. */
+/*
+ * Non-zero when hit `c` (a later facet) replaces the nearest so far, `b`:
+ * it is nearer, unless both facets lie in one plane and their distances
+ * differ by less than their error bounds - coincident facets, whose order
+ * rounding would otherwise decide - where the facet first in the file
+ * stays.
+ */
+static int replaces(const KERNEL_T *k, const hit *b, const hit *c)
+{
+    if (!(c->t < b->t))
+        return 0;
+    if (b->t - c->t > b->t_error + c->t_error)
+        return 1;
+    REAL cosine = dot(k->tris[b->index].normal, k->tris[c->index].normal);
+    return fabs(cosine) < 1 - 16 * REAL_EPS;
+}
+
+/* Nearest hit, all facets but `skip` (ties: see replaces()). */
 static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
                           int skip, hit *h, uint64_t *tests)
 {
@@ -244,13 +259,22 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
     for (int i = 0; i < k->count; i++) {
         if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
             candidate.index = i;
+            if (found && !replaces(k, h, &candidate))
+                continue;
             *h = candidate;
-            t_max = candidate.t - candidate.t_error;
+            t_max = candidate.t;
             found = 1;
         }
     }
     *tests += (uint64_t)k->count - (skip >= 0);
     return found;
+}
+
+/* Non-zero when a hit of a shadow ray towards a light at t = t_max blocks
+ * it: the facet is provably before the light. */
+static int blocks(const hit *h, REAL t_max)
+{
+    return h->t + h->t_error < t_max;
 }
 
 /* Any hit in (0, t_max), all facets but `skip`; stops at the first. */
@@ -264,7 +288,8 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
         if (i == skip)
             continue;
         made++;
-        found = intersect(r, &k->tris[i], t_max, &ignored);
+        found = intersect(r, &k->tris[i], t_max, &ignored) &&
+                blocks(&ignored, t_max);
     }
     *tests += made;
     *saved += (uint64_t)k->count - (skip >= 0) - made;

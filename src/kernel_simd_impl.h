@@ -172,8 +172,10 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
             m &= m - 1;
             if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
                 candidate.index = i;
+                if (found && !replaces(k, h, &candidate))
+                    continue;
                 *h = candidate;
-                t_max = candidate.t - candidate.t_error;
+                t_max = candidate.t;
                 found = 1;
             }
         }
@@ -213,7 +215,8 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
         while (m != 0) {
             int i = b * BLOCK_LANES + __builtin_ctz(m);
             m &= m - 1;
-            if (i != skip && intersect(r, &k->tris[i], t_max, &ignored)) {
+            if (i != skip && intersect(r, &k->tris[i], t_max, &ignored) &&
+                blocks(&ignored, t_max)) {
                 int made = (b + 1) * BLOCK_LANES;
                 if (made > k->count)
                     made = k->count;
