@@ -25,6 +25,7 @@
 
 #include "raytrace/raytrace.h"
 #include "metrics.h"
+#include "output_file.h"
 #include "plot.h"
 #include "report.h"
 
@@ -652,10 +653,9 @@ static int write_plot(const char *path, const char *title,
                        "RMSE against the converged reference (levels of "
                        "255), log scale",
                        colours, 4, shapes, 3, points, count};
-    FILE *f = fopen(path, "w");
-    int ok = f != NULL && bench_plot_write_svg(f, &plot);
-    if (f != NULL && fclose(f) != 0)
-        ok = 0;
+    output_file out;
+    int ok = output_file_open(&out, path);
+    ok = output_file_close(&out, ok && bench_plot_write_svg(out.file, &plot));
     if (!ok)
         fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
                 strerror(errno));
@@ -665,11 +665,10 @@ static int write_plot(const char *path, const char *title,
 static int write_csv(const char *path, const char *scene, int width,
                      int height, const bench_row *rows, int count)
 {
-    FILE *f = fopen(path, "w");
-    int ok = f != NULL && bench_write_csv(f, scene, width, height, rows,
-                                          count);
-    if (f != NULL && fclose(f) != 0)
-        ok = 0;
+    output_file out;
+    int ok = output_file_open(&out, path);
+    ok = output_file_close(&out, ok && bench_write_csv(out.file, scene, width,
+                                                       height, rows, count));
     if (!ok)
         fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
                 strerror(errno));
@@ -752,7 +751,7 @@ int main(int argc, char **argv)
 
     images im = {0};
     code = EXIT_BAD_INPUT;
-    FILE *depth_csv = NULL;
+    output_file depth_out = {0};
     if (rt_image_create(&im.reference, info.width, info.height) != RT_OK ||
         rt_image_create(&im.scratch, info.width, info.height) != RT_OK ||
         rt_image_create(&im.depth_reference, info.width, info.height) !=
@@ -761,22 +760,20 @@ int main(int argc, char **argv)
         goto done;
     }
     snprintf(path, sizeof path, "%s-depth.csv", base);
-    depth_csv = fopen(path, "w");
-    if (depth_csv == NULL) {
+    if (!output_file_open(&depth_out, path)) {
         fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
                 strerror(errno));
         goto done;
     }
     int converged_at, reference_stable;
-    if (!analyse_depth(scene, a.threads, &bound, ref_depth, &im, depth_csv,
-                       &converged_at, &reference_stable))
+    if (!analyse_depth(scene, a.threads, &bound, ref_depth, &im,
+                       depth_out.file, &converged_at, &reference_stable))
         goto done;
-    if (fclose(depth_csv) != 0) {
-        depth_csv = NULL;
-        fprintf(stderr, "rt-bench: %s: cannot write\n", path);
+    if (!output_file_close(&depth_out, 1)) {
+        fprintf(stderr, "rt-bench: %s: cannot write: %s\n", path,
+                strerror(errno));
         goto done;
     }
-    depth_csv = NULL;
 
     settings reference = {RT_PRECISION_DOUBLE, 0, ref_grid,
                           RT_SAMPLING_STRATIFIED, ref_depth};
@@ -841,8 +838,7 @@ int main(int argc, char **argv)
     if (a.compare != NULL && !compare_with(a.compare, rows, count))
         code = EXIT_BAD_INPUT;
 done:
-    if (depth_csv != NULL)
-        fclose(depth_csv);
+    output_file_close(&depth_out, 0);
     free_images(&im);
     rt_scene_free(scene);
     return code;

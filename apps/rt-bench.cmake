@@ -3,6 +3,7 @@
 # static library, raytrace_bench, so that tests/bench.cmake can test it.
 add_library(raytrace_bench STATIC
   bench/metrics.c
+  bench/output_file.c
   bench/plot.c
   bench/report.c)
 target_include_directories(raytrace_bench PUBLIC
@@ -10,6 +11,7 @@ target_include_directories(raytrace_bench PUBLIC
 find_library(RAYTRACE_RTBENCH_LIBM m)
 target_link_libraries(raytrace_bench PUBLIC raytrace::raytrace
   $<$<BOOL:${RAYTRACE_RTBENCH_LIBM}>:m>)
+target_compile_definitions(raytrace_bench PRIVATE _POSIX_C_SOURCE=200809L)
 raytrace_set_warnings(raytrace_bench)
 
 add_executable(rt-bench rt-bench.c)
