@@ -84,8 +84,11 @@ END_TEST
 START_TEST(spd_scenes_render_identically_with_both_kernels)
 {
     const char *dir = rt_test_shared_path("spd-scenes");
-    if (dir == NULL)
-        return;             /* ../shared absent: nothing to compare */
+    if (dir == NULL) {
+        fprintf(stderr, "test_kernel: NOTE: ../shared/spd-scenes absent; "
+                        "the SPD scenes are not compared\n");
+        return;
+    }
     glob_t g;
     char pattern[4096];
     snprintf(pattern, sizeof pattern, "%s/*.scn", dir);
@@ -96,8 +99,11 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
         rt_error error;
         ck_assert_msg(rt_scene_load(g.gl_pathv[i], &loaded, &error) == RT_OK,
                       "%s", error.message);
-        /* 48 x 48 keeps the scalar renders of 10,000 facets short */
-        ck_assert_int_eq(bench_resize(loaded, 48, 48, &scene, &error), RT_OK);
+        /* 48 x 48 keeps the scalar renders of 10,000 facets short (and
+         * 8 x 8 under valgrind) */
+        int side = getenv("RT_TEST_MEMCHECK") ? 8 : 48;
+        ck_assert_int_eq(bench_resize(loaded, side, side, &scene, &error),
+                         RT_OK);
         check_scene(scene, g.gl_pathv[i]);
         rt_scene_free(scene);
         rt_scene_free(loaded);
@@ -110,10 +116,11 @@ START_TEST(generated_meshes_render_identically_with_both_kernels)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(bench_sphere(2000, 64, 64, &scene, &error), RT_OK);
+    int side = getenv("RT_TEST_MEMCHECK") ? 16 : 64;
+    ck_assert_int_eq(bench_sphere(2000, side, side, &scene, &error), RT_OK);
     check_scene(scene, "sphere");
     rt_scene_free(scene);
-    ck_assert_int_eq(bench_soup(2001, 64, 64, &scene, &error), RT_OK);
+    ck_assert_int_eq(bench_soup(2001, side, side, &scene, &error), RT_OK);
     check_scene(scene, "soup");
     rt_scene_free(scene);
 }
@@ -228,7 +235,7 @@ static void check_rays_on_grid(int jitter)
     rt__scene_kernel_source(scene, &source);
     rt_kernel_f *kf = rt__kernel_f_create(&source);
     ck_assert_ptr_nonnull(kf);
-    for (int i = 0; i < 4000; i++) {
+    for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 4000); i++) {
         rt_vec3 origin = {uniform(-2, n + 2), uniform(-2, n + 2),
                           uniform(0.5, n)};
         if (i % 4 == 0)         /* from below, too */
@@ -290,7 +297,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
     rt__scene_kernel_source(scene, &source);
     rt_kernel_f *kf = rt__kernel_f_create(&source);
     ck_assert_ptr_nonnull(kf);
-    for (int i = 0; i < 5000; i++) {
+    for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 5000); i++) {
         rt_vec3 origin = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;
         rt_scene_facet(scene, (int)uniform(0, 300), &f);

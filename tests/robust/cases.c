@@ -154,7 +154,7 @@ static void sphere_edges(rb_method method, rt_precision precision,
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {5};
     shared sh = shared_of(&m);
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&m, &sh, &rng, 0.3);
         rt_vec3 origin = rb_add(centre, random_in_ball(&rng, 0.5 * scale));
         rb_hit h;
@@ -191,7 +191,7 @@ static void case_w4(rb_method method, rt_precision precision, rb_result *r)
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {44};
-    for (int i = 0; i < 50000; i++) {
+    for (int i = 0; i < rb_scaled(50000); i++) {
         rt_vec3 target = m.vertices[apex];
         if (i % 2)
             target = rb_lerp(m.vertices[apex],
@@ -233,7 +233,7 @@ static void case_w5(rb_method method, rt_precision precision, rb_result *r)
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {55};
     shared sh = shared_of(&m);
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&m, &sh, &rng, 0.2);
         /* Cells are 1 x 2 along (s, t); float's spacing near 1e6 is
          * 1/16: a target within a few of those of the outer border is not
@@ -295,7 +295,7 @@ static void case_d1(rb_method method, rt_precision precision, rb_result *r)
         r->failures += n;
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {11};
-    for (int i = 0; i < 70000; i++) {
+    for (int i = 0; i < rb_scaled(70000); i++) {
         const rt_facet_desc *f = &m.facets[i % n];
         rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
                 c = m.vertices[f->vertex[2]];
@@ -350,7 +350,7 @@ static void slivers(rb_method method, rt_precision precision, rb_result *r,
     rb_engine *e = rb_engine_create(scene, method, precision);
     double tolerance = is_double(precision) ? 1e-9 : 1e-3;
     long misses = 0;
-    for (int i = 0; i < 64000; i++) {
+    for (int i = 0; i < rb_scaled(64000); i++) {
         int s = i % 16;
         const rt_facet_desc *f = &m.facets[s];
         rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
@@ -436,7 +436,7 @@ static void case_d5(rb_method method, rt_precision precision, rb_result *r)
     }
     rb_rng rng = {505};
     rb_mesh m = {0};
-    for (int i = 0; i < 2000; i++) {
+    for (int i = 0; i < rb_scaled(2000); i++) {
         double aspect = pow(10, 2 + (i % 11));
         rt_vec3 u, v, n;
         random_frame(&rng, &u, &v, &n);
@@ -667,7 +667,7 @@ static void contact(rb_method method, rt_precision precision, rb_result *r,
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {77};
     long leaks = 0, acne = 0;
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0; i < rb_scaled(100000); i++) {
         int under = i % 2;
         rt_vec3 origin, target;
         if (under) {
@@ -751,7 +751,7 @@ static void floor_rays(rb_method method, rt_precision precision, rb_result *r,
      * rounding (relative 1e-16, float 6e-8) lets through - invisible. */
     double zero_tolerance = is_double(precision) ? 1e-6 : 1e-2;
     rb_rng rng = {99};
-    for (int i = 0; i < 50000; i++) {
+    for (int i = 0; i < rb_scaled(50000); i++) {
         rt_vec3 target = rb_v(rb_range(&rng, -extent, extent),
                               rb_range(&rng, -extent, extent), 0);
         if (skip_wall && fabs(target.x) < 0.05)
@@ -868,7 +868,7 @@ static void case_c1(rb_method method, rt_precision precision, rb_result *r)
         rt_scene_get_info(scene, &info);
         rb_engine *e = rb_engine_create(scene, method, precision);
         rb_rng rng = {31};
-        for (int i = 0; i < 4096 + 20000; i++) {
+        for (int i = 0; i < 4096 + rb_scaled(20000); i++) {
             rt_ray ray = i < 4096 ? rt_camera_ray(&info.camera, i % 64, i / 64)
                                   : (rt_ray){eye, random_unit(&rng)};
             rb_hit h;
@@ -906,7 +906,7 @@ static void case_c2(rb_method method, rt_precision precision, rb_result *r)
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {21};
     shared sh = shared_of(&m);
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 origin = rb_v(rb_range(&rng, -3, 3), rb_range(&rng, -3, 3), 0);
         rt_vec3 target = i % 2 ? shared_point(&m, &sh, &rng, 0.3)
                                : rb_v(rb_range(&rng, -1, 1), rb_range(&rng, -1, 1), 0);
@@ -945,7 +945,7 @@ static void case_c3(rb_method method, rt_precision precision, rb_result *r)
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {12};
     shared sh = shared_of(&inner);
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&inner, &sh, &rng, 0.2);
         while (fabs(target.x) > 0.5 || fabs(target.y) > 0.5)
             target = shared_point(&inner, &sh, &rng, 0.2);
@@ -1083,7 +1083,7 @@ static void case_r2(rb_method method, rt_precision precision, rb_result *r)
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {3};
     long escapes = 0;
-    for (int i = 0; i < 3000; i++) {
+    for (int i = 0; i < rb_scaled(3000); i++) {
         /* A point of a face at least 1% of the facet away from its edges:
          * a ray that meets an edge exactly leaves through it even in
          * exact arithmetic (SPEC's t > 0; docs/robustness.md), so it has
@@ -1215,7 +1215,7 @@ static void case_v2(rb_method method, rt_precision precision, rb_result *r)
     static const double floats[] = {1e-30, 1e-15, 1e-5, 1, 1e5, 1e15, 1e30};
     const double *magnitudes = is_double(precision) ? doubles : floats;
     rb_rng rng = {8};
-    for (int i = 0; i < 2000; i++) {
+    for (int i = 0; i < rb_scaled(2000); i++) {
         rt_vec3 origin = random_in_ball(&rng, 0.5), d = random_unit(&rng);
         rb_hit first;
         int found = rb_engine_hit(e, (rt_ray){origin, d}, &first);
@@ -1290,7 +1290,7 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
     rb_mesh m = {0};
     rb_rng rng = {404};
     rt_vec3 base = rb_v(1e8, -1e8, 3e7);
-    for (int i = 0; i < 200; i++) {
+    for (int i = 0; i < rb_scaled(200); i++) {
         rt_vec3 a = rb_add(base, random_in_ball(&rng, 40));
         rb_mesh_triangle(&m, a, rb_add(a, random_in_ball(&rng, 3)),
                          rb_add(a, random_in_ball(&rng, 3)), i % 3 ? 0 : 0.5,
@@ -1301,7 +1301,7 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
                     rb_add(base, rb_v(20, -60, 90)), WHITE, SKY};
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    for (int i = 0; i < 30000; i++) {
+    for (int i = 0; i < rb_scaled(30000); i++) {
         const rt_facet_desc *f = &m.facets[i % m.facet_count];
         rt_vec3 target = rb_lerp(m.vertices[f->vertex[0]],
                                  rb_lerp(m.vertices[f->vertex[1]],
@@ -1380,7 +1380,7 @@ static void duplicates(rb_method method, rt_precision precision, rb_result *r,
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
     rb_rng rng = {66};
-    for (int i = 0; i < 50000; i++) {
+    for (int i = 0; i < rb_scaled(50000); i++) {
         rt_vec3 target = rb_v(rb_range(&rng, -0.98, 0.98), rb_range(&rng, -0.98, 0.98), 0);
         rt_vec3 origin = rb_add(target, rb_add(random_in_ball(&rng, 0.8), rb_v(0, 0, 1)));
         target = rb_rotate(target), origin = rb_rotate(origin);

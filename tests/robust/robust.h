@@ -112,6 +112,11 @@ typedef struct rb_rng {
     uint64_t state;
 } rb_rng;
 double rb_uniform(rb_rng *rng);                  /* [0, 1) */
+
+/* How many rays a case sends where it would send n: n, or n / 100 (at
+ * least 20) when RT_TEST_MEMCHECK is set, so that the suites also run under
+ * valgrind within CI's time (.ci/memcheck). */
+int rb_scaled(int n);
 double rb_range(rb_rng *rng, double lo, double hi);
 
 static inline rt_vec3 rb_v(double x, double y, double z)

@@ -35,6 +35,16 @@ rt_vec3 rb_rotate(rt_vec3 p)
     return rb_v(q.x, c2 * q.y - s2 * q.z, s2 * q.y + c2 * q.z);
 }
 
+int rb_scaled(int n)
+{
+    static int memcheck = -1;
+    if (memcheck < 0)
+        memcheck = getenv("RT_TEST_MEMCHECK") != NULL;
+    if (!memcheck)
+        return n;
+    return n / 100 > 20 ? n / 100 : (n < 20 ? n : 20);
+}
+
 double rb_uniform(rb_rng *rng)
 {
     uint64_t z = (rng->state += 0x9e3779b97f4a7c15u);
