@@ -1113,7 +1113,7 @@ static void case_r2(rb_method method, rt_precision precision, rb_result *r)
         r->failures += escapes;
     else
         snprintf(r->note, sizeof r->note,
-                 "float: %ld of %ld rays left through a concave edge within "
+                 "%ld of %ld rays left through a concave edge within "
                  "float's resolution (allowed up to 1%%)", escapes, r->total);
     rb_engine_free(e);
     rt_scene_free(scene);
