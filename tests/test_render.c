@@ -288,6 +288,67 @@ START_TEST(cancel_from_on_row_returns_cancelled)
 }
 END_TEST
 
+/* Raises the token when the first row is done, and asks to go on: only
+ * the token can stop the render. */
+static int raise_token(void *user, int row)
+{
+    (void)row;
+    rt_cancel_request(user);
+    return 1;
+}
+
+START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
+{
+    rt_scene *scene = busy_scene();
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    rt_cancel *token = rt_cancel_create();
+    ck_assert_ptr_nonnull(token);
+    ck_assert_int_eq(rt_cancel_requested(token), 0);
+    rt_image image;
+    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.cancel = token;
+
+    /* Raised before the render: not one pixel is written. */
+    rt_cancel_request(token);
+    ck_assert_int_ne(rt_cancel_requested(token), 0);
+    memset(image.pixels, 7, image.stride * (size_t)image.height);
+    for (int threads = 1; threads <= 2; threads++) {
+        options.threads = threads;
+        ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_CANCELLED);
+    }
+    for (size_t i = 0; i < image.stride * (size_t)image.height; i++)
+        ck_assert_msg(image.pixels[i] == 7, "byte %zu written", i);
+
+    /* Raised from the first finished row while on_row says go on: the
+     * render stops anyway, long before the last row. */
+    rt_cancel_reset(token);
+    ck_assert_int_eq(rt_cancel_requested(token), 0);
+    options.threads = 1;
+    options.on_row = raise_token;
+    options.user = token;
+    ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_CANCELLED);
+    int untouched_rows = 0;
+    for (int y = 0; y < image.height; y++)
+        untouched_rows += rt_image_pixel(&image, 0, y)[0] == 7 &&
+                          rt_image_pixel(&image, image.width - 1, y)[2] == 7;
+    ck_assert_msg(untouched_rows >= image.height - 2,
+                  "only %d of %d rows untouched after the cancel",
+                  untouched_rows, image.height);
+
+    /* Reset: the same options render the whole image. */
+    rt_cancel_reset(token);
+    options.on_row = NULL;
+    ck_assert_int_eq(rt_render(scene, &options, &image), RT_OK);
+    rt_image_destroy(&image);
+    rt_cancel_free(token);
+    rt_cancel_free(NULL);
+    rt_scene_free(scene);
+}
+END_TEST
+
 START_TEST(render_refuses_wrong_image_size_and_negative_depth)
 {
     rt_scene *scene = busy_scene();
@@ -422,6 +483,8 @@ Suite *render_suite(void)
     tcase_add_test(consistency, two_bands_rendered_apart_equal_the_whole_render);
     tcase_add_test(consistency, on_row_is_called_once_per_row);
     tcase_add_test(consistency, cancel_from_on_row_returns_cancelled);
+    tcase_add_test(consistency,
+                   cancel_token_stops_a_render_within_a_pixel_and_can_be_reset);
     tcase_add_test(consistency, render_refuses_wrong_image_size_and_negative_depth);
     tcase_add_test(consistency, options_init_sets_the_documented_defaults);
     tcase_add_test(consistency, stats_count_one_camera_ray_per_pixel);
