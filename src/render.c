@@ -18,7 +18,7 @@
 #include <unistd.h>
 
 #include "raytrace/render.h"
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 

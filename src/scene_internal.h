@@ -10,7 +10,7 @@
 #ifndef RAYTRACE_SCENE_INTERNAL_H
 #define RAYTRACE_SCENE_INTERNAL_H
 
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "raytrace/scene.h"
 
 struct rt_scene {

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <tgmath.h>
 
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "robust/robust.h"
 
 #define R double

@@ -1,8 +1,9 @@
 /*
  * kernel.h - the ray-tracing kernel, in double and in float (internal).
  *
- * One implementation (kernel_impl.h) is compiled twice, by kernel_double.c
- * and kernel_float.c, so both precisions run exactly the same algorithm:
+ * One implementation (kernel_impl.h and its parts, in this directory) is
+ * compiled twice, by kernel_double.c and kernel_float.c, so both precisions
+ * run exactly the same algorithm:
  * the watertight intersection test, the error-bounded offset of secondary
  * ray origins, and the shading of SPEC.md section 3.  A kernel is built from
  * a scene's facet records and holds, in its own precision, only what the
