@@ -16,6 +16,7 @@
 /* A ray prepared for the watertight test. */
 typedef struct ray {
     vec origin;
+    vec direction;
     int kx, ky, kz;
     REAL sx, sy, sz;
 } ray;
@@ -24,6 +25,7 @@ static ray prepare(vec origin, vec direction)
 {
     ray r;
     r.origin = origin;
+    r.direction = direction;
     vec d = vabs(direction);
     r.kz = d.x >= d.y ? (d.x >= d.z ? 0 : 2) : (d.y >= d.z ? 1 : 2);
     r.kx = (r.kz + 1) % 3;

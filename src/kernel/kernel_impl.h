@@ -13,14 +13,18 @@
  *     real_impl.h       vector arithmetic and error bounds
  *     intersect_impl.h  the watertight test and the tie rule
  *     simd_impl.h       the exact AVX2 filter over blocks of eight facets
- *     query_impl.h      nearest hit and any hit: which loops run
+ *     octree_impl.h     the octree: construction and the walk of a ray
+ *     query_impl.h      nearest hit and any hit: brute force or octree
  *     shade_impl.h      hit points, offsets, light and reflections
  */
+#include <pthread.h>
 #include <stdlib.h>
 #include <tgmath.h>
 #include <string.h>
 
+#include <stdatomic.h>
 #include <stdint.h>
+#include <time.h>
 
 #include "kernel.h"
 
@@ -36,6 +40,7 @@ typedef struct tri {
 } tri;
 
 typedef struct block block;     /* eight facets, simd_impl.h */
+typedef struct octree octree;   /* octree_impl.h */
 
 /* The vertices minus one ray origin, for the rays that start there. */
 struct KERNEL_EYE_T {
@@ -51,10 +56,21 @@ struct KERNEL_T {
     int avx2;               /* the processor runs the AVX2 loops */
     vec light;
     REAL background[3];
+    _Atomic(octree *) tree;     /* built on first use, then only read */
+    pthread_mutex_t tree_lock;  /* serialises that construction */
 };
 
 #include "intersect_impl.h"
 #include "simd_impl.h"
+#include "octree_impl.h"
+
+/* k's octree, once KERNEL(octree_prepare) has built it; else NULL. */
+static const octree *octree_of(const KERNEL_T *k)
+{
+    return atomic_load_explicit((_Atomic(octree *) *)&k->tree,
+                                memory_order_acquire);
+}
+
 #include "query_impl.h"
 #include "shade_impl.h"
 
@@ -100,6 +116,8 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
     fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
+    atomic_init(&k->tree, NULL);
+    pthread_mutex_init(&k->tree_lock, NULL);
     return k;
 }
 
@@ -108,8 +126,39 @@ void KERNEL(free)(KERNEL_T *k)
     if (k != NULL) {
         free(k->tris);
         free(k->blocks);
+        octree_free(atomic_load(&k->tree));
+        pthread_mutex_destroy(&k->tree_lock);
     }
     free(k);
+}
+
+int KERNEL(octree_prepare)(const KERNEL_T *k, rt_octree_info *info)
+{
+    KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy octree changes */
+    const octree *t = octree_of(k);
+    if (t == NULL) {
+        pthread_mutex_lock(&mutable->tree_lock);
+        t = atomic_load_explicit(&mutable->tree, memory_order_relaxed);
+        if (t == NULL) {
+            octree *built = octree_build(k);
+            atomic_store_explicit(&mutable->tree, built,
+                                  memory_order_release);
+            t = built;
+        }
+        pthread_mutex_unlock(&mutable->tree_lock);
+    }
+    if (t == NULL)
+        return 0;
+    if (info != NULL) {
+        info->build_seconds = t->build_seconds;
+        info->nodes = (uint64_t)t->node_count;
+        info->leaves = (uint64_t)t->leaf_count;
+        info->depth = t->depth;
+        info->references = (uint64_t)t->ref_count;
+        info->always = (uint64_t)t->always_count;
+        info->bytes = (uint64_t)t->bytes;
+    }
+    return 1;
 }
 
 KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
@@ -151,8 +200,9 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
         return 0;
     ray r = prepare(from_rt(query.origin), direction);
     hit h;
-    uint64_t tests = 0;
-    if (!nearest(k, k->avx2, NULL, &r, (REAL)t_max, -1, &h, &tests))
+    rt_counters counters = {0};
+    if (!nearest(k, k->avx2, octree_of(k), NULL, &r, (REAL)t_max, -1, &h,
+                 &counters))
         return 0;
     const tri *f = &k->tris[h.index];
     vec error_bound;
@@ -177,7 +227,7 @@ int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
         if (k->tris[i].facet == skip_facet)
             skip = i;
     ray r = prepare(o, d);
-    uint64_t tests = 0, saved = 0;
-    return any_hit(k, k->avx2, &r, 1, skip, &tests, &saved);
+    rt_counters counters = {0};
+    return any_hit(k, k->avx2, octree_of(k), &r, 1, skip, &counters);
 }
 

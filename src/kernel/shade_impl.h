@@ -62,10 +62,11 @@ static vec offset_origin(vec point, vec error_bound, vec normal,
 }
 
 /* Adds E (N.S) (1 - k) C_S C_F / 255, weighted, to color. */
-static void add_direct_light(const KERNEL_T *k, const tri *f, int index,
-                             vec point, vec error_bound, vec normal,
-                             REAL weight, int fast, int simd,
-                             REAL color[3], rt_counters *counters)
+static void add_direct_light(const KERNEL_T *k, const octree *tree,
+                             const tri *f, int index, vec point,
+                             vec error_bound, vec normal, REAL weight,
+                             int fast, int simd, REAL color[3],
+                             rt_counters *counters)
 {
     vec to_light = sub(k->light, point);
     if (f->k == 1 || !(dot(normal, to_light) > 0)) {
@@ -75,8 +76,7 @@ static void add_direct_light(const KERNEL_T *k, const tri *f, int index,
     vec origin = offset_origin(point, error_bound, normal, to_light);
     ray shadow = prepare(origin, sub(k->light, origin));
     counters->shadow_rays++;
-    if (any_hit(k, simd, &shadow, 1, index, &counters->tests,
-                &counters->early_exit_saved))
+    if (any_hit(k, simd, tree, &shadow, 1, index, counters))
         return;
     REAL w = weight * dot(normal, normalize(to_light, fast));
     for (int c = 0; c < 3; c++)
@@ -98,13 +98,14 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
     REAL weight = 1;
     int skip = -1, fast = settings->fast_inv_sqrt;
     int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
+    const octree *tree = settings->octree ? octree_of(k) : NULL;
     vec origin = from_rt(origin_d);
     vec incoming = normalize(from_rt(direction_d), fast);
     for (int bounce = 0;; bounce++) {
         ray r = prepare(origin, incoming);
         hit h;
-        if (!nearest(k, simd, bounce == 0 ? settings->eye : NULL, &r,
-                     INFINITY, skip, &h, &counters->tests)) {
+        if (!nearest(k, simd, tree, bounce == 0 ? settings->eye : NULL, &r,
+                     INFINITY, skip, &h, counters)) {
             for (int c = 0; c < 3; c++)
                 color[c] += weight * k->background[c];
             break;
@@ -113,8 +114,8 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
         vec error_bound;
         vec point = hit_point(f, &h, origin, incoming, &error_bound);
         vec normal = dot(f->normal, incoming) > 0 ? neg(f->normal) : f->normal;
-        add_direct_light(k, f, h.index, point, error_bound, normal, weight,
-                         fast, simd, color, counters);
+        add_direct_light(k, tree, f, h.index, point, error_bound, normal,
+                         weight, fast, simd, color, counters);
         if (f->k == 0) {
             counters->reflection_rays_skipped += bounce < settings->max_depth;
             break;
