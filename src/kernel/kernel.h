@@ -63,6 +63,11 @@ typedef struct rt_counters {
                                    (origin too far, too many hits) */
 } rt_counters;
 
+/* An octree lists at most this many facet references per facet (plus
+ * RT_OCTREE_REFERENCE_EXTRA) in all its leaves together. */
+#define RT_OCTREE_REFERENCE_BUDGET 16
+#define RT_OCTREE_REFERENCE_EXTRA 4096
+
 /* What an octree holds (kernel_impl.h builds it on first use). */
 typedef struct rt_octree_info {
     double build_seconds;

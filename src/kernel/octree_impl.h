@@ -40,9 +40,11 @@
 #define OCTREE_LEAF_FACETS 8
 #define OCTREE_MAX_DEPTH 16
 #define OCTREE_SPLIT_GROWTH 4
-#define OCTREE_REFERENCE_BUDGET 8
+#define OCTREE_REFERENCE_BUDGET RT_OCTREE_REFERENCE_BUDGET
 #define OCTREE_CONDITION_MAX 4096.0
 #define OCTREE_STACK (7 * OCTREE_MAX_DEPTH + 8)
+#define OCTREE_ENLARGE 0.5234375    /* half the cube's side, in box sizes */
+static const double OCTREE_OFFSET[3] = {0.0103, 0.0071, 0.0137};
 
 /*
  * The margin leaf boxes grow by, relative to the root's size: far above
@@ -179,63 +181,119 @@ static void child_box(const double lo[3], const double hi[3],
     }
 }
 
-static void build_node(builder *b, int node, const double lo[3],
-                       const double hi[3], const int32_t *list, int n,
-                       int depth)
+/* A node to build: its box and its facets (in the level's list). */
+typedef struct todo {
+    double lo[3], hi[3];
+    size_t list;            /* offset of its facets in the level's list */
+    int n;
+    int node;
+} todo;
+
+/* A level of the breadth-first construction. */
+typedef struct level {
+    todo *items;
+    size_t count, capacity;
+    int32_t *refs;
+    size_t ref_count, ref_capacity;
+} level;
+
+/*
+ * Splits node `d` (facets list[0 .. d->n)) into eight children appended to
+ * `next`, or makes it a leaf when splitting would not pay: too few facets,
+ * too deep, too many references for what it separates, or the budget
+ * spent.  Breadth first, so a spent budget leaves the deepest level
+ * unsplit, not half the scene.
+ */
+static void build_node(builder *b, const todo *d, const int32_t *list,
+                       int depth, level *next)
 {
     octree *t = b->tree;
+    int n = d->n;
     if (depth > t->depth)
         t->depth = depth;
     if (n <= OCTREE_LEAF_FACETS || depth >= OCTREE_MAX_DEPTH) {
-        make_leaf(b, node, list, n);
+        make_leaf(b, d->node, list, n);
         return;
     }
-    int32_t *lists = malloc((size_t)n * 8 * sizeof *lists);
-    if (lists == NULL) {
+    size_t need = next->ref_count + (size_t)n * 8;
+    if (!grow((void **)&next->refs, &next->ref_capacity, need,
+              sizeof *next->refs) ||
+        !grow((void **)&next->items, &next->capacity, next->count + 8,
+              sizeof *next->items)) {
         b->failed = 1;
         return;
     }
     double mid[3];
     for (int a = 0; a < 3; a++)
-        mid[a] = lo[a] + (hi[a] - lo[a]) * 0.5;
-    int counts[8];
-    size_t total = 0;
+        mid[a] = d->lo[a] + (d->hi[a] - d->lo[a]) * 0.5;
+    size_t start = next->ref_count, total = 0;
+    todo children[8];
     for (int c = 0; c < 8; c++) {
-        double clo[3], chi[3], centre[3], half[3];
-        child_box(lo, hi, mid, c, clo, chi);
+        todo *ch = &children[c];
+        double centre[3], half[3];
+        child_box(d->lo, d->hi, mid, c, ch->lo, ch->hi);
         for (int a = 0; a < 3; a++) {
-            centre[a] = clo[a] + (chi[a] - clo[a]) * 0.5;
-            half[a] = (chi[a] - clo[a]) * 0.5 + t->margin;
+            centre[a] = ch->lo[a] + (ch->hi[a] - ch->lo[a]) * 0.5;
+            half[a] = (ch->hi[a] - ch->lo[a]) * 0.5 + t->margin;
         }
-        counts[c] = 0;
+        ch->list = start + total;
+        ch->n = 0;
         for (int i = 0; i < n; i++)
             if (triangle_box_overlap(centre, half, b->v[list[i]]))
-                lists[(size_t)c * (size_t)n + (size_t)counts[c]++] = list[i];
-        total += (size_t)counts[c];
+                next->refs[start + total + (size_t)ch->n++] = list[i];
+        total += (size_t)ch->n;
     }
     if (total > (size_t)OCTREE_SPLIT_GROWTH * (size_t)n ||
         b->frontier + total - (size_t)n > b->budget) {
-        free(lists);
-        make_leaf(b, node, list, n);
+        make_leaf(b, d->node, list, n);
         return;
     }
-    b->frontier += total - (size_t)n;
-    int first = t->node_count;
-    if (!grow((void **)&t->nodes, &b->node_capacity, (size_t)first + 8,
-              sizeof *t->nodes)) {
-        free(lists);
+    if (!grow((void **)&t->nodes, &b->node_capacity,
+              (size_t)t->node_count + 8, sizeof *t->nodes)) {
         b->failed = 1;
         return;
     }
-    t->node_count += 8;
-    t->nodes[node] = (onode){first, -1};
-    for (int c = 0; c < 8 && !b->failed; c++) {
-        double clo[3], chi[3];
-        child_box(lo, hi, mid, c, clo, chi);
-        build_node(b, first + c, clo, chi, lists + (size_t)c * (size_t)n,
-                   counts[c], depth + 1);
+    b->frontier += total - (size_t)n;
+    next->ref_count += total;
+    t->nodes[d->node] = (onode){t->node_count, -1};
+    for (int c = 0; c < 8; c++) {
+        children[c].node = t->node_count + c;
+        next->items[next->count++] = children[c];
     }
-    free(lists);
+    t->node_count += 8;
+}
+
+/* Builds the tree under the root (facets list[0 .. n)), level by level. */
+static void build_levels(builder *b, int32_t *list, int n)
+{
+    level cur = {0}, next = {0};
+    cur.items = malloc(sizeof *cur.items);
+    if (cur.items == NULL) {
+        free(list);
+        b->failed = 1;
+        return;
+    }
+    cur.capacity = 1;
+    cur.count = 1;
+    cur.refs = list;
+    cur.ref_count = cur.ref_capacity = (size_t)n;
+    cur.items[0] = (todo){{b->tree->lo[0], b->tree->lo[1], b->tree->lo[2]},
+                          {b->tree->hi[0], b->tree->hi[1], b->tree->hi[2]},
+                          0, n, 0};
+    for (int depth = 0; cur.count > 0 && !b->failed; depth++) {
+        next.count = 0;
+        next.ref_count = 0;
+        for (size_t i = 0; i < cur.count && !b->failed; i++)
+            build_node(b, &cur.items[i], cur.refs + cur.items[i].list, depth,
+                       &next);
+        level swap = cur;
+        cur = next;
+        next = swap;
+    }
+    free(cur.items);
+    free(cur.refs);
+    free(next.items);
+    free(next.refs);
 }
 
 static void octree_free(octree *t)
@@ -321,15 +379,20 @@ static octree *octree_build(const KERNEL_T *k)
     for (int a = 0; listed > 0 && a < 3; a++)
         size = fmax(size, hi[a] - lo[a]);
     t->margin = size * OCTREE_MARGIN;
-    for (int a = 0; a < 3; a++) {   /* a cube, grown by the margin */
+    /* A cube a little larger than the facets' box and off its centre, so
+     * that the cells' faces do not fall on the round coordinates modelled
+     * scenes put their vertices on (a facet on a face is listed on both
+     * sides); grown by the margin. */
+    for (int a = 0; a < 3; a++) {
         double centre = listed > 0 ? lo[a] + (hi[a] - lo[a]) * 0.5 : 0;
-        t->lo[a] = centre - size * 0.5 - 2 * t->margin;
-        t->hi[a] = centre + size * 0.5 + 2 * t->margin;
+        centre += size * OCTREE_OFFSET[a];
+        t->lo[a] = centre - size * OCTREE_ENLARGE - 2 * t->margin;
+        t->hi[a] = centre + size * OCTREE_ENLARGE + 2 * t->margin;
     }
     b.frontier = (size_t)listed;
-    b.budget = (size_t)OCTREE_REFERENCE_BUDGET * (size_t)listed + 4096;
-    build_node(&b, 0, t->lo, t->hi, list, listed, 0);
-    free(list);
+    b.budget = (size_t)OCTREE_REFERENCE_BUDGET * (size_t)listed +
+               RT_OCTREE_REFERENCE_EXTRA;
+    build_levels(&b, list, listed);    /* frees list */
     free(b.v);
     if (b.failed) {
         octree_free(t);
@@ -406,6 +469,45 @@ static int slabs(const oray *q, const double lo[3], const double hi[3],
     return 1;
 }
 
+/*
+ * For each axis, the ray's t in the lower half of a node split at mid
+ * ([low0, low1]) and in the upper half ([up0, up1]), before clipping to the
+ * node's own interval: the plane's t, widened by more than its three
+ * roundings, bounds both.  A ray in the plane is in both halves; one
+ * parallel to it beside the plane is in its own half only.
+ */
+static void split_axes(const oray *q, const double mid[3], double low0[3],
+                       double low1[3], double up0[3], double up1[3])
+{
+    double slack = 2 * gamma_double(3);
+    for (int a = 0; a < 3; a++) {
+        low0[a] = up0[a] = -INFINITY;
+        low1[a] = up1[a] = INFINITY;
+        if (q->direction[a] == 0) {
+            if (q->origin[a] < mid[a])
+                up0[a] = INFINITY;          /* never in the upper half */
+            else if (q->origin[a] > mid[a])
+                low0[a] = INFINITY;
+            continue;
+        }
+        double t = (mid[a] - q->origin[a]) * q->inverse[a];
+        if (t != t)
+            continue;                       /* both halves, all along */
+        double lo = t, hi = t;
+        if (fabs(t) < INFINITY) {
+            lo -= fabs(t) * slack;
+            hi += fabs(t) * slack;
+        }
+        if (q->direction[a] > 0) {          /* lower half first */
+            low1[a] = hi;
+            up0[a] = lo;
+        } else {
+            up1[a] = hi;
+            low0[a] = lo;
+        }
+    }
+}
+
 /* A node waiting in the walk, with its box and the ray's interval in it. */
 typedef struct pending {
     double lo[3], hi[3];
@@ -442,37 +544,58 @@ static void walk_start(walk *w, const octree *t, const ray *r, double t_min,
 static int walk_next(walk *w, double cutoff)
 {
     while (w->top > 0) {
-        pending p = w->stack[--w->top];
-        if (p.t0 > cutoff) {
-            if (p.t0 < w->skipped)
-                w->skipped = p.t0;
+        const pending *p = &w->stack[--w->top];
+        if (p->t0 > cutoff) {
+            if (p->t0 < w->skipped)
+                w->skipped = p->t0;
             continue;
         }
-        const onode *n = &w->t->nodes[p.node];
+        const onode *n = &w->t->nodes[p->node];
         if (n->count >= 0)
-            return p.node;
-        double mid[3];
-        for (int a = 0; a < 3; a++)
-            mid[a] = p.lo[a] + (p.hi[a] - p.lo[a]) * 0.5;
-        pending children[8];
-        int m = 0;
+            return p->node;
+        double lo[3], hi[3], mid[3], t0 = p->t0, t1 = p->t1;
+        for (int a = 0; a < 3; a++) {
+            lo[a] = p->lo[a];
+            hi[a] = p->hi[a];
+            mid[a] = lo[a] + (hi[a] - lo[a]) * 0.5;
+        }
+        /* per axis, the interval of t in the lower half and in the upper
+         * half of the node (bit 0 and 1 of the child) */
+        double low0[3], low1[3], up0[3], up1[3];
+        split_axes(&w->q, mid, low0, low1, up0, up1);
+        double enter[8], leave[8];
+        int order[8], m = 0;
+        const onode *kids = &w->t->nodes[n->first];
         for (int c = 0; c < 8; c++) {
-            pending ch;
-            child_box(p.lo, p.hi, mid, c, ch.lo, ch.hi);
-            ch.t0 = p.t0;
-            ch.t1 = p.t1;
-            ch.node = n->first + c;
-            if (!slabs(&w->q, ch.lo, ch.hi, &ch.t0, &ch.t1))
+            if (kids[c].count == 0)
+                continue;   /* an empty leaf: nothing to visit */
+            double c0 = t0, c1 = t1;
+            for (int a = 0; a < 3; a++) {
+                int upper = (c >> a) & 1;
+                double e = upper ? up0[a] : low0[a];
+                double l = upper ? up1[a] : low1[a];
+                c0 = e > c0 ? e : c0;
+                c1 = l < c1 ? l : c1;
+            }
+            if (c0 > c1)
                 continue;
-            int j = m++;    /* sorted by entry, farthest first */
-            while (j > 0 && children[j - 1].t0 < ch.t0) {
-                children[j] = children[j - 1];
+            enter[c] = c0;
+            leave[c] = c1;
+            int j = m++;    /* farthest first, so the nearest pops first */
+            while (j > 0 && enter[order[j - 1]] < c0) {
+                order[j] = order[j - 1];
                 j--;
             }
-            children[j] = ch;
+            order[j] = c;
         }
-        for (int c = 0; c < m; c++)
-            w->stack[w->top++] = children[c];
+        for (int j = 0; j < m; j++) {
+            int c = order[j];
+            pending *ch = &w->stack[w->top++];
+            child_box(lo, hi, mid, c, ch->lo, ch->hi);
+            ch->t0 = enter[c];
+            ch->t1 = leave[c];
+            ch->node = n->first + c;
+        }
     }
     return -1;
 }
@@ -499,7 +622,7 @@ static int too_far(const octree *t, const ray *r)
  * facet listed in several leaves is tested once.  When it fills up, further
  * facets are simply not remembered (tested again if met again: the same
  * answer, only slower). */
-#define TESTED_SLOTS 256
+#define TESTED_SLOTS 128
 typedef struct tested {
     int32_t slot[TESTED_SLOTS];
     int used;
@@ -514,7 +637,7 @@ static void tested_clear(tested *s)
 /* Non-zero when i was not in the set (it is now, if there was room). */
 static int tested_add(tested *s, int32_t i)
 {
-    uint32_t h = ((uint32_t)i * 0x9e3779b1u) >> 24;
+    uint32_t h = ((uint32_t)i * 0x9e3779b1u) >> 25;
     for (;;) {
         if (s->slot[h] == i)
             return 0;
