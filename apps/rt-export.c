@@ -45,7 +45,7 @@ static const char usage[] =
     "  --kernel K        auto (default: the fastest loops this processor\n"
     "                    runs) or scalar (one facet at a time); the image\n"
     "                    is the same\n"
-    "  --accel A         auto (default: an octree from 64 facets on), none\n"
+    "  --accel A         auto (default: an octree from 300 facets on), none\n"
     "                    (every ray tests every facet) or octree; the\n"
     "                    image is the same\n"
     "  --check           validate the scene and print what it holds; do not\n"

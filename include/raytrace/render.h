@@ -4,8 +4,9 @@
  * Whitted ray tracing as SPEC.md section 3 defines it: one primary ray through
  * each pixel centre, the nearest facet (by brute force or through an octree,
  * with the same result), a shadow ray to the point light, mirror reflections
- * up to a depth, real-valued colours rounded once per pixel.  Rendering only reads the scene, so several renders of one
- * scene may run at once; each render writes only the rows it was asked for.
+ * up to a depth, real-valued colours rounded once per pixel.  Rendering only
+ * reads the scene, so several renders of one scene may run at once; each
+ * render writes only the rows it was asked for.
  *
  * A render can report progress and be cancelled: `on_rows` is called each
  * time a row is finished, and returning 0 from it stops the render as soon as
@@ -118,7 +119,7 @@ typedef enum rt_accel {
 
 /* Below this many live facets brute force is as fast as the octree on the
  * machine of docs/performance.md (measured there). */
-#define RT_ACCEL_AUTO_FACETS 64
+#define RT_ACCEL_AUTO_FACETS 300
 
 /*
  * A cancellation flag that renders poll before every pixel.  Any thread may

@@ -618,36 +618,28 @@ static int too_far(const octree *t, const ray *r)
 
 /* --- the facets a ray has tested ------------------------------------- */
 
-/* A small open-addressing set of facet indices, per query, on the stack: a
- * facet listed in several leaves is tested once.  When it fills up, further
- * facets are simply not remembered (tested again if met again: the same
- * answer, only slower). */
-#define TESTED_SLOTS 128
+/* The facets a query has tested, on the stack: a facet listed in several
+ * leaves is tested once.  A short list, searched linearly (a ray tests a
+ * handful of facets); once it is full, further facets are not remembered
+ * (tested again if met again: the same answer, only slower). */
+#define TESTED_MAX 64
 typedef struct tested {
-    int32_t slot[TESTED_SLOTS];
-    int used;
+    int32_t facet[TESTED_MAX];
+    int count;
 } tested;
 
 static void tested_clear(tested *s)
 {
-    memset(s->slot, 0xff, sizeof s->slot);
-    s->used = 0;
+    s->count = 0;
 }
 
-/* Non-zero when i was not in the set (it is now, if there was room). */
+/* Non-zero when i was not in the list (it is now, if there was room). */
 static int tested_add(tested *s, int32_t i)
 {
-    uint32_t h = ((uint32_t)i * 0x9e3779b1u) >> 25;
-    for (;;) {
-        if (s->slot[h] == i)
+    for (int j = 0; j < s->count; j++)
+        if (s->facet[j] == i)
             return 0;
-        if (s->slot[h] < 0)
-            break;
-        h = (h + 1) & (TESTED_SLOTS - 1);
-    }
-    if (s->used < TESTED_SLOTS * 3 / 4) {
-        s->slot[h] = i;
-        s->used++;
-    }
+    if (s->count < TESTED_MAX)
+        s->facet[s->count++] = i;
     return 1;
 }

@@ -7,15 +7,15 @@
  * lane it computes the three edge functions u, v, w with exactly the
  * operations of intersect() in intersect_impl.h (same order, no FMA: the
  * build uses -ffp-contract=off and these functions are not compiled for
- * FMA), so each value is bit-for-bit the scalar one.  A lane where some edge function
- * is strictly negative and another strictly positive cannot be hit: the
- * scalar test rejects it too (a non-zero edge function is never recomputed,
- * and a NaN one always ends in a rejection).  Every other lane - the ray's
- * line passes through the facet, or an edge function is 0 or NaN - goes to
- * the scalar intersect() itself, in index order.  So the fast loops give the
- * same hits, the same t and the same ties as the scalar loops, including the
- * exact-sign fallback, while the scalar test runs only for the few facets a
- * ray's line actually meets.
+ * FMA), so each value is bit-for-bit the scalar one.  A lane where some edge
+ * function is strictly negative and another strictly positive cannot be hit:
+ * the scalar test rejects it too (a non-zero edge function is never
+ * recomputed, and a NaN one always ends in a rejection).  Every other lane -
+ * the ray's line passes through the facet, or an edge function is 0 or NaN -
+ * goes to the scalar intersect() itself, in index order.  So the fast loops
+ * give the same hits, the same t and the same ties as the scalar loops,
+ * including the exact-sign fallback, while the scalar test runs only for the
+ * few facets a ray's line actually meets.
  *
  * The AVX2 code is compiled only for x86-64 with GCC or Clang, as functions
  * with __attribute__((target("avx2"))), and chosen at run time when the
