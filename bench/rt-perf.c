@@ -2,10 +2,13 @@
  * rt-perf - the speed benchmark of docs/performance.md (issue 7).
  *
  * Renders a fixed list of scenes - the project's cubes and mirror scenes at
- * 400x400 and 1920x1080, the SPD scenes, and generated meshes (a tessellated
- * sphere and a random soup of about 1,000, 10,000 and 100,000 facets) - with
- * six renderer settings in the same run: the plain scalar loops and the fast
- * kernel, in double and in float, the fast kernel on one thread and on all.
+ * 400x400 and 1920x1080, the SPD scenes at 400x400, and generated meshes (a
+ * tessellated sphere and a random soup of about 1,000 to 1,000,000 facets) -
+ * with nine renderer settings in the same run: brute force with the plain
+ * scalar loops and with the fast kernel, in double and in float, the fast
+ * kernel on one thread and on all; and the octree (issue 12) on one thread
+ * and on all.  Entries marked octree-only (the biggest meshes at 400x400,
+ * where brute force would take hours) run the octree settings alone.
  * Each is timed as the median of N renders (default 5, the settings taking
  * turns so that a change of load affects them alike); the program prints
  * Markdown tables of Mrays/s, G ray-facet tests/s and the ratios, and checks
@@ -32,6 +35,7 @@ typedef struct entry {
     int shared;             /* FROM_FILE: in the SPD directory */
     int facets;             /* generated scenes */
     int width, height;
+    int octree_only;        /* too big for brute force at this size */
 } entry;
 
 /* Image sizes keep the scalar renders of the big scenes to seconds. */
@@ -44,35 +48,48 @@ static const entry entries[] = {
     {"tetra-s4", FROM_FILE, "tetra-s4.scn", 1, 0, 400, 400},
     {"teapot-s2", FROM_FILE, "teapot-s2.scn", 1, 0, 400, 400},
     {"mount-s2", FROM_FILE, "mount-s2.scn", 1, 0, 400, 400},
-    {"tetra-s6", FROM_FILE, "tetra-s6.scn", 1, 0, 200, 200},
-    {"gears-s2", FROM_FILE, "gears-s2.scn", 1, 0, 200, 200},
-    {"balls-s2", FROM_FILE, "balls-s2.scn", 1, 0, 200, 200},
+    {"tetra-s6", FROM_FILE, "tetra-s6.scn", 1, 0, 400, 400},
+    {"gears-s2", FROM_FILE, "gears-s2.scn", 1, 0, 400, 400},
+    {"balls-s2", FROM_FILE, "balls-s2.scn", 1, 0, 400, 400},
     {"sphere-1k", SPHERE, NULL, 0, 1000, 256, 256},
     {"sphere-10k", SPHERE, NULL, 0, 10000, 128, 128},
     {"sphere-100k", SPHERE, NULL, 0, 100000, 64, 64},
+    {"sphere-1M", SPHERE, NULL, 0, 1000000, 32, 32},
     {"soup-1k", SOUP, NULL, 0, 1000, 256, 256},
     {"soup-10k", SOUP, NULL, 0, 10000, 128, 128},
     {"soup-100k", SOUP, NULL, 0, 100000, 64, 64},
+    {"soup-1M", SOUP, NULL, 0, 1000000, 32, 32},
+    {"sphere-100k", SPHERE, NULL, 0, 100000, 400, 400, 1},
+    {"sphere-1M", SPHERE, NULL, 0, 1000000, 400, 400, 1},
+    {"soup-1M", SOUP, NULL, 0, 1000000, 400, 400, 1},
 };
 #define ENTRY_COUNT ((int)(sizeof entries / sizeof entries[0]))
 
-/* The six settings, in the order of the tables. */
+/* The settings, in the order of the tables; the octree's last. */
 typedef struct setting {
     const char *name;
     rt_precision precision;
     rt_kernel_choice kernel;
     int threads;            /* 0: all */
+    rt_accel accel;
 } setting;
 
 static const setting settings[] = {
-    {"scalar double", RT_PRECISION_DOUBLE, RT_KERNEL_SCALAR, 1},
-    {"fast double 1t", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 1},
-    {"fast double all", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 0},
-    {"scalar float", RT_PRECISION_FLOAT, RT_KERNEL_SCALAR, 1},
-    {"fast float 1t", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 1},
-    {"fast float all", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 0},
+    {"scalar double", RT_PRECISION_DOUBLE, RT_KERNEL_SCALAR, 1, RT_ACCEL_NONE},
+    {"fast double 1t", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 1, RT_ACCEL_NONE},
+    {"fast double all", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 0, RT_ACCEL_NONE},
+    {"scalar float", RT_PRECISION_FLOAT, RT_KERNEL_SCALAR, 1, RT_ACCEL_NONE},
+    {"fast float 1t", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 1, RT_ACCEL_NONE},
+    {"fast float all", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 0, RT_ACCEL_NONE},
+    {"octree double 1t", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 1,
+     RT_ACCEL_OCTREE},
+    {"octree double all", RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 0,
+     RT_ACCEL_OCTREE},
+    {"octree float all", RT_PRECISION_FLOAT, RT_KERNEL_AUTO, 0,
+     RT_ACCEL_OCTREE},
 };
-#define SETTING_COUNT 6
+#define SETTING_COUNT 9
+#define FIRST_OCTREE 6
 
 typedef struct result {
     double times[MAX_RUNS];
@@ -124,6 +141,7 @@ static int measure_once(const rt_scene *scene, const setting *s,
     options.precision = s->precision;
     options.kernel = s->kernel;
     options.threads = s->threads;
+    options.accel = s->accel;
     options.stats = &r->stats;
     double start = now();
     rt_status status = rt_render(scene, &options, image);
@@ -202,29 +220,35 @@ int main(int argc, char **argv)
         rt_scene_get_info(scene, &info);
         facets[e] = info.live_facet_count;
         rt_image images[SETTING_COUNT] = {{0}};
-        int ok = 1;
-        for (int s = 0; s < SETTING_COUNT && ok; s++)
+        int ok = 1, first = en->octree_only ? FIRST_OCTREE : 0;
+        for (int s = first; s < SETTING_COUNT && ok; s++)
             ok = rt_image_create(&images[s], en->width, en->height) == RT_OK;
         /* round robin, so that a change of load on the machine hits every
          * setting alike */
         for (int run = 0; run < runs && ok; run++) {
             fprintf(stderr, "\r%-12s %4dx%-4d run %d of %d ", en->name,
                     en->width, en->height, run + 1, runs);
-            for (int s = 0; s < SETTING_COUNT && ok; s++)
+            for (int s = first; s < SETTING_COUNT && ok; s++)
                 ok = measure_once(scene, &settings[s], &images[s],
                                   &results[e][s], run);
         }
-        for (int s = 0; s < SETTING_COUNT && ok; s++) {
+        for (int s = first; s < SETTING_COUNT && ok; s++) {
             result *r = &results[e][s];
             qsort(r->times, (size_t)runs, sizeof r->times[0], compare_double);
             r->seconds = r->times[runs / 2];
         }
         if (ok) {
             done[e] = 1;
-            identical[e] = same_pixels(&images[0], &images[1]) &&
-                           same_pixels(&images[0], &images[2]) &&
-                           same_pixels(&images[3], &images[4]) &&
-                           same_pixels(&images[3], &images[5]);
+            identical[e] =
+                en->octree_only
+                    ? same_pixels(&images[6], &images[7])
+                    : same_pixels(&images[0], &images[1]) &&
+                          same_pixels(&images[0], &images[2]) &&
+                          same_pixels(&images[3], &images[4]) &&
+                          same_pixels(&images[3], &images[5]) &&
+                          same_pixels(&images[0], &images[6]) &&
+                          same_pixels(&images[0], &images[7]) &&
+                          same_pixels(&images[3], &images[8]);
             failures += !identical[e];
         } else {
             fprintf(stderr, "\nrt-perf: %s: rendering failed\n", en->name);
@@ -252,8 +276,11 @@ int main(int argc, char **argv)
                entries[e].width, entries[e].height);
         for (int s = 0; s < SETTING_COUNT; s++) {
             const result *r = &results[e][s];
-            printf(" %.2f / %.3f |", rays(&r->stats) / r->seconds * 1e-6,
-                   r->stats.ray_facet_tests / r->seconds * 1e-9);
+            if (entries[e].octree_only && s < FIRST_OCTREE)
+                printf(" - |");
+            else
+                printf(" %.2f / %.3f |", rays(&r->stats) / r->seconds * 1e-6,
+                       r->stats.ray_facet_tests / r->seconds * 1e-9);
         }
         printf("\n");
     }
@@ -265,7 +292,7 @@ int main(int argc, char **argv)
            "(1 thread) | all/1 thread double | all/1 thread float | "
            "same image |\n|---|--:|--:|--:|--:|--:|--:|:-:|\n");
     for (int e = 0; e < ENTRY_COUNT; e++) {
-        if (!done[e])
+        if (!done[e] || entries[e].octree_only)
             continue;
         const result *r = results[e];
         printf("| %s | %dx%d | %.1f | %.1f | %.1f | %.2f | %.2f | %s |\n",
@@ -275,6 +302,41 @@ int main(int argc, char **argv)
                r[4].seconds / r[5].seconds, identical[e] ? "yes" : "NO");
     }
 
+    printf("\nThe octree (issue 12): render times in seconds (median), its "
+           "speed-up over the fast brute-force kernel, and its own numbers "
+           "(double).  Per query: leaves visited and facets tested, against "
+           "the live facets brute force tests.\n\n"
+           "| scene | facets | image | brute double 1t | octree double 1t | "
+           "speed-up 1t | brute double all | octree double all | speed-up "
+           "all | octree float all | build | references/facet | bytes/facet "
+           "| leaves/query | tests/query | same image |\n"
+           "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|"
+           "\n");
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        if (!done[e])
+            continue;
+        const result *r = results[e];
+        const rt_render_stats *st = &r[7].stats;
+        double queries = st->accel_queries ? (double)st->accel_queries : 1;
+        int brute = !entries[e].octree_only;
+        char b1[32] = "-", ba[32] = "-", x1[32] = "-", xa[32] = "-";
+        if (brute) {
+            snprintf(b1, sizeof b1, "%.3f", r[1].seconds);
+            snprintf(ba, sizeof ba, "%.3f", r[2].seconds);
+            snprintf(x1, sizeof x1, "%.1f", r[1].seconds / r[6].seconds);
+            snprintf(xa, sizeof xa, "%.1f", r[2].seconds / r[7].seconds);
+        }
+        printf("| %s | %d | %dx%d | %s | %.3f | %s | %s | %.3f | %s | %.3f | "
+               "%.3f s | %.2f | %.0f | %.2f | %.1f | %s |\n",
+               entries[e].name, facets[e], entries[e].width,
+               entries[e].height, b1, r[6].seconds, x1, ba, r[7].seconds, xa,
+               r[8].seconds, st->accel_build_seconds,
+               facets[e] ? (double)st->accel_references / facets[e] : 0.0,
+               facets[e] ? (double)st->accel_bytes / facets[e] : 0.0,
+               st->accel_leaves_visited / queries,
+               st->accel_facet_tests / queries, identical[e] ? "yes" : "NO");
+    }
+
     printf("\nWork per render (double, fast kernel; the scalar loops cast the "
            "same rays).  Skipped: rays the scene analysis left out (no "
            "shadow ray where N.S <= 0 or k = 1, no reflection from k = 0).\n\n"
@@ -282,7 +344,7 @@ int main(int argc, char **argv)
            "reflection rays | reflection skipped | tests | tests skipped |\n"
            "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     for (int e = 0; e < ENTRY_COUNT; e++) {
-        if (!done[e])
+        if (!done[e] || entries[e].octree_only)
             continue;
         const rt_render_stats *st = &results[e][1].stats;
         printf("| %s | %dx%d | %llu | %llu | %llu | %llu | %llu | %llu | "
