@@ -10,6 +10,9 @@
  */
 #include <errno.h>
 #include <limits.h>
+#include <pthread.h>
+#include <signal.h>
+#include <time.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,8 +48,9 @@ static const char usage_text[] =
     "  --version     show the version and exit\n"
     "\n"
     "Keys:\n"
-    "  S             save the image as PPM next to the scene (SCENE.ppm);\n"
-    "                rows not rendered yet are black; prints the path\n"
+    "  S             save the image next to the scene, as SCENE.png (or\n"
+    "                SCENE.ppm in a build without PNG support); rows not\n"
+    "                rendered yet are black; prints the path\n"
     "  R             render again\n"
     "  + / -         one more / one less reflection, and render again\n"
     "  Q, Esc        quit (a render in progress is cancelled)\n"
@@ -54,7 +58,9 @@ static const char usage_text[] =
     "Drop a .scn file on the window to load and render it.  A scene with\n"
     "errors is reported as FILE:LINE:COLUMN: MESSAGE on stderr and in the\n"
     "title; the picture shown before stays.  The window can be moved,\n"
-    "resized or closed at any time.\n";
+    "resized or closed at any time.  SIGINT, SIGTERM or SIGHUP cancel the\n"
+    "render (and a save under way, leaving the file as it was) and end\n"
+    "rt-view with 128 + the signal's number.\n";
 
 typedef struct viewer {
     double scale;
@@ -68,6 +74,7 @@ typedef struct viewer {
     char title[RT_ERROR_MESSAGE_SIZE + 256];
     int shown;                  /* the window is on screen */
     int quit;
+    int quit_signal;        /* the termination signal that ended it, or 0 */
     int redraw;
 } viewer;
 
@@ -195,13 +202,41 @@ static void open_scene(viewer *v, const char *path)
     v->redraw = 1;
 }
 
+/* SIGINT, SIGTERM and SIGHUP are blocked in every thread (main() blocks
+ * them before any thread starts) and taken here, in the event loop, so that
+ * a save under way first removes its temporary file (rt_image_save). */
+static void termination_signals(sigset_t *set)
+{
+    sigemptyset(set);
+    sigaddset(set, SIGINT);
+    sigaddset(set, SIGTERM);
+    sigaddset(set, SIGHUP);
+}
+
+/* Takes a pending termination signal, if any, and asks the loop to quit. */
+static void take_termination_signal(viewer *v)
+{
+    sigset_t set;
+    termination_signals(&set);
+    struct timespec now = {0, 0};
+    int signal_number = sigtimedwait(&set, NULL, &now);
+    if (signal_number > 0) {
+        v->quit = 1;
+        v->quit_signal = signal_number;
+    }
+}
+
 /* Saves the finished rows (the others black) next to the scene. */
 static void save_image(viewer *v)
 {
     if (v->session == NULL)
         return;
     char path[4096];
-    if (!view_scene_image_path(v->scene_path, path, sizeof path)) {
+    rt_image_format format =
+        rt_image_format_supported(RT_IMAGE_PNG) ? RT_IMAGE_PNG : RT_IMAGE_P6;
+    if (!view_scene_image_path(v->scene_path,
+                               format == RT_IMAGE_PNG ? ".png" : ".ppm", path,
+                               sizeof path)) {
         show_message(v, "the image's path is too long");
         return;
     }
@@ -220,7 +255,10 @@ static void save_image(viewer *v)
         }
     }
     rt_error error;
-    if (rt_ppm_save(path, &copy, RT_PPM_P6, &error) != RT_OK) {
+    rt_status status = rt_image_save(path, &copy, format, &error);
+    if (status == RT_ERR_INTERRUPTED) {
+        take_termination_signal(v);     /* the file is as it was */
+    } else if (status != RT_OK) {
         show_message(v, error.message);
     } else if (rows < image->height) {
         printf("%s (partial: %d of %d rows)\n", path, rows, image->height);
@@ -321,6 +359,7 @@ static void run(viewer *v)
             while (!v->quit && SDL_PollEvent(&event))
                 handle_event(v, &event);
         }
+        take_termination_signal(v);
         if (v->quit)
             break;
         now = SDL_GetTicks64();
@@ -424,6 +463,12 @@ int main(int argc, char **argv)
     if (code >= 0)
         return code;
 
+    /* Before any thread exists, so that every thread inherits the mask. */
+    sigset_t signals;
+    termination_signals(&signals);
+    pthread_sigmask(SIG_BLOCK, &signals, NULL);
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+
     SDL_SetMainReady();
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         fprintf(stderr, PROGRAM ": cannot start SDL: %s\n", SDL_GetError());
@@ -456,5 +501,5 @@ int main(int argc, char **argv)
     view_window_destroy(v.window);
     free(v.scene_path);
     SDL_Quit();
-    return 0;
+    return v.quit_signal ? 128 + v.quit_signal : 0;
 }

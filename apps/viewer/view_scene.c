@@ -132,7 +132,8 @@ rt_status view_scene_load(const char *path, double scale, rt_scene **scene,
     return status;
 }
 
-int view_scene_image_path(const char *scene_path, char *buffer, size_t size)
+int view_scene_image_path(const char *scene_path, const char *extension,
+                          char *buffer, size_t size)
 {
     const char *slash = strrchr(scene_path, '/');
     const char *base = slash ? slash + 1 : scene_path;
@@ -140,6 +141,7 @@ int view_scene_image_path(const char *scene_path, char *buffer, size_t size)
     size_t keep = strlen(scene_path);
     if (dot && dot != base && strcmp(dot, ".scn") == 0)
         keep = (size_t)(dot - scene_path);
-    int written = snprintf(buffer, size, "%.*s.ppm", (int)keep, scene_path);
+    int written = snprintf(buffer, size, "%.*s%s", (int)keep, scene_path,
+                           extension);
     return written >= 0 && (size_t)written < size;
 }
