@@ -426,7 +426,7 @@ int main(int argc, char **argv)
     const char *path = a.output ? a.output : output;
     rt_image image = {0};
     code = EXIT_BAD_INPUT;
-    if (path == NULL || rt_image_create(&image, info.width, info.height)) {
+    if (path == NULL) {
         fprintf(stderr, "rt-export: out of memory\n");
         goto done;
     }
@@ -438,6 +438,10 @@ int main(int argc, char **argv)
     /* A bad output fails now, not after the render. */
     if (!to_stdout && rt_image_save_check(path, &error) != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
+        goto done;
+    }
+    if (rt_image_create(&image, info.width, info.height) != RT_OK) {
+        fprintf(stderr, "rt-export: out of memory\n");
         goto done;
     }
 

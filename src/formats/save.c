@@ -230,7 +230,9 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
         }
         if (lstat(current, &d->st) != 0) {
             int saved = errno;
-            if (saved != ENOENT) {
+            /* A missing or non-folder parent is told by the temporary
+             * file's creation, which names the folder. */
+            if (saved != ENOENT && saved != ENOTDIR) {
                 free(current);
                 return io_error(error, path, saved, "cannot write the image");
             }
@@ -576,6 +578,11 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
         if (d.kind == KIND_LINKED &&
             (fd = open(d.path, O_WRONLY | O_CLOEXEC | O_NOCTTY)) < 0)
             status = io_error(error, path, errno, "cannot open for writing");
+        /* The probe exists only between two calls: no signal may end the
+         * program in between, leaving it behind. */
+        sigset_t signals, previous;
+        termination_signals(&signals);
+        pthread_sigmask(SIG_BLOCK, &signals, &previous);
         char *temp = NULL;
         int probe = status == RT_OK ? create_temporary(d.path, &temp) : 0;
         if (probe < 0) {
@@ -590,6 +597,7 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
             unlink(temp);
             free(temp);
         }
+        pthread_sigmask(SIG_SETMASK, &previous, NULL);
     }
     if (fd >= 0)
         close(fd);
