@@ -79,6 +79,19 @@ static void remove_tree(char *dir)
     free(dir);
 }
 
+/* Writes `text` to dir/name; returns the path in a static buffer. */
+static const char *write_text(const char *dir, const char *name,
+                              const char *text)
+{
+    static char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *file = fopen(path, "w");
+    ck_assert_ptr_nonnull(file);
+    ck_assert_int_ge(fputs(text, file), 0);
+    ck_assert_int_eq(fclose(file), 0);
+    return path;
+}
+
 /* Names in `dir` (no dot files except .rt-save-*), sorted, space-separated. */
 static void list_dir(const char *dir, char *out, size_t size)
 {
@@ -261,12 +274,7 @@ END_TEST
 START_TEST(errors_in_a_scene_from_standard_input_name_stdin)
 {
     char *dir = fresh_dir();
-    char path[4096];
-    snprintf(path, sizeof path, "%s/bad.scn", dir);
-    FILE *file = fopen(path, "w");
-    ck_assert_ptr_nonnull(file);
-    fputs("1,2\n", file);
-    fclose(file);
+    const char *path = write_text(dir, "bad.scn", "1,2\n");
     const char *args[] = {"-", "-o", "out.ppm", NULL};
     run r = export_in(dir, args, path);
     ck_assert_int_eq(r.code, 1);
@@ -411,12 +419,8 @@ static const char endless_scene[] =
 START_TEST(bad_output_fails_before_rendering)
 {
     char *dir = fresh_dir();
+    write_text(dir, "endless.scn", endless_scene);
     char path[4096];
-    snprintf(path, sizeof path, "%s/endless.scn", dir);
-    FILE *file = fopen(path, "w");
-    ck_assert_ptr_nonnull(file);
-    fputs(endless_scene, file);
-    fclose(file);
     snprintf(path, sizeof path, "%s/folder.ppm", dir);
     ck_assert_int_eq(mkdir(path, 0755), 0);
     static const struct {
@@ -507,20 +511,13 @@ static int saving(const char *dir)
 static void interrupt_the_save(int signal_number)
 {
     char *dir = fresh_dir();
-    char path[4096];
-    snprintf(path, sizeof path, "%s/big.scn", dir);
-    FILE *file = fopen(path, "w");
-    ck_assert_ptr_nonnull(file);
-    fputs("0,0,-5\n0,0,0, 1,0,0, 3000,3000\n3\n-1,-1,0\n1,-1,0\n0,1,0\n"
-          "1\n1,2,3, 0.5, 200,100,50\n0,0,0\n0,0,-5, 255,255,255\n",
-          file);
-    fclose(file);
-    snprintf(path, sizeof path, "%s/out.ppm", dir);
+    write_text(dir, "big.scn",
+               "0,0,-5\n0,0,0, 1,0,0, 3000,3000\n3\n-1,-1,0\n1,-1,0\n"
+               "0,1,0\n1\n1,2,3, 0.5, 200,100,50\n0,0,0\n"
+               "0,0,-5, 255,255,255\n");
     static const char previous[] = "P3\n1 1\n255\n1 2 3\n";
-    file = fopen(path, "w");
-    ck_assert_ptr_nonnull(file);
-    fputs(previous, file);
-    fclose(file);
+    char path[4096];
+    snprintf(path, sizeof path, "%s", write_text(dir, "out.ppm", previous));
 
     const char *args[] = {"big.scn", "-o", "out.ppm", "--format", "p3", "-q",
                           NULL};
