@@ -28,7 +28,8 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
-    "                 [--kernel auto|scalar] [--check] [--stats] [--quiet]\n"
+    "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
+    "                 [--check] [--stats] [--quiet]\n"
     "\n"
     "Renders SCENE.scn (a scene of triangles lit by one point light) to an\n"
     "image and prints the path it wrote.  SCENE.scn `-' reads the scene from\n"
@@ -55,6 +56,9 @@ static const char usage[] =
     "  --kernel K        auto (default: the fastest loops this processor\n"
     "                    runs) or scalar (one facet at a time); the image\n"
     "                    is the same\n"
+    "  --accel A         auto (default: an octree from 64 facets on), none\n"
+    "                    (every ray tests every facet) or octree; the\n"
+    "                    image is the same\n"
     "  --check           validate the scene and print what it holds; do not\n"
     "                    render\n"
     "  --stats           print the work done (rays, tests, time) on stderr\n"
@@ -77,6 +81,7 @@ typedef struct arguments {
     int samples;
     rt_sampling sampling;
     rt_kernel_choice kernel;
+    rt_accel accel;
     int check;
     int stats;
     int quiet;
@@ -126,7 +131,8 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--precision") ||
                           !strcmp(arg, "--samples") ||
                           !strcmp(arg, "--sampling") ||
-                          !strcmp(arg, "--kernel");
+                          !strcmp(arg, "--kernel") ||
+                          !strcmp(arg, "--accel");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -192,6 +198,16 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             else
                 return usage_error("expected auto or scalar after --kernel, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--accel")) {
+            if (!strcmp(value, "auto"))
+                a->accel = RT_ACCEL_AUTO;
+            else if (!strcmp(value, "none"))
+                a->accel = RT_ACCEL_NONE;
+            else if (!strcmp(value, "octree"))
+                a->accel = RT_ACCEL_OCTREE;
+            else
+                return usage_error("expected auto, none or octree after "
+                                   "--accel, found '%s'", value);
         } else if (!strcmp(arg, "--check")) {
             a->check = 1;
         } else if (!strcmp(arg, "--stats")) {
@@ -360,6 +376,24 @@ static void print_stats(const rt_render_stats *s, double load_seconds,
             a->kernel == RT_KERNEL_SCALAR ? "scalar" : "fast",
             a->precision == RT_PRECISION_FLOAT ? "float" : "double",
             write_seconds);
+    if (!s->accel_used)
+        return;
+    uint64_t queries = s->accel_queries ? s->accel_queries : 1;
+    fprintf(stderr,
+            "octree: built in %.3f s; %llu leaves, depth %d, %.2f references "
+            "per facet (+%llu slivers in every ray's list), %.1f MB\n"
+            "octree per query: %.2f leaves visited, %.2f facets tested "
+            "(brute force: %llu); %llu queries left to brute force\n",
+            s->accel_build_seconds, (unsigned long long)s->accel_leaves,
+            s->accel_depth,
+            s->accel_facets > 0
+                ? (double)s->accel_references / (double)s->accel_facets
+                : 0.0,
+            (unsigned long long)s->accel_always, s->accel_bytes / 1e6,
+            (double)s->accel_leaves_visited / queries,
+            (double)s->accel_facet_tests / queries,
+            (unsigned long long)s->accel_facets,
+            (unsigned long long)s->accel_fallbacks);
 }
 
 static int same_file(const char *a, const char *b)
@@ -457,6 +491,7 @@ int main(int argc, char **argv)
     options.samples = a.samples;
     options.sampling = a.sampling;
     options.kernel = a.kernel;
+    options.accel = a.accel;
     options.stats = &stats;
     if (!a.quiet && isatty(STDERR_FILENO)) {
         options.on_row = on_row;

@@ -18,7 +18,7 @@
 #include <unistd.h>
 
 #include "raytrace/render.h"
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -42,6 +42,7 @@ typedef struct job {
     pthread_mutex_t callback_lock;
     pthread_mutex_t stats_lock;
     rt_counters totals;
+    rt_octree_info octree;  /* when settings.octree */
     uint64_t camera_rays;
     uint64_t pixels;
 } job;
@@ -101,6 +102,7 @@ void rt_render_options_init(rt_render_options *options)
     options->precision = RT_PRECISION_DOUBLE;
     options->samples = 1;
     options->sampling = RT_SAMPLING_REGULAR;
+    options->accel = RT_ACCEL_AUTO;
 }
 
 unsigned char rt_channel_to_byte(double value)
@@ -115,7 +117,7 @@ unsigned char rt_channel_to_byte(double value)
 rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
 {
     rt_counters counters = {0};
-    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL};
+    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL, 0};
     if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
@@ -237,6 +239,10 @@ static void *worker(void *argument)
     j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
     j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
     j->totals.early_exit_saved += counters.early_exit_saved;
+    j->totals.accel_queries += counters.accel_queries;
+    j->totals.accel_leaves += counters.accel_leaves;
+    j->totals.accel_tests += counters.accel_tests;
+    j->totals.accel_fallbacks += counters.accel_fallbacks;
     j->camera_rays += rays;
     j->pixels += pixels;
     pthread_mutex_unlock(&j->stats_lock);
@@ -282,6 +288,38 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
                     stats->reflection_rays;
     stats->ray_facet_tests_skipped =
         skipped_rays * (live + dead) + cast * dead + j->totals.early_exit_saved;
+    if (j->settings.octree) {
+        stats->accel_used = 1;
+        stats->accel_build_seconds = j->octree.build_seconds;
+        stats->accel_nodes = j->octree.nodes;
+        stats->accel_leaves = j->octree.leaves;
+        stats->accel_depth = j->octree.depth;
+        stats->accel_references = j->octree.references;
+        stats->accel_always = j->octree.always;
+        stats->accel_bytes = j->octree.bytes;
+        stats->accel_queries = j->totals.accel_queries;
+        stats->accel_leaves_visited = j->totals.accel_leaves;
+        stats->accel_facet_tests = j->totals.accel_tests;
+        stats->accel_fallbacks = j->totals.accel_fallbacks;
+        stats->accel_facets = (uint64_t)j->scene->live_count;
+    }
+}
+
+/* Builds (once per scene and precision) the octree of the render's kernel
+ * when the render asks for one; 0 when out of memory. */
+static int prepare_octree(job *j, const rt_scene *scene)
+{
+    rt_accel accel = j->options->accel;
+    if (accel == RT_ACCEL_NONE ||
+        (accel == RT_ACCEL_AUTO && scene->live_count < RT_ACCEL_AUTO_FACETS))
+        return 1;
+    int built = j->kernel.d != NULL
+                    ? rt__kernel_d_octree_prepare(j->kernel.d, &j->octree)
+                    : rt__kernel_f_octree_prepare(j->kernel.f, &j->octree);
+    if (!built)
+        return 0;
+    j->settings.octree = 1;
+    return 1;
 }
 
 /* Non-zero when every coordinate of the scene is within float's range (a
@@ -317,7 +355,9 @@ rt_status rt_render_rows(const rt_scene *scene,
         (options->precision != RT_PRECISION_DOUBLE &&
          options->precision != RT_PRECISION_FLOAT) ||
         (options->kernel != RT_KERNEL_AUTO &&
-         options->kernel != RT_KERNEL_SCALAR))
+         options->kernel != RT_KERNEL_SCALAR) ||
+        (options->accel != RT_ACCEL_AUTO && options->accel != RT_ACCEL_NONE &&
+         options->accel != RT_ACCEL_OCTREE))
         return RT_ERR_ARGUMENT;
     int grid = 1;
     while (grid * grid < options->samples && grid < 32)
@@ -329,37 +369,33 @@ rt_status rt_render_rows(const rt_scene *scene,
     job j = {.scene = scene, .options = options, .image = image,
              .row_end = row_end, .grid = grid,
              .settings = {options->max_depth, options->fast_inv_sqrt != 0,
-                          options->kernel, NULL}};
-    /* A float render builds its own kernel: a double-only user never pays
-     * for float data, and the scene stays immutable. */
-    rt_kernel_f *float_kernel = NULL;
+                          options->kernel, NULL, 0}};
+    /* The float kernel is built by the first float render and kept with
+     * the scene: a double-only user never pays for float data. */
     if (options->precision == RT_PRECISION_FLOAT) {
         if (!fits_float(scene))
             return RT_ERR_RANGE;
-        rt_kernel_source source;
-        rt__scene_kernel_source(scene, &source);
-        float_kernel = rt__kernel_f_create(&source);
-        if (float_kernel == NULL)
+        j.kernel.f = rt__scene_kernel_f(scene);
+        if (j.kernel.f == NULL)
             return RT_ERR_NOMEM;
-        j.kernel.f = float_kernel;
     } else {
         j.kernel.d = scene->kernel;
     }
+    if (!prepare_octree(&j, scene))
+        return RT_ERR_NOMEM;
     /* The camera rays' origin, subtracted from every vertex once for the
-     * whole render (only the fast loops read it). */
+     * whole render (only the fast brute-force loops read it). */
     rt_kernel_eye_d *eye_d = NULL;
     rt_kernel_eye_f *eye_f = NULL;
-    if (options->kernel != RT_KERNEL_SCALAR) {
+    if (options->kernel != RT_KERNEL_SCALAR && !j.settings.octree) {
         if (j.kernel.d != NULL)
             j.settings.eye = eye_d = rt__kernel_d_eye_create(
                 j.kernel.d, scene->camera.observer);
         else
             j.settings.eye = eye_f = rt__kernel_f_eye_create(
                 j.kernel.f, scene->camera.observer);
-        if (j.settings.eye == NULL) {
-            rt__kernel_f_free(float_kernel);
+        if (j.settings.eye == NULL)
             return RT_ERR_NOMEM;
-        }
     }
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
@@ -387,7 +423,6 @@ rt_status rt_render_rows(const rt_scene *scene,
     pthread_mutex_destroy(&j.stats_lock);
     rt__kernel_d_eye_free(eye_d);
     rt__kernel_f_eye_free(eye_f);
-    rt__kernel_f_free(float_kernel);
 
     if (options->stats != NULL)
         fill_stats(&j, now_seconds() - start, options->stats);

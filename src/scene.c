@@ -175,11 +175,13 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt_scene *s = calloc(1, sizeof *s);
     if (s == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
+    atomic_init(&s->kernel_f, NULL);
+    pthread_mutex_init(&s->kernel_lock, NULL);
     const char *reason = rt__camera_make(d->observer, d->screen_center,
                                          d->screen_right, d->width, d->height,
                                          &s->camera);
     if (reason != NULL) {
-        free(s);
+        rt_scene_free(s);
         return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
                              "expected a camera, found that %s", reason);
     }
@@ -250,6 +252,8 @@ void rt_scene_free(rt_scene *scene)
     free(scene->vertices);
     free(scene->facets);
     rt__kernel_d_free(scene->kernel);
+    rt__kernel_f_free(atomic_load(&scene->kernel_f));
+    pthread_mutex_destroy(&scene->kernel_lock);
     free(scene->warnings);
     free(scene);
 }
@@ -293,6 +297,24 @@ void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
     source->light_position = s->light;
     source->light_color = s->light_color;
     source->background = s->background;
+}
+
+const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene)
+{
+    rt_scene *s = (rt_scene *)scene;   /* only the lazy kernel changes */
+    rt_kernel_f *k = atomic_load_explicit(&s->kernel_f, memory_order_acquire);
+    if (k != NULL)
+        return k;
+    pthread_mutex_lock(&s->kernel_lock);
+    k = atomic_load_explicit(&s->kernel_f, memory_order_relaxed);
+    if (k == NULL) {
+        rt_kernel_source source;
+        rt__scene_kernel_source(scene, &source);
+        k = rt__kernel_f_create(&source);
+        atomic_store_explicit(&s->kernel_f, k, memory_order_release);
+    }
+    pthread_mutex_unlock(&s->kernel_lock);
+    return k;
 }
 
 int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,

@@ -10,7 +10,10 @@
 #ifndef RAYTRACE_SCENE_INTERNAL_H
 #define RAYTRACE_SCENE_INTERNAL_H
 
-#include "kernel.h"
+#include <pthread.h>
+#include <stdatomic.h>
+
+#include "kernel/kernel.h"
 #include "raytrace/scene.h"
 
 struct rt_scene {
@@ -26,6 +29,9 @@ struct rt_scene {
     rt_vec3 light;
     rt_rgb8 light_color;
     rt_kernel_d *kernel;    /* what the double-precision renderer reads */
+    _Atomic(rt_kernel_f *) kernel_f;    /* the float renderer's, built by
+                                           the first float render */
+    pthread_mutex_t kernel_lock;        /* serialises that construction */
     int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
 };
@@ -48,6 +54,10 @@ const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
 
 /* What a kernel of any precision is built from: the scene's own arrays. */
 void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
+
+/* The scene's float kernel, built on the first call (thread-safe) and kept
+ * until the scene is freed; NULL when out of memory. */
+const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene);
 
 /* Exact test: non-zero when the three points are collinear (including
  * coincident), evaluated without rounding error. */

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "bench_scenes.h"
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "scene_internal.h"
 #include "testutil.h"
 

@@ -2,9 +2,9 @@
  * raytrace/render.h - turning a scene into pixels.
  *
  * Whitted ray tracing as SPEC.md section 3 defines it: one primary ray through
- * each pixel centre, the nearest facet by brute force, a shadow ray to the
- * point light, mirror reflections up to a depth, real-valued colours rounded
- * once per pixel.  Rendering only reads the scene, so several renders of one
+ * each pixel centre, the nearest facet (by brute force or through an octree,
+ * with the same result), a shadow ray to the point light, mirror reflections
+ * up to a depth, real-valued colours rounded once per pixel.  Rendering only reads the scene, so several renders of one
  * scene may run at once; each render writes only the rows it was asked for.
  *
  * A render can report progress and be cancelled: `on_rows` is called each
@@ -49,6 +49,25 @@ typedef struct rt_render_stats {
                                          own reflections not counted), the
                                          zero-area facets, the shadow rays'
                                          tests after their first hit */
+    /* The octree, when the render used one (accel_used non-zero): */
+    int accel_used;                   /* 1: the octree, 0: brute force */
+    double accel_build_seconds;       /* the time its construction took
+                                         (once per scene and precision, by
+                                         the first render that used it) */
+    uint64_t accel_nodes;
+    uint64_t accel_leaves;
+    int accel_depth;
+    uint64_t accel_references;        /* facet entries in all leaves */
+    uint64_t accel_always;            /* slivers every ray tests */
+    uint64_t accel_bytes;             /* its memory */
+    uint64_t accel_queries;           /* ray queries through it */
+    uint64_t accel_leaves_visited;
+    uint64_t accel_facet_tests;       /* facets those queries tested;
+                                         brute force tests every live facet
+                                         per query */
+    uint64_t accel_fallbacks;         /* queries it left to brute force */
+    uint64_t accel_facets;            /* live facets: what brute force
+                                         tests per query */
 } rt_render_stats;
 
 /*
@@ -85,6 +104,23 @@ typedef enum rt_kernel_choice {
 } rt_kernel_choice;
 
 /*
+ * How a ray finds the facets it may hit.  Every choice gives the same
+ * image, bit for bit; the octree is built once per scene and precision, by
+ * the first render that needs it, and kept with the scene.
+ */
+typedef enum rt_accel {
+    RT_ACCEL_AUTO = 0,      /* the octree from RT_ACCEL_AUTO_FACETS live
+                               facets on, else brute force */
+    RT_ACCEL_NONE = 1,      /* brute force: every ray tests every facet */
+    RT_ACCEL_OCTREE = 2     /* an octree of the facets, whatever their
+                               number */
+} rt_accel;
+
+/* Below this many live facets brute force is as fast as the octree on the
+ * machine of docs/performance.md (measured there). */
+#define RT_ACCEL_AUTO_FACETS 64
+
+/*
  * A cancellation flag that renders poll before every pixel.  Any thread may
  * raise it while renders that were given it run; each then stops within one
  * pixel's work on every thread and returns RT_ERR_CANCELLED.  It stays raised
@@ -116,11 +152,12 @@ typedef struct rt_render_options {
     void *user;                 /* passed to on_row */
     rt_render_stats *stats;     /* optional; zeroed then filled */
     rt_kernel_choice kernel;    /* default RT_KERNEL_AUTO */
+    rt_accel accel;             /* default RT_ACCEL_AUTO */
 } rt_render_options;
 
 /* Sets the defaults: max_depth 5, all cores, double precision, exact
  * square root, one sample per pixel, no callback, no stats, the fastest
- * kernel.  Thread-safe. */
+ * kernel, the octree chosen by facet count.  Thread-safe. */
 void rt_render_options_init(rt_render_options *options);
 
 /*

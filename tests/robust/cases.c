@@ -1051,6 +1051,7 @@ static void case_r1(rb_method method, rt_precision precision, rb_result *r)
             rt_render_options_init(&options);
             options.max_depth = depths[run];
             options.precision = precision;
+            options.accel = rb_accel();
             options.stats = &stats[run];
             if (rt_render(scene, &options, &image) != RT_OK)
                 r->failures = 16;
@@ -1439,6 +1440,7 @@ static void render_with(const rt_scene *scene, rt_precision precision,
     options.precision = precision;
     options.threads = threads;
     options.kernel = kernel;
+    options.accel = rb_accel();
     rt_render(scene, &options, image);
 }
 

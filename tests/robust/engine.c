@@ -7,7 +7,7 @@
 #include <string.h>
 #include <tgmath.h>
 
-#include "kernel.h"
+#include "kernel/kernel.h"
 #include "robust/robust.h"
 
 #define R double
@@ -84,7 +84,25 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
         e->kf = rt__kernel_f_create(&source);
     else
         e->kd = rt__kernel_d_create(&source);
+    /* With the octree forced on, every query of the kernel goes through it
+     * (a kernel that has one uses it for nearest_hit and occluded too). */
+    if (rb_accel() == RT_ACCEL_OCTREE) {
+        if (e->kf != NULL)
+            rt__kernel_f_octree_prepare(e->kf, NULL);
+        if (e->kd != NULL)
+            rt__kernel_d_octree_prepare(e->kd, NULL);
+    }
     return e;
+}
+
+rt_accel rb_accel(void)
+{
+    const char *accel = getenv("RT_TEST_ACCEL");
+    if (accel != NULL && strcmp(accel, "octree") == 0)
+        return RT_ACCEL_OCTREE;
+    if (accel != NULL && strcmp(accel, "none") == 0)
+        return RT_ACCEL_NONE;
+    return RT_ACCEL_AUTO;
 }
 
 void rb_engine_free(rb_engine *e)
@@ -128,6 +146,7 @@ rt_color rb_engine_trace(const rb_engine *e, rt_ray ray, int depth)
     memset(&settings, 0, sizeof settings);
     settings.max_depth = depth;
     settings.kernel = RT_KERNEL_AUTO;
+    settings.octree = rb_accel() == RT_ACCEL_OCTREE;
     rt_counters counters;
     memset(&counters, 0, sizeof counters);
     if (e->kd != NULL)
@@ -149,6 +168,7 @@ long rb_engine_render(const rb_engine *e, int depth, int threads,
         options.max_depth = depth;
         options.threads = threads;
         options.precision = e->precision;
+        options.accel = rb_accel();
         if (rt_render(e->scene, &options, image) != RT_OK)
             return -1;
     }

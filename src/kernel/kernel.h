@@ -1,13 +1,17 @@
 /*
  * kernel.h - the ray-tracing kernel, in double and in float (internal).
  *
- * One implementation (kernel_impl.h) is compiled twice, by kernel_double.c
- * and kernel_float.c, so both precisions run exactly the same algorithm:
+ * One implementation (kernel_impl.h and its parts, in this directory) is
+ * compiled twice, by kernel_double.c and kernel_float.c, so both precisions
+ * run exactly the same algorithm:
  * the watertight intersection test, the error-bounded offset of secondary
  * ray origins, and the shading of SPEC.md section 3.  A kernel is built from
  * a scene's facet records and holds, in its own precision, only what the
  * renderer reads: the facets that can be hit and their precomputed data.
  * A kernel is immutable once built: any number of threads may trace with it.
+ * Its octree (octree_impl.h) is built on first request, once, under a lock
+ * (rt__kernel_*_octree_prepare, thread-safe), and only read afterwards;
+ * once it exists, nearest_hit and occluded go through it (same answers).
  *
  * An eye is what one render adds to a kernel: the facets' vertices minus
  * the camera's observer, computed once, so that the fast loops save those
@@ -39,6 +43,8 @@ typedef struct rt_trace_settings {
     rt_kernel_choice kernel;    /* RT_KERNEL_SCALAR: the plain loops */
     const void *eye;        /* NULL, or the rt_kernel_eye_d/_f (matching
                                the kernel) of the camera rays' origin */
+    int octree;             /* non-zero: queries go through the kernel's
+                               octree (rt__kernel_*_octree_prepare first) */
 } rt_trace_settings;
 
 /* Work counters of one thread; summed into rt_render_stats at the end. */
@@ -50,7 +56,23 @@ typedef struct rt_counters {
     uint64_t reflection_rays_skipped;
     uint64_t early_exit_saved;  /* facets a shadow ray did not test after
                                    its first hit */
+    uint64_t accel_queries;     /* queries through the octree */
+    uint64_t accel_leaves;      /* leaves they visited */
+    uint64_t accel_tests;       /* facets they tested */
+    uint64_t accel_fallbacks;   /* of them, done by brute force after all
+                                   (origin too far, too many hits) */
 } rt_counters;
+
+/* What an octree holds (kernel_impl.h builds it on first use). */
+typedef struct rt_octree_info {
+    double build_seconds;
+    uint64_t nodes;
+    uint64_t leaves;
+    int depth;
+    uint64_t references;    /* facet indices in all leaves */
+    uint64_t always;        /* slivers every ray tests, in no leaf */
+    uint64_t bytes;
+} rt_octree_info;
 
 /* A hit as the queries report it (in double whatever the precision). */
 typedef struct rt_kernel_hit {
@@ -79,7 +101,9 @@ typedef struct rt_kernel_hit {
                                           rt_kernel_hit *hit);               \
     int rt__kernel_##suffix##_occluded(const rt_kernel_##suffix *kernel,     \
                                        rt_vec3 from, rt_vec3 to,             \
-                                       int skip_facet);
+                                       int skip_facet);                      \
+    int rt__kernel_##suffix##_octree_prepare(                                \
+        const rt_kernel_##suffix *kernel, rt_octree_info *info);
 
 RT_KERNEL_DECLARE(d)
 RT_KERNEL_DECLARE(f)

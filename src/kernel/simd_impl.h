@@ -1,13 +1,13 @@
 /*
- * kernel_simd_impl.h - the fast facet loops of kernel_impl.h: facets in
- * blocks of eight, structure of arrays, tested with AVX2 (included by
- * kernel_impl.h; everything here is static).
+ * simd_impl.h - the fast facet loops of query_impl.h: facets in blocks of
+ * eight, structure of arrays, tested with AVX2 (included by kernel_impl.h;
+ * everything here is static).
  *
  * The vector code is a filter, not a second intersection test.  For each
  * lane it computes the three edge functions u, v, w with exactly the
- * operations of intersect() in kernel_impl.h (same order, no FMA: the build
- * uses -ffp-contract=off and these functions are not compiled for FMA), so
- * each value is bit-for-bit the scalar one.  A lane where some edge function
+ * operations of intersect() in intersect_impl.h (same order, no FMA: the
+ * build uses -ffp-contract=off and these functions are not compiled for
+ * FMA), so each value is bit-for-bit the scalar one.  A lane where some edge function
  * is strictly negative and another strictly positive cannot be hit: the
  * scalar test rejects it too (a non-zero edge function is never recomputed,
  * and a NaN one always ends in a rejection).  Every other lane - the ray's

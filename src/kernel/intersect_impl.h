@@ -1,0 +1,159 @@
+/*
+ * intersect_impl.h - the watertight ray-facet test and the tie rule between
+ * two hits, nothing else (part of kernel_impl.h, compiled once per
+ * precision; everything here is static).
+ *
+ * Intersection: Woop, Benthin and Wald, "Watertight Ray/Triangle
+ * Intersection", JCGT 2(1), 2013.  The ray is mapped onto +z by an axis
+ * permutation and a shear; the facet is then tested in 2D by three edge
+ * functions.  An edge shared by two facets gets bit-for-bit equal or
+ * opposite edge functions in both (the library is built with
+ * -ffp-contract=off so products round as written), and an edge function
+ * that rounds to zero is recomputed with its exact sign, so no ray can pass
+ * between two facets that share an edge.
+ */
+
+/* A ray prepared for the watertight test. */
+typedef struct ray {
+    vec origin;
+    vec direction;
+    int kx, ky, kz;
+    REAL sx, sy, sz;
+} ray;
+
+static ray prepare(vec origin, vec direction)
+{
+    ray r;
+    r.origin = origin;
+    r.direction = direction;
+    vec d = vabs(direction);
+    r.kz = d.x >= d.y ? (d.x >= d.z ? 0 : 2) : (d.y >= d.z ? 1 : 2);
+    r.kx = (r.kz + 1) % 3;
+    r.ky = (r.kx + 1) % 3;
+    REAL dz = get(direction, r.kz);
+    if (dz < 0) {           /* keep the winding of the projection */
+        int swap = r.kx;
+        r.kx = r.ky;
+        r.ky = swap;
+    }
+    r.sx = get(direction, r.kx) / dz;
+    r.sy = get(direction, r.ky) / dz;
+    r.sz = 1 / dz;
+    return r;
+}
+
+/* x*w - y*z with the exact sign even when it rounds to zero in REAL. */
+static REAL edge(REAL x, REAL w, REAL y, REAL z)
+{
+    REAL e = x * w - y * z;
+    if (e != 0)
+        return e;
+    if (sizeof(REAL) == sizeof(float))  /* float products are exact in double */
+        return (REAL)((double)x * (double)w - (double)y * (double)z);
+    /* Kahan's difference of products: error below 2 ulps, so the sign is
+     * exact. */
+    double yz = (double)y * (double)z;
+    double err = fma(-(double)y, (double)z, yz);
+    return (REAL)(fma((double)x, (double)w, -yz) + err);
+}
+
+typedef struct hit {
+    REAL t;
+    REAL t_error;           /* bound on the rounding error of t */
+    REAL point_error;       /* estimate of the error of the point the
+                               barycentric weights give, along the facet */
+    REAL b0, b1, b2;        /* barycentric weights of a, b, c */
+    int index;              /* into the kernel's tris */
+} hit;
+
+
+/*
+ * The watertight test: non-zero when the ray meets *f at a t in (0, t_max)
+ * that provably exceeds 0: t must exceed its own rounding-error bound, so a
+ * ray never meets a facet through its own origin (a camera lying on a facet
+ * does not see it).  Shadow rays also ask that t plus the bound stays below
+ * the light (blocks()), so a facet through the light does not shadow it.  The bound is
+ * pbrt-v4's (Pharr, Jakob, Humphreys, section 6.8.4), with the products
+ * regrouped so that none grows like the cube of the coordinates: t is
+ * computed from the barycentric weights, and the bound from ratios to the
+ * determinant, so coordinates from 1e-150 to 1e150 neither overflow nor
+ * underflow.
+ *
+ * The fast loops (simd_impl.h) repeat the computation of the edge
+ * functions u, v, w below, operation for operation, and skip the facets
+ * where two of them have strictly opposite signs: keep both in step, and
+ * keep that rejection the first thing this test does with u, v, w.
+ */
+static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
+{
+    vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
+        c = sub(f->c, r->origin);
+    REAL az = get(a, r->kz), bz = get(b, r->kz), cz = get(c, r->kz);
+    REAL ax = get(a, r->kx) - r->sx * az, ay = get(a, r->ky) - r->sy * az;
+    REAL bx = get(b, r->kx) - r->sx * bz, by = get(b, r->ky) - r->sy * bz;
+    REAL cx = get(c, r->kx) - r->sx * cz, cy = get(c, r->ky) - r->sy * cz;
+    REAL u = edge(cx, by, cy, bx);
+    REAL v = edge(ax, cy, ay, cx);
+    REAL w = edge(bx, ay, by, ax);
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
+        return 0;
+    REAL det = u + v + w;
+    if (det == 0 || !isfinite(det))
+        return 0;
+    REAL b0 = u / det, b1 = v / det, b2 = w / det;
+    /* The shear's error comes with the unscaled z; t's with the scaled z
+     * (pbrt-v4 does not tell them apart, as its directions are near unit
+     * length; ours may be of any length). */
+    REAL shear_z = max3(az, bz, cz);
+    az *= r->sz;
+    bz *= r->sz;
+    cz *= r->sz;
+    REAL t = b0 * az + b1 * bz + b2 * cz;
+
+    REAL abs_det = fabs(det);
+    REAL max_x = max3(ax, bx, cx), max_y = max3(ay, by, cy);
+    REAL max_z = max3(az, bz, cz);
+    REAL dx = gamma_bound(5) * (max_x + shear_z);
+    REAL dy = gamma_bound(5) * (max_y + shear_z);
+    REAL dz = gamma_bound(3) * max_z;
+    REAL edge_error = 2 * (gamma_bound(2) * max_x * (max_y / abs_det) +
+                           dy * (max_x / abs_det) + dx * (max_y / abs_det));
+    REAL edge_ratio = max3(u, v, w) / abs_det;  /* <= 1: all of one sign */
+    REAL t_error = 4 * (gamma_bound(3) * edge_ratio * max_z +
+                        edge_error * max_z + dz * edge_ratio);
+    if (!(t > t_error && t < t_max))
+        return 0;
+    h->t = t;
+    h->t_error = t_error;
+    h->point_error = edge_error * (max_x + max_y);
+    h->b0 = b0;
+    h->b1 = b1;
+    h->b2 = b2;
+    return 1;
+}
+
+/*
+ * Non-zero when hit `c` (a later facet) replaces the nearest so far, `b`:
+ * it is nearer, unless both facets lie in one plane and their distances
+ * differ by less than their error bounds - coincident facets, whose order
+ * rounding would otherwise decide - where the facet first in the file
+ * stays.
+ */
+static int replaces(const KERNEL_T *k, const hit *b, const hit *c)
+{
+    if (!(c->t < b->t))
+        return 0;
+    if (b->t - c->t > b->t_error + c->t_error)
+        return 1;
+    REAL cosine = dot(k->tris[b->index].normal, k->tris[c->index].normal);
+    return fabs(cosine) < 1 - 16 * REAL_EPS;
+}
+
+
+/* Non-zero when a hit of a shadow ray towards a light at t = t_max blocks
+ * it: the facet is provably before the light. */
+static int blocks(const hit *h, REAL t_max)
+{
+    return h->t + h->t_error < t_max;
+}
+

@@ -1,0 +1,233 @@
+/*
+ * kernel_impl.h - the ray-tracing kernel, written once for any precision:
+ * the kernel object (its data, its construction) and the order in which
+ * its parts are compiled.
+ *
+ * Included by kernel_double.c and kernel_float.c with
+ *     REAL       the floating-point type (double or float)
+ *     REAL_EPS   its machine epsilon (DBL_EPSILON or FLT_EPSILON)
+ *     KERNEL(x)  the name of an exported symbol (rt__kernel_d_##x ...)
+ *     KERNEL_T   the kernel's type (rt_kernel_d ...)
+ * Everything else here is static.  The parts, each using only those before
+ * it:
+ *     real_impl.h       vector arithmetic and error bounds
+ *     intersect_impl.h  the watertight test and the tie rule
+ *     simd_impl.h       the exact AVX2 filter over blocks of eight facets
+ *     octree_impl.h     the octree: construction and the walk of a ray
+ *     query_impl.h      nearest hit and any hit: brute force or octree
+ *     shade_impl.h      hit points, offsets, light and reflections
+ */
+#include <pthread.h>
+#include <stdlib.h>
+#include <tgmath.h>
+#include <string.h>
+
+#include <stdatomic.h>
+#include <stdint.h>
+#include <time.h>
+
+#include "kernel.h"
+
+#include "real_impl.h"
+
+/* A facet that can be hit, with what shading needs precomputed. */
+typedef struct tri {
+    vec a, b, c;
+    vec normal;             /* unit, in the direction of (b-a) x (c-a) */
+    REAL k;
+    REAL diffuse[3];        /* (1 - k) C_S C_F / 255 per channel */
+    int facet;              /* index of the facet record */
+} tri;
+
+typedef struct block block;     /* eight facets, simd_impl.h */
+typedef struct octree octree;   /* octree_impl.h */
+
+/* The vertices minus one ray origin, for the rays that start there. */
+struct KERNEL_EYE_T {
+    vec origin;
+    block *blocks;
+};
+
+struct KERNEL_T {
+    tri *tris;
+    int count;
+    block *blocks;          /* the same facets, eight by eight */
+    int block_count;
+    int avx2;               /* the processor runs the AVX2 loops */
+    vec light;
+    REAL background[3];
+    _Atomic(octree *) tree;     /* built on first use, then only read */
+    pthread_mutex_t tree_lock;  /* serialises that construction */
+};
+
+#include "intersect_impl.h"
+#include "simd_impl.h"
+#include "octree_impl.h"
+
+/* k's octree, once KERNEL(octree_prepare) has built it; else NULL. */
+static const octree *octree_of(const KERNEL_T *k)
+{
+    return atomic_load_explicit((_Atomic(octree *) *)&k->tree,
+                                memory_order_acquire);
+}
+
+#include "query_impl.h"
+#include "shade_impl.h"
+
+KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
+{
+    KERNEL_T *k = calloc(1, sizeof *k);
+    if (k == NULL)
+        return NULL;
+    k->tris = malloc((size_t)(s->facet_count > 0 ? s->facet_count : 1) *
+                     sizeof *k->tris);
+    if (k->tris == NULL) {
+        free(k);
+        return NULL;
+    }
+    int block_count = (s->facet_count + BLOCK_LANES - 1) / BLOCK_LANES;
+    k->blocks = aligned_alloc(32, (size_t)(block_count > 0 ? block_count : 1) *
+                                      sizeof *k->blocks);
+    if (k->blocks == NULL) {
+        free(k->tris);
+        free(k);
+        return NULL;
+    }
+    k->light = from_rt(s->light_position);
+    REAL light[3] = {s->light_color.r, s->light_color.g, s->light_color.b};
+    k->background[0] = s->background.r;
+    k->background[1] = s->background.g;
+    k->background[2] = s->background.b;
+    for (int i = 0; i < s->facet_count; i++) {
+        const rt_facet_info *info = &s->facets[i];
+        if (info->degenerate)
+            continue;       /* never hit: not even stored */
+        tri *f = &k->tris[k->count++];
+        f->a = from_rt(s->vertices[info->vertex[0]]);
+        f->b = from_rt(s->vertices[info->vertex[1]]);
+        f->c = from_rt(s->vertices[info->vertex[2]]);
+        f->normal = from_rt(info->normal);
+        f->k = (REAL)info->k;
+        REAL color[3] = {info->color.r, info->color.g, info->color.b};
+        for (int c = 0; c < 3; c++)
+            f->diffuse[c] = (1 - f->k) * light[c] * color[c] / 255;
+        f->facet = i;
+    }
+    k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
+    fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
+    k->avx2 = cpu_has_avx2();
+    atomic_init(&k->tree, NULL);
+    pthread_mutex_init(&k->tree_lock, NULL);
+    return k;
+}
+
+void KERNEL(free)(KERNEL_T *k)
+{
+    if (k != NULL) {
+        free(k->tris);
+        free(k->blocks);
+        octree_free(atomic_load(&k->tree));
+        pthread_mutex_destroy(&k->tree_lock);
+    }
+    free(k);
+}
+
+int KERNEL(octree_prepare)(const KERNEL_T *k, rt_octree_info *info)
+{
+    KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy octree changes */
+    const octree *t = octree_of(k);
+    if (t == NULL) {
+        pthread_mutex_lock(&mutable->tree_lock);
+        t = atomic_load_explicit(&mutable->tree, memory_order_relaxed);
+        if (t == NULL) {
+            octree *built = octree_build(k);
+            atomic_store_explicit(&mutable->tree, built,
+                                  memory_order_release);
+            t = built;
+        }
+        pthread_mutex_unlock(&mutable->tree_lock);
+    }
+    if (t == NULL)
+        return 0;
+    if (info != NULL) {
+        info->build_seconds = t->build_seconds;
+        info->nodes = (uint64_t)t->node_count;
+        info->leaves = (uint64_t)t->leaf_count;
+        info->depth = t->depth;
+        info->references = (uint64_t)t->ref_count;
+        info->always = (uint64_t)t->always_count;
+        info->bytes = (uint64_t)t->bytes;
+    }
+    return 1;
+}
+
+KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
+{
+    KERNEL_EYE_T *eye = calloc(1, sizeof *eye);
+    if (eye == NULL)
+        return NULL;
+    eye->origin = from_rt(origin);
+    eye->blocks = aligned_alloc(32, (size_t)(k->block_count > 0
+                                                 ? k->block_count
+                                                 : 1) *
+                                        sizeof *eye->blocks);
+    if (eye->blocks == NULL) {
+        free(eye);
+        return NULL;
+    }
+    fill_blocks(eye->blocks, k->tris, k->count, eye->origin);
+    return eye;
+}
+
+void KERNEL(eye_free)(KERNEL_EYE_T *eye)
+{
+    if (eye != NULL)
+        free(eye->blocks);
+    free(eye);
+}
+
+int KERNEL(live_count)(const KERNEL_T *k)
+{
+    return k->count;
+}
+
+int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
+                        rt_kernel_hit *out)
+{
+    vec direction = from_rt(query.direction);
+    REAL length = max3(direction.x, direction.y, direction.z);
+    if (!isfinite(length) || length == 0)
+        return 0;
+    ray r = prepare(from_rt(query.origin), direction);
+    hit h;
+    rt_counters counters = {0};
+    if (!nearest(k, k->avx2, octree_of(k), NULL, &r, (REAL)t_max, -1, &h,
+                 &counters))
+        return 0;
+    const tri *f = &k->tris[h.index];
+    vec error_bound;
+    out->t = h.t;
+    out->facet = f->facet;
+    out->point = to_rt(hit_point(f, &h, r.origin, direction, &error_bound));
+    out->normal = to_rt(dot(f->normal, direction) > 0 ? neg(f->normal)
+                                                      : f->normal);
+    return 1;
+}
+
+int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
+                     int skip_facet)
+{
+    vec o = from_rt(from);
+    vec d = sub(from_rt(to), o);
+    REAL length = max3(d.x, d.y, d.z);
+    if (!isfinite(length) || length == 0 || !isfinite(max3(o.x, o.y, o.z)))
+        return 0;
+    int skip = -1;
+    for (int i = 0; skip_facet >= 0 && i < k->count; i++)
+        if (k->tris[i].facet == skip_facet)
+            skip = i;
+    ray r = prepare(o, d);
+    rt_counters counters = {0};
+    return any_hit(k, k->avx2, octree_of(k), &r, 1, skip, &counters);
+}
+

@@ -1,0 +1,530 @@
+/*
+ * octree_impl.h - an octree over a kernel's facets: its construction and
+ * the front-to-back walk of a ray through its leaves (part of
+ * kernel_impl.h, compiled once per precision; everything here is static).
+ *
+ * A subdivision of space, not a bounding volume hierarchy: the root is a
+ * cube around every facet, each internal node splits its box at the middle
+ * into eight children that share their faces exactly (one computed middle
+ * per axis serves both sides), and a facet is listed in every leaf its
+ * triangle overlaps.  Overlap is Akenine-Moller's separating-axis test
+ * ("Fast 3D Triangle-Box Overlap Testing", 2001) on the leaf's box grown by
+ * a margin, so a facet touching a face, or one that rounding moves a little,
+ * is in both cells.  The walk is an ordered stack traversal: the children a
+ * ray meets, by pbrt-v4's slab test made conservative on both ends, pushed
+ * so the nearest comes out first; a ray grazing a face visits both cells.
+ * docs/octree.md gives the argument that queries through it give exactly
+ * the brute-force answers, and query_impl.h uses it.
+ *
+ * Everything here is in double, whatever REAL is: the float kernel's
+ * vertices are exact in double, so the boxes and the overlap tests are the
+ * same kind of computation in both precisions.
+ *
+ * Bounds, each with its reason:
+ *   - a leaf holds at most OCTREE_LEAF_FACETS facets unless splitting stops
+ *     for another reason: below that, testing them costs less than walking
+ *     more nodes;
+ *   - at most OCTREE_MAX_DEPTH levels: 2^-16 of the scene's size is below
+ *     any useful cell, and the walk's stack is sized by it;
+ *   - a split that lists the node's facets more than OCTREE_SPLIT_GROWTH
+ *     times over (facets much bigger than the children) is not made: it
+ *     would multiply references without separating anything;
+ *   - the references of all leaves stay below OCTREE_REFERENCE_BUDGET times
+ *     the facet count (plus a constant): the memory is linear in the scene
+ *     whatever its distribution; the nodes that cannot split stay leaves,
+ *     and a degenerate scene degrades towards brute force;
+ *   - facets whose shape makes the test's rounding large (longest edge
+ *     squared over twice the area above OCTREE_CONDITION_MAX: slivers) are
+ *     not listed in leaves but in one list every ray tests.
+ */
+#define OCTREE_LEAF_FACETS 8
+#define OCTREE_MAX_DEPTH 16
+#define OCTREE_SPLIT_GROWTH 4
+#define OCTREE_REFERENCE_BUDGET 8
+#define OCTREE_CONDITION_MAX 4096.0
+#define OCTREE_STACK (7 * OCTREE_MAX_DEPTH + 8)
+
+/*
+ * The margin leaf boxes grow by, relative to the root's size: far above
+ * the rounding of the overlap and slab tests (a few ulps of double), and
+ * above the perturbation under which the watertight test in REAL is exact
+ * for rays from within OCTREE_REACH root sizes (see too_far()).
+ */
+#if REAL_IS_FLOAT
+#define OCTREE_MARGIN 0x1p-11
+#else
+#define OCTREE_MARGIN 0x1p-30
+#endif
+
+/* A node: a leaf when count >= 0 (facets refs[first .. first + count)),
+ * else internal with children nodes[first .. first + 8), child bit 0 the
+ * upper half in x, bit 1 in y, bit 2 in z. */
+typedef struct onode {
+    int32_t first;
+    int32_t count;
+} onode;
+
+typedef struct octree {
+    double lo[3], hi[3];    /* the root cube */
+    double margin;          /* absolute */
+    onode *nodes;
+    int32_t *refs;          /* facet indices, ascending within a leaf */
+    int32_t *always;        /* the badly conditioned facets */
+    int node_count;
+    int leaf_count;
+    int depth;
+    int always_count;
+    size_t ref_count;
+    size_t bytes;
+    double build_seconds;
+} octree;
+
+/* --- the triangle-box test ------------------------------------------- */
+
+static double cross_axis(const double e[3], int axis, const double v[3])
+{
+    /* (e x unit(axis)) . v */
+    int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    return e[j] * v[i] - e[i] * v[j];
+}
+
+/* Non-zero when the triangle v[3] overlaps the box of centre c and half
+ * sizes h (Akenine-Moller's 13 axes).  Zero only when a separating axis is
+ * found with a gap; callers grow h by the margin to absorb rounding. */
+static int triangle_box_overlap(const double c[3], const double h[3],
+                                double tv[3][3])
+{
+    double v[3][3], e[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int a = 0; a < 3; a++)
+            v[i][a] = tv[i][a] - c[a];
+    for (int a = 0; a < 3; a++) {
+        e[0][a] = v[1][a] - v[0][a];
+        e[1][a] = v[2][a] - v[1][a];
+        e[2][a] = v[0][a] - v[2][a];
+    }
+    for (int a = 0; a < 3; a++) {       /* the box's faces */
+        double low = fmin(v[0][a], fmin(v[1][a], v[2][a]));
+        double high = fmax(v[0][a], fmax(v[1][a], v[2][a]));
+        if (low > h[a] || high < -h[a])
+            return 0;
+    }
+    for (int k = 0; k < 3; k++)         /* edge x box axis */
+        for (int a = 0; a < 3; a++) {
+            int i = (a + 1) % 3, j = (a + 2) % 3;
+            double p0 = cross_axis(e[k], a, v[0]);
+            double p1 = cross_axis(e[k], a, v[1]);
+            double p2 = cross_axis(e[k], a, v[2]);
+            double r = h[i] * fabs(e[k][j]) + h[j] * fabs(e[k][i]);
+            if (fmin(p0, fmin(p1, p2)) > r || fmax(p0, fmax(p1, p2)) < -r)
+                return 0;
+        }
+    double n[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1],     /* the plane */
+                   e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                   e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    double d = n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2];
+    double r = h[0] * fabs(n[0]) + h[1] * fabs(n[1]) + h[2] * fabs(n[2]);
+    return !(d > r || d < -r);
+}
+
+/* --- construction ---------------------------------------------------- */
+
+typedef struct builder {
+    double (*v)[3][3];      /* each facet's vertices, in double */
+    octree *tree;
+    size_t node_capacity, ref_capacity;
+    size_t frontier;        /* references of the leaves if building
+                               stopped now */
+    size_t budget;
+    int failed;
+} builder;
+
+static int grow(void **array, size_t *capacity, size_t needed, size_t size)
+{
+    if (needed <= *capacity)
+        return 1;
+    size_t capacity2 = *capacity ? *capacity : 64;
+    while (capacity2 < needed)
+        capacity2 *= 2;
+    void *p = realloc(*array, capacity2 * size);
+    if (p == NULL)
+        return 0;
+    *array = p;
+    *capacity = capacity2;
+    return 1;
+}
+
+static void make_leaf(builder *b, int node, const int32_t *list, int n)
+{
+    octree *t = b->tree;
+    if (!grow((void **)&t->refs, &b->ref_capacity, t->ref_count + (size_t)n,
+              sizeof *t->refs)) {
+        b->failed = 1;
+        return;
+    }
+    memcpy(t->refs + t->ref_count, list, (size_t)n * sizeof *list);
+    t->nodes[node] = (onode){(int32_t)t->ref_count, n};
+    t->ref_count += (size_t)n;
+    t->leaf_count++;
+}
+
+static void child_box(const double lo[3], const double hi[3],
+                      const double mid[3], int child, double clo[3],
+                      double chi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        int upper = (child >> a) & 1;
+        clo[a] = upper ? mid[a] : lo[a];
+        chi[a] = upper ? hi[a] : mid[a];
+    }
+}
+
+static void build_node(builder *b, int node, const double lo[3],
+                       const double hi[3], const int32_t *list, int n,
+                       int depth)
+{
+    octree *t = b->tree;
+    if (depth > t->depth)
+        t->depth = depth;
+    if (n <= OCTREE_LEAF_FACETS || depth >= OCTREE_MAX_DEPTH) {
+        make_leaf(b, node, list, n);
+        return;
+    }
+    int32_t *lists = malloc((size_t)n * 8 * sizeof *lists);
+    if (lists == NULL) {
+        b->failed = 1;
+        return;
+    }
+    double mid[3];
+    for (int a = 0; a < 3; a++)
+        mid[a] = lo[a] + (hi[a] - lo[a]) * 0.5;
+    int counts[8];
+    size_t total = 0;
+    for (int c = 0; c < 8; c++) {
+        double clo[3], chi[3], centre[3], half[3];
+        child_box(lo, hi, mid, c, clo, chi);
+        for (int a = 0; a < 3; a++) {
+            centre[a] = clo[a] + (chi[a] - clo[a]) * 0.5;
+            half[a] = (chi[a] - clo[a]) * 0.5 + t->margin;
+        }
+        counts[c] = 0;
+        for (int i = 0; i < n; i++)
+            if (triangle_box_overlap(centre, half, b->v[list[i]]))
+                lists[(size_t)c * (size_t)n + (size_t)counts[c]++] = list[i];
+        total += (size_t)counts[c];
+    }
+    if (total > (size_t)OCTREE_SPLIT_GROWTH * (size_t)n ||
+        b->frontier + total - (size_t)n > b->budget) {
+        free(lists);
+        make_leaf(b, node, list, n);
+        return;
+    }
+    b->frontier += total - (size_t)n;
+    int first = t->node_count;
+    if (!grow((void **)&t->nodes, &b->node_capacity, (size_t)first + 8,
+              sizeof *t->nodes)) {
+        free(lists);
+        b->failed = 1;
+        return;
+    }
+    t->node_count += 8;
+    t->nodes[node] = (onode){first, -1};
+    for (int c = 0; c < 8 && !b->failed; c++) {
+        double clo[3], chi[3];
+        child_box(lo, hi, mid, c, clo, chi);
+        build_node(b, first + c, clo, chi, lists + (size_t)c * (size_t)n,
+                   counts[c], depth + 1);
+    }
+    free(lists);
+}
+
+static void octree_free(octree *t)
+{
+    if (t != NULL) {
+        free(t->nodes);
+        free(t->refs);
+        free(t->always);
+    }
+    free(t);
+}
+
+/* Longest edge squared over twice the area: 1/sin of about the smallest
+ * angle; large for slivers. */
+static double condition(double v[3][3])
+{
+    double e[3][3], longest = 0;
+    for (int k = 0; k < 3; k++) {
+        double s = 0;
+        for (int a = 0; a < 3; a++) {
+            e[k][a] = v[(k + 1) % 3][a] - v[k][a];
+            s += e[k][a] * e[k][a];
+        }
+        longest = fmax(longest, s);
+    }
+    double n[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1],
+                   e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                   e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    double area2 = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return area2 > 0 ? longest / area2 : INFINITY;
+}
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* The octree of k's facets, or NULL when out of memory. */
+static octree *octree_build(const KERNEL_T *k)
+{
+    double start = seconds_now();
+    octree *t = calloc(1, sizeof *t);
+    builder b = {0};
+    size_t n = (size_t)k->count;
+    b.tree = t;
+    b.v = malloc((n ? n : 1) * sizeof *b.v);
+    int32_t *list = malloc((n ? n : 1) * sizeof *list);
+    t->always = malloc((n ? n : 1) * sizeof *t->always);
+    t->nodes = malloc(sizeof *t->nodes);
+    if (t == NULL || b.v == NULL || list == NULL || t->always == NULL ||
+        t->nodes == NULL) {
+        free(b.v);
+        free(list);
+        octree_free(t);
+        return NULL;
+    }
+    b.node_capacity = 1;
+    t->node_count = 1;
+    double lo[3] = {INFINITY, INFINITY, INFINITY};
+    double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    int listed = 0;
+    for (int i = 0; i < k->count; i++) {
+        const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
+        for (int j = 0; j < 3; j++) {
+            b.v[i][j][0] = (double)p[j]->x;
+            b.v[i][j][1] = (double)p[j]->y;
+            b.v[i][j][2] = (double)p[j]->z;
+        }
+        if (!(condition(b.v[i]) <= OCTREE_CONDITION_MAX)) {
+            t->always[t->always_count++] = i;
+            continue;
+        }
+        list[listed++] = i;
+        for (int j = 0; j < 3; j++)
+            for (int a = 0; a < 3; a++) {
+                lo[a] = fmin(lo[a], b.v[i][j][a]);
+                hi[a] = fmax(hi[a], b.v[i][j][a]);
+            }
+    }
+    double size = 0;
+    for (int a = 0; listed > 0 && a < 3; a++)
+        size = fmax(size, hi[a] - lo[a]);
+    t->margin = size * OCTREE_MARGIN;
+    for (int a = 0; a < 3; a++) {   /* a cube, grown by the margin */
+        double centre = listed > 0 ? lo[a] + (hi[a] - lo[a]) * 0.5 : 0;
+        t->lo[a] = centre - size * 0.5 - 2 * t->margin;
+        t->hi[a] = centre + size * 0.5 + 2 * t->margin;
+    }
+    b.frontier = (size_t)listed;
+    b.budget = (size_t)OCTREE_REFERENCE_BUDGET * (size_t)listed + 4096;
+    build_node(&b, 0, t->lo, t->hi, list, listed, 0);
+    free(list);
+    free(b.v);
+    if (b.failed) {
+        octree_free(t);
+        return NULL;
+    }
+    t->bytes = sizeof *t + (size_t)t->node_count * sizeof *t->nodes +
+               t->ref_count * sizeof *t->refs +
+               (size_t)k->count * sizeof *t->always;
+    t->build_seconds = seconds_now() - start;
+    return t;
+}
+
+/* --- the walk -------------------------------------------------------- */
+
+/* Higham's gamma(n) in double: the slab test runs in double. */
+static double gamma_double(int n)
+{
+    double u = DBL_EPSILON / 2;
+    return n * u / (1 - n * u);
+}
+
+/* A ray as the walk reads it, in double. */
+typedef struct oray {
+    double origin[3], direction[3], inverse[3];
+} oray;
+
+static oray oray_make(const ray *r)
+{
+    oray q;
+    for (int a = 0; a < 3; a++) {
+        q.origin[a] = (double)get(r->origin, a);
+        q.direction[a] = (double)get(r->direction, a);
+        q.inverse[a] = 1 / q.direction[a];
+    }
+    return q;
+}
+
+/*
+ * pbrt-v4's slab test, conservative at both ends: non-zero when the ray
+ * may meet the box within [*t0, *t1], which it narrows to a superset of
+ * the true interval.  The entry is lowered and the exit raised by more than
+ * the three roundings of (bound - origin) * inverse.
+ */
+static int slabs(const oray *q, const double lo[3], const double hi[3],
+                 double *t0, double *t1)
+{
+    double grow = 1 + 2 * gamma_double(3), shrink = 1 - 2 * gamma_double(3);
+    for (int a = 0; a < 3; a++) {
+        if (q->direction[a] == 0) {
+            if (q->origin[a] < lo[a] || q->origin[a] > hi[a])
+                return 0;
+            continue;
+        }
+        double near = (lo[a] - q->origin[a]) * q->inverse[a];
+        double far = (hi[a] - q->origin[a]) * q->inverse[a];
+        if (near > far) {
+            double swap = near;
+            near = far;
+            far = swap;
+        }
+        if (near != near)
+            near = -INFINITY;
+        if (far != far)
+            far = INFINITY;
+        near *= near > 0 ? shrink : grow;
+        far *= far > 0 ? grow : shrink;
+        if (near > *t0)
+            *t0 = near;
+        if (far < *t1)
+            *t1 = far;
+        if (*t0 > *t1)
+            return 0;
+    }
+    return 1;
+}
+
+/* A node waiting in the walk, with its box and the ray's interval in it. */
+typedef struct pending {
+    double lo[3], hi[3];
+    double t0, t1;
+    int node;
+} pending;
+
+/* The walk: the leaves of `t` the ray meets within [t_min, t_max], nearest
+ * first.  Call walk_start, then walk_next until it returns -1; a node whose
+ * entry is beyond `cutoff` (which may shrink meanwhile) is not entered, and
+ * the smallest such entry is kept in skipped. */
+typedef struct walk {
+    const octree *t;
+    oray q;
+    pending stack[OCTREE_STACK];
+    int top;
+    double skipped;         /* smallest entry of a node left out */
+} walk;
+
+static void walk_start(walk *w, const octree *t, const ray *r, double t_min,
+                       double t_max)
+{
+    w->t = t;
+    w->q = oray_make(r);
+    w->top = 0;
+    w->skipped = INFINITY;
+    pending root = {{t->lo[0], t->lo[1], t->lo[2]},
+                    {t->hi[0], t->hi[1], t->hi[2]}, t_min, t_max, 0};
+    if (slabs(&w->q, root.lo, root.hi, &root.t0, &root.t1))
+        w->stack[w->top++] = root;
+}
+
+/* The next leaf, or -1. */
+static int walk_next(walk *w, double cutoff)
+{
+    while (w->top > 0) {
+        pending p = w->stack[--w->top];
+        if (p.t0 > cutoff) {
+            if (p.t0 < w->skipped)
+                w->skipped = p.t0;
+            continue;
+        }
+        const onode *n = &w->t->nodes[p.node];
+        if (n->count >= 0)
+            return p.node;
+        double mid[3];
+        for (int a = 0; a < 3; a++)
+            mid[a] = p.lo[a] + (p.hi[a] - p.lo[a]) * 0.5;
+        pending children[8];
+        int m = 0;
+        for (int c = 0; c < 8; c++) {
+            pending ch;
+            child_box(p.lo, p.hi, mid, c, ch.lo, ch.hi);
+            ch.t0 = p.t0;
+            ch.t1 = p.t1;
+            ch.node = n->first + c;
+            if (!slabs(&w->q, ch.lo, ch.hi, &ch.t0, &ch.t1))
+                continue;
+            int j = m++;    /* sorted by entry, farthest first */
+            while (j > 0 && children[j - 1].t0 < ch.t0) {
+                children[j] = children[j - 1];
+                j--;
+            }
+            children[j] = ch;
+        }
+        for (int c = 0; c < m; c++)
+            w->stack[w->top++] = children[c];
+    }
+    return -1;
+}
+
+/*
+ * Non-zero when the ray's origin is so far from the root that the
+ * watertight test's rounding (exact for vertices moved by about
+ * 4 gamma(8) times their distance to the origin, in REAL) could exceed the
+ * margin: such a ray is traced by brute force.
+ */
+static int too_far(const octree *t, const ray *r)
+{
+    double reach = 0;
+    for (int a = 0; a < 3; a++) {
+        double o = (double)get(r->origin, a);
+        reach = fmax(reach, fmax(fabs(t->lo[a] - o), fabs(t->hi[a] - o)));
+    }
+    return !(16 * (double)gamma_bound(8) * reach <= t->margin);
+}
+
+/* --- the facets a ray has tested ------------------------------------- */
+
+/* A small open-addressing set of facet indices, per query, on the stack: a
+ * facet listed in several leaves is tested once.  When it fills up, further
+ * facets are simply not remembered (tested again if met again: the same
+ * answer, only slower). */
+#define TESTED_SLOTS 256
+typedef struct tested {
+    int32_t slot[TESTED_SLOTS];
+    int used;
+} tested;
+
+static void tested_clear(tested *s)
+{
+    memset(s->slot, 0xff, sizeof s->slot);
+    s->used = 0;
+}
+
+/* Non-zero when i was not in the set (it is now, if there was room). */
+static int tested_add(tested *s, int32_t i)
+{
+    uint32_t h = ((uint32_t)i * 0x9e3779b1u) >> 24;
+    for (;;) {
+        if (s->slot[h] == i)
+            return 0;
+        if (s->slot[h] < 0)
+            break;
+        h = (h + 1) & (TESTED_SLOTS - 1);
+    }
+    if (s->used < TESTED_SLOTS * 3 / 4) {
+        s->slot[h] = i;
+        s->used++;
+    }
+    return 1;
+}

@@ -1,0 +1,292 @@
+/*
+ * query_impl.h - nearest hit and any hit over a kernel's facets: the only
+ * place that chooses how - brute force or the octree of octree_impl.h, and
+ * for brute force the scalar loops or the AVX2 filter of simd_impl.h.
+ * Part of kernel_impl.h, compiled once per precision; everything here is
+ * static.
+ *
+ * Through the octree a ray meets the facets in another order than the
+ * brute-force loops (index order), yet the answer must be the same bit for
+ * bit, ties included.  Nearest hit keeps every hit it finds (a handful) and
+ * ends with the brute-force fold over those that can matter, in index
+ * order; docs/octree.md proves that this is the brute-force answer as long
+ * as the walk stops only past `reach` (see near_reach()).
+ */
+
+/* Nearest hit, all facets but `skip` (ties: see replaces()). */
+static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
+                          int skip, hit *h, uint64_t *tests)
+{
+    int found = 0;
+    hit candidate;
+    for (int i = 0; i < k->count; i++) {
+        if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
+            candidate.index = i;
+            if (found && !replaces(k, h, &candidate))
+                continue;
+            *h = candidate;
+            t_max = candidate.t;
+            found = 1;
+        }
+    }
+    *tests += (uint64_t)k->count - (skip >= 0);
+    return found;
+}
+
+
+/* Any hit in (0, t_max), all facets but `skip`; stops at the first. */
+static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
+                          int skip, uint64_t *tests, uint64_t *saved)
+{
+    hit ignored;
+    uint64_t made = 0;
+    int found = 0;
+    for (int i = 0; i < k->count && !found; i++) {
+        if (i == skip)
+            continue;
+        made++;
+        found = intersect(r, &k->tris[i], t_max, &ignored) &&
+                blocks(&ignored, t_max);
+    }
+    *tests += made;
+    *saved += (uint64_t)k->count - (skip >= 0) - made;
+    return found;
+}
+
+
+/* The loops a trace uses: AVX2 when the processor has it and the caller
+ * did not ask for the scalar ones.  Both give the same hits. */
+static int nearest_brute(const KERNEL_T *k, int simd,
+                         const KERNEL_EYE_T *eye, const ray *r, REAL t_max, int skip, hit *h,
+                   uint64_t *tests)
+{
+#if HAVE_AVX2_KERNEL
+    if (simd && eye != NULL && skip < 0 &&
+        memcmp(&eye->origin, &r->origin, sizeof eye->origin) == 0)
+        return nearest_eye_avx2(k, eye->blocks, r, t_max, h, tests);
+    if (simd)
+        return nearest_avx2(k, r, t_max, skip, h, tests);
+#else
+    (void)simd;
+    (void)eye;
+#endif
+    return nearest_scalar(k, r, t_max, skip, h, tests);
+}
+
+static int any_hit_brute(const KERNEL_T *k, int simd, const ray *r,
+                         REAL t_max, int skip, uint64_t *tests,
+                         uint64_t *saved)
+{
+#if HAVE_AVX2_KERNEL
+    if (simd)
+        return any_hit_avx2(k, r, t_max, skip, tests, saved);
+#else
+    (void)simd;
+#endif
+    return any_hit_scalar(k, r, t_max, skip, tests, saved);
+}
+
+/* --- through the octree ---------------------------------------------- */
+
+#if REAL_IS_FLOAT
+#define OCTREE_SLACK 0x1p-6
+#else
+#define OCTREE_SLACK 0x1p-16
+#endif
+#define NEAR_HITS 32
+
+/* Non-zero when hit x cannot tie with, nor come before, any hit that ends
+ * by `reach` (t + t_error <= reach); the 8 eps terms cover the rounding of
+ * this test and of replaces(). */
+static int far_from(const hit *x, REAL reach)
+{
+    return (x->t - x->t_error) - 8 * REAL_EPS * (x->t + x->t_error) >
+           reach * (1 + 8 * REAL_EPS);
+}
+
+/* The smallest reach such that every hit not far_from() it ends by it:
+ * grown from the nearest hit's t + t_error until nothing changes. */
+static REAL near_reach(const hit *found, int n)
+{
+    int m = 0;
+    for (int i = 1; i < n; i++)
+        if (found[i].t < found[m].t)
+            m = i;
+    REAL reach = found[m].t + found[m].t_error;
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int i = 0; i < n; i++)
+            if (!far_from(&found[i], reach) &&
+                found[i].t + found[i].t_error > reach) {
+                reach = found[i].t + found[i].t_error;
+                changed = 1;
+            }
+    }
+    return reach;
+}
+
+/* The entry beyond which a node cannot hold a hit that is not far_from()
+ * `reach` (docs/octree.md: a facet met beyond the entry e has
+ * t - t_error >= e (1 - OCTREE_SLACK / 2)). */
+static double cutoff(REAL reach, int found)
+{
+    if (!found)
+        return INFINITY;
+    return (double)reach * (1 + 16 * (double)REAL_EPS) / (1 - OCTREE_SLACK);
+}
+
+/* The hits a nearest-hit query through the octree has found so far. */
+typedef struct collector {
+    hit found[NEAR_HITS];
+    int n;
+    REAL reach;             /* near_reach() of found, when n > 0 */
+    uint64_t made;          /* facets tested */
+} collector;
+
+/* Tests facet i; 0 when the hit does not fit any more. */
+static int collect(collector *c, const KERNEL_T *k, const ray *r,
+                   REAL t_max, int i)
+{
+    c->made++;
+    if (!intersect(r, &k->tris[i], t_max, &c->found[c->n]))
+        return 1;
+    c->found[c->n].index = i;
+    if (++c->n == NEAR_HITS)
+        return 0;
+    c->reach = near_reach(c->found, c->n);
+    return 1;
+}
+
+/* The brute-force fold (nearest_scalar()) over the hits that are not
+ * far_from() the reach, in index order; non-zero when there is one. */
+static int fold_near(const KERNEL_T *k, const collector *c, hit *h)
+{
+    const hit *near[NEAR_HITS];
+    int m = 0;
+    for (int j = 0; j < c->n; j++) {
+        if (far_from(&c->found[j], c->reach))
+            continue;
+        int i = m++;
+        while (i > 0 && near[i - 1]->index > c->found[j].index) {
+            near[i] = near[i - 1];
+            i--;
+        }
+        near[i] = &c->found[j];
+    }
+    const hit *best = NULL;
+    for (int j = 0; j < m; j++)
+        if (best == NULL || replaces(k, best, near[j]))
+            best = near[j];
+    if (best != NULL)
+        *h = *best;
+    return best != NULL;
+}
+
+static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
+                          const ray *r, REAL t_max, int skip, hit *h,
+                          rt_counters *counters)
+{
+    if (too_far(tree, r))
+        goto brute_force;
+    collector c;
+    c.n = 0;
+    c.reach = 0;
+    c.made = 0;
+    tested seen;
+    tested_clear(&seen);
+    for (int j = 0; j < tree->always_count; j++)
+        if (tree->always[j] != skip &&
+            !collect(&c, k, r, t_max, tree->always[j]))
+            goto overflow;
+    walk w;
+    walk_start(&w, tree, r, 0, (double)t_max);
+    int leaf;
+    while ((leaf = walk_next(&w, cutoff(c.reach, c.n))) >= 0) {
+        const onode *node = &tree->nodes[leaf];
+        counters->accel_leaves++;
+        for (int j = 0; j < node->count; j++) {
+            int i = tree->refs[node->first + j];
+            if (i != skip && tested_add(&seen, i) &&
+                !collect(&c, k, r, t_max, i))
+                goto overflow;
+        }
+    }
+    counters->tests += c.made;
+    counters->accel_tests += c.made;
+    counters->accel_queries++;
+    if (c.n == 0)
+        return 0;
+    if (!(w.skipped > cutoff(c.reach, c.n)))
+        goto brute_force;   /* reach grew past a node left out */
+    return fold_near(k, &c, h);
+overflow:
+    counters->tests += c.made;
+brute_force:
+    counters->accel_fallbacks++;
+    return nearest_brute(k, simd, NULL, r, t_max, skip, h, &counters->tests);
+}
+
+/* any_hit_brute() through the octree: the same answer, as the facets that
+ * can block are listed in the leaves the segment meets. */
+static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
+                          const ray *r, REAL t_max, int skip,
+                          rt_counters *counters)
+{
+    if (too_far(tree, r)) {
+        counters->accel_fallbacks++;
+        return any_hit_brute(k, simd, r, t_max, skip, &counters->tests,
+                             &counters->early_exit_saved);
+    }
+    hit ignored;
+    uint64_t made = 0;
+    int found = 0;
+    for (int j = 0; j < tree->always_count && !found; j++) {
+        int i = tree->always[j];
+        if (i == skip)
+            continue;
+        made++;
+        found = intersect(r, &k->tris[i], t_max, &ignored) &&
+                blocks(&ignored, t_max);
+    }
+    tested seen;
+    tested_clear(&seen);
+    walk w;
+    walk_start(&w, tree, r, 0, (double)t_max);
+    int leaf;
+    while (!found && (leaf = walk_next(&w, INFINITY)) >= 0) {
+        const onode *node = &tree->nodes[leaf];
+        counters->accel_leaves++;
+        for (int j = 0; j < node->count && !found; j++) {
+            int i = tree->refs[node->first + j];
+            if (i == skip || !tested_add(&seen, i))
+                continue;
+            made++;
+            found = intersect(r, &k->tris[i], t_max, &ignored) &&
+                    blocks(&ignored, t_max);
+        }
+    }
+    counters->tests += made;
+    counters->accel_tests += made;
+    counters->accel_queries++;
+    return found;
+}
+
+/* The queries a trace makes: through the octree when one is given, else
+ * brute force. */
+static int nearest(const KERNEL_T *k, int simd, const octree *tree,
+                   const KERNEL_EYE_T *eye, const ray *r, REAL t_max,
+                   int skip, hit *h, rt_counters *counters)
+{
+    if (tree != NULL)
+        return nearest_octree(k, simd, tree, r, t_max, skip, h, counters);
+    return nearest_brute(k, simd, eye, r, t_max, skip, h, &counters->tests);
+}
+
+static int any_hit(const KERNEL_T *k, int simd, const octree *tree,
+                   const ray *r, REAL t_max, int skip, rt_counters *counters)
+{
+    if (tree != NULL)
+        return any_hit_octree(k, simd, tree, r, t_max, skip, counters);
+    return any_hit_brute(k, simd, r, t_max, skip, &counters->tests,
+                         &counters->early_exit_saved);
+}

@@ -1,0 +1,15 @@
+# The octree against brute force (issue 12).  Included from
+# tests/CMakeLists.txt; uses the benchmark's scene generators.  The scenes
+# of ../shared get their own entry, skipped (exit 77) when it is absent.
+raytrace_add_suite(test_octree
+  SOURCES "${PROJECT_SOURCE_DIR}/bench/bench_scenes.c")
+target_include_directories(test_octree PRIVATE "${PROJECT_SOURCE_DIR}/bench")
+find_library(RAYTRACE_OCTREE_TEST_LIBM m)
+if(RAYTRACE_OCTREE_TEST_LIBM)
+  target_link_libraries(test_octree PRIVATE ${RAYTRACE_OCTREE_TEST_LIBM})
+endif()
+set_tests_properties(test_octree PROPERTIES TIMEOUT 900)
+add_test(NAME test_octree_shared COMMAND test_octree shared
+         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+set_tests_properties(test_octree_shared PROPERTIES SKIP_RETURN_CODE 77
+                     TIMEOUT 900)
