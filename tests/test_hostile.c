@@ -437,13 +437,14 @@ START_TEST(line_of_commas_is_refused_at_the_first_stray_comma)
     ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:1: expected a number, found `,`");
-    /* values then a million commas: the ninth value is the error, found
-     * before the commas are read */
-    memcpy(text, "1,2,3,4,5,6,7,8,9", 17);
+    /* values then a million commas: the eleventh value (one more than the
+     * longest record holds) is the error, found before the commas are
+     * read */
+    memcpy(text, "1,2,3,4,5,6,7,8,9,10,11", 23);
     ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
-                     "hostile.scn:1:17: expected the end of the line, found "
-                     "`9`");
+                     "hostile.scn:1:22: expected the end of the line, found "
+                     "`11`");
     /* a complete observer, then a million commas on the next line */
     memset(text, ',', length);
     memcpy(text, "0,0,0\n1,", 8);
