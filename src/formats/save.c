@@ -221,11 +221,20 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
                                      "out of memory");
             if (stat(path, &d->st) != 0) {
                 int saved = errno;
+                if (saved == ENOENT || saved == ENOTDIR) {
+                    d->kind = KIND_ABSENT;  /* a new file in a real folder
+                                               reached through /proc */
+                    return RT_OK;
+                }
                 free(d->path);
                 d->path = NULL;
                 return io_error(error, path, saved, "cannot write the image");
             }
-            d->kind = S_ISDIR(d->st.st_mode) ? KIND_DIRECTORY : KIND_STREAM;
+            if (S_ISDIR(d->st.st_mode))
+                return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                                     "cannot write the image: is a "
+                                     "directory");
+            d->kind = KIND_STREAM;
             return RT_OK;
         }
         if (lstat(current, &d->st) != 0) {
