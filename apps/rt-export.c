@@ -11,6 +11,7 @@
  */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,10 +29,11 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
+    "                 [--aperture A] [--focus F]\n"
     "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
     "                 [--check] [--stats] [--quiet]\n"
     "\n"
-    "Renders SCENE.scn (a scene of triangles lit by one point light) to an\n"
+    "Renders SCENE.scn (a scene of triangles lit by point lights) to an\n"
     "image and prints the path it wrote.  SCENE.scn `-' reads the scene from\n"
     "standard input (then -o is needed).\n"
     "\n"
@@ -53,6 +55,11 @@ static const char usage[] =
     "  --samples N       rays per pixel, a square (1, 4, 9, ...; default 1:\n"
     "                    one ray through the pixel's centre)\n"
     "  --sampling S      regular (grid centres, default) or stratified\n"
+    "  --aperture A      lens radius in scene units for depth of field\n"
+    "                    (default: the scene's, else 0: a pinhole camera);\n"
+    "                    smooth only with several samples per pixel\n"
+    "  --focus F         the distance in focus, in scene units along the\n"
+    "                    view axis (default: the scene's, else |AO|)\n"
     "  --kernel K        auto (default: the fastest loops this processor\n"
     "                    runs) or scalar (one facet at a time); the image\n"
     "                    is the same\n"
@@ -82,6 +89,8 @@ typedef struct arguments {
     rt_sampling sampling;
     rt_kernel_choice kernel;
     rt_accel accel;
+    double aperture;        /* negative: the scene's */
+    double focal_distance;  /* 0: the scene's */
     int check;
     int stats;
     int quiet;
@@ -106,6 +115,19 @@ static int parse_int(const char *text, int min, int max, int *value)
     return 1;
 }
 
+/* A finite length in scene units: > 0 when `positive`, else >= 0. */
+static int parse_length(const char *text, int positive, double *value)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (errno != 0 || end == text || *end != '\0' || !isfinite(v) ||
+        (positive ? !(v > 0.0) : !(v >= 0.0)))
+        return 0;
+    *value = v;
+    return 1;
+}
+
 /* Non-zero when the file name at the end of `path` has an extension (a
  * name without one, such as /dev/null or `-', is written as P6). */
 static int has_extension(const char *path)
@@ -120,6 +142,7 @@ static int has_extension(const char *path)
 static int parse_arguments(int argc, char **argv, arguments *a)
 {
     *a = (arguments){.format = RT_IMAGE_P6, .depth = RT_DEFAULT_DEPTH,
+                     .aperture = -1.0,
                      .samples = 1};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
@@ -132,7 +155,9 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--samples") ||
                           !strcmp(arg, "--sampling") ||
                           !strcmp(arg, "--kernel") ||
-                          !strcmp(arg, "--accel");
+                          !strcmp(arg, "--accel") ||
+                          !strcmp(arg, "--aperture") ||
+                          !strcmp(arg, "--focus");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -197,6 +222,14 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                 a->kernel = RT_KERNEL_SCALAR;
             else
                 return usage_error("expected auto or scalar after --kernel, "
+                                   "found '%s'", value);
+        } else if (!strcmp(arg, "--aperture")) {
+            if (!parse_length(value, 0, &a->aperture))
+                return usage_error("expected a lens radius >= 0 after "
+                                   "--aperture, found '%s'", value);
+        } else if (!strcmp(arg, "--focus")) {
+            if (!parse_length(value, 1, &a->focal_distance))
+                return usage_error("expected a distance > 0 after --focus, "
                                    "found '%s'", value);
         } else if (!strcmp(arg, "--accel")) {
             if (!strcmp(value, "auto"))
@@ -295,9 +328,10 @@ static void print_check(const char *path, const rt_scene *scene)
     printf("%s: valid scene\n", path);
     printf("  image      %d x %d\n", info.width, info.height);
     printf("  vertices   %d\n", info.vertex_count);
-    printf("  facets     %d (%d can be hit, %d reflective)\n",
+    printf("  facets     %d (%d can be hit, %d reflective, %d "
+           "transparent)\n",
            info.facet_count, info.live_facet_count,
-           info.reflective_facet_count);
+           info.reflective_facet_count, info.transparent_facet_count);
     printf("  camera     O (%g, %g, %g), A (%g, %g, %g)%s\n",
            info.camera.observer.x, info.camera.observer.y,
            info.camera.observer.z, info.camera.screen_center.x,
@@ -305,10 +339,16 @@ static void print_check(const char *path, const rt_scene *scene)
            info.camera.b_was_projected
                ? ", B projected onto the screen plane"
                : "");
-    printf("  light      (%g, %g, %g), colour %d %d %d\n",
-           info.light_position.x, info.light_position.y,
-           info.light_position.z, info.light_color.r, info.light_color.g,
-           info.light_color.b);
+    if (info.camera.aperture > 0.0)
+        printf("  lens       aperture %g, focal distance %g\n",
+               info.camera.aperture, info.camera.focal_distance);
+    for (int i = 0; i < info.light_count; i++) {
+        rt_light light;
+        rt_scene_light(scene, i, &light);
+        printf("  light      (%g, %g, %g), colour %d %d %d\n",
+               light.position.x, light.position.y, light.position.z,
+               light.color.r, light.color.g, light.color.b);
+    }
     printf("  background %d %d %d\n", info.background.r, info.background.g,
            info.background.b);
     printf("  warnings   %d\n", info.warning_count);
@@ -356,20 +396,25 @@ static void print_stats(const rt_render_stats *s, double load_seconds,
     double tests_per_second = s->seconds > 0 ? s->ray_facet_tests / s->seconds
                                              : 0.0;
     unsigned long long cast = s->camera_rays + s->shadow_rays +
-                              s->reflection_rays;
+                              s->reflection_rays + s->refraction_rays;
     fprintf(stderr,
-            "rays: %llu camera, %llu shadow, %llu reflection (%llu in all)\n"
+            "rays: %llu camera, %llu shadow, %llu reflection, %llu refraction "
+            "(%llu in all)\n"
             "skipped by the scene analysis: %llu shadow rays "
-            "(N.S <= 0 or k = 1), %llu reflection rays (k = 0)\n"
+            "(N.S <= 0 or d = 0), %llu reflection rays (k = 0), %llu "
+            "refraction rays (depth limit or total internal reflection; "
+            "none where t = 0)\n"
             "ray-facet tests: %llu (%.3g per second); %llu more without the "
             "analysis and early exits\n"
             "time: load %.3f s, render %.3f s (%s threads, %s kernel, %s), "
             "write %.3f s\n",
             (unsigned long long)s->camera_rays,
             (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->reflection_rays, cast,
+            (unsigned long long)s->reflection_rays,
+            (unsigned long long)s->refraction_rays, cast,
             (unsigned long long)s->shadow_rays_skipped,
             (unsigned long long)s->reflection_rays_skipped,
+            (unsigned long long)s->refraction_rays_skipped,
             (unsigned long long)s->ray_facet_tests, tests_per_second,
             (unsigned long long)s->ray_facet_tests_skipped, load_seconds,
             s->seconds, a->threads == 0 ? "all" : "the given",
@@ -491,6 +536,8 @@ int main(int argc, char **argv)
     options.samples = a.samples;
     options.sampling = a.sampling;
     options.kernel = a.kernel;
+    options.aperture = a.aperture;
+    options.focal_distance = a.focal_distance;
     options.accel = a.accel;
     options.stats = &stats;
     if (!a.quiet && isatty(STDERR_FILENO)) {

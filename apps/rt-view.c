@@ -10,6 +10,7 @@
  */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <time.h>
@@ -44,6 +45,11 @@ static const char usage_text[] =
     "                for a quick preview or 2 for detail (default 1; the\n"
     "                window is scaled down to fit the screen either way)\n"
     "  --threads N   rendering threads, 0 for one per core (default 0)\n"
+    "  --samples N   rays per pixel, a square (1, 4, 9, ...; default 1)\n"
+    "  --aperture A  lens radius in scene units (default: the scene's; 0 for\n"
+    "                a pinhole); depth of field needs several samples\n"
+    "  --focus F     distance in focus, in scene units along the view axis\n"
+    "                (default: the scene's, else the screen's distance)\n"
     "  --help        show this help and exit\n"
     "  --version     show the version and exit\n"
     "\n"
@@ -66,6 +72,9 @@ typedef struct viewer {
     double scale;
     int max_depth;
     int threads;
+    int samples;
+    double aperture;            /* negative: the scene's */
+    double focal_distance;      /* 0: the scene's */
     char *scene_path;           /* of the session; NULL when none */
     view_session *session;
     view_window *window;
@@ -176,6 +185,9 @@ static void open_scene(viewer *v, const char *path)
     view_session_options_init(&options);
     options.max_depth = v->max_depth;
     options.threads = v->threads;
+    options.samples = v->samples;
+    options.aperture = v->aperture;
+    options.focal_distance = v->focal_distance;
     options.notify = wake;
     options.notify_context = v;
     view_session *session;
@@ -401,6 +413,19 @@ static int parse_scale(const char *text, double *value)
     return 1;
 }
 
+/* A finite length in scene units: > 0 when `positive`, else >= 0. */
+static int parse_length(const char *text, int positive, double *value)
+{
+    char *end;
+    errno = 0;
+    double number = strtod(text, &end);
+    if (errno || end == text || *end || !isfinite(number) ||
+        (positive ? !(number > 0.0) : !(number >= 0.0)))
+        return 0;
+    *value = number;
+    return 1;
+}
+
 static int usage_error(const char *message, const char *argument)
 {
     fprintf(stderr, PROGRAM ": %s '%s'\nTry '" PROGRAM " --help'.\n",
@@ -422,6 +447,32 @@ static int parse_arguments(int argc, char **argv, viewer *v,
         } else if (strcmp(arg, "--version") == 0) {
             printf(PROGRAM " (libraytrace) %s\n", rt_version_string());
             return 0;
+        } else if (strcmp(arg, "--samples") == 0 ||
+                   strcmp(arg, "--aperture") == 0 ||
+                   strcmp(arg, "--focus") == 0) {
+            if (next == NULL)
+                return usage_error("missing value after", arg);
+            i++;
+            if (strcmp(arg, "--samples") == 0) {
+                int root = 1;
+                if (!parse_int(next, 1, 1024, &v->samples))
+                    return usage_error("--samples expects a square in "
+                                       "1..1024, not", next);
+                while (root * root < v->samples)
+                    root++;
+                if (root * root != v->samples)
+                    return usage_error("--samples expects a square (1, 4, "
+                                       "9, 16, ...), not", next);
+            } else if (!parse_length(next, strcmp(arg, "--focus") == 0,
+                                     strcmp(arg, "--focus") == 0
+                                         ? &v->focal_distance
+                                         : &v->aperture)) {
+                return usage_error(strcmp(arg, "--focus") == 0
+                                       ? "--focus expects a distance > 0, not"
+                                       : "--aperture expects a radius >= 0, "
+                                         "not",
+                                   next);
+            }
         } else if (strcmp(arg, "--depth") == 0 ||
                    strcmp(arg, "--threads") == 0 ||
                    strcmp(arg, "--scale") == 0) {
@@ -458,6 +509,8 @@ int main(int argc, char **argv)
     memset(&v, 0, sizeof v);
     v.scale = 1.0;
     v.max_depth = RT_DEFAULT_DEPTH;
+    v.samples = 1;
+    v.aperture = -1.0;
     const char *scene;
     int code = parse_arguments(argc, argv, &v, &scene);
     if (code >= 0)
