@@ -1,13 +1,18 @@
 /*
- * rt-export - render a `.scn` scene to a PPM image, headless.
+ * rt-export - render a `.scn` scene to a PPM or PNG image, headless.
  *
  * A thin command-line client of libraytrace: parse the arguments, load the
- * scene, render it on all cores with a progress line on a terminal, save the
- * image atomically, print the path.  Exit status: 0 success, 1 bad input or
- * a failed write, 2 bad usage.
+ * scene (from a file or standard input), check that the output can be
+ * written, render on all cores with a progress line on a terminal, save the
+ * image with the library's safe save (or stream it to standard output),
+ * print the path.  Exit status: 0 success, 1 bad input or a failed write,
+ * 2 bad usage; a signal during the save ends it killed by that signal, the
+ * previous file intact.
  */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,19 +26,27 @@
 #define EXIT_USAGE 2
 
 static const char usage[] =
-    "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6] [--depth N]\n"
+    "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
+    "                 [--aperture A] [--focus F]\n"
     "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
     "                 [--check] [--stats] [--quiet]\n"
     "\n"
-    "Renders SCENE.scn (a scene of triangles lit by one point light) to a\n"
-    "PPM image and prints the path it wrote.\n"
+    "Renders SCENE.scn (a scene of triangles lit by point lights) to an\n"
+    "image and prints the path it wrote.  SCENE.scn `-' reads the scene from\n"
+    "standard input (then -o is needed).\n"
     "\n"
     "  -o, --output OUT  where to write the image (default: the scene's name\n"
-    "                    with .ppm, in the current directory)\n"
-    "  --format p3|p6    ASCII P3 (the course's format) or binary P6\n"
-    "                    (default p6)\n"
+    "                    with .ppm, or .png with --format png, in the\n"
+    "                    current directory); `-' writes the image to\n"
+    "                    standard output.  A device, FIFO or socket is\n"
+    "                    written directly; a file is replaced atomically,\n"
+    "                    keeping its mode, owner and links\n"
+    "  --format F        p6 (binary PPM), p3 (ASCII PPM, the course's\n"
+    "                    format) or png; default: from the extension of OUT\n"
+    "                    (.png png, .ppm and .pnm p6; another extension is\n"
+    "                    an error), p6 when OUT has none\n"
     "  --depth N         reflections followed after a primary ray (default 5)\n"
     "  --threads N       rendering threads; 0 = one per core (default 0)\n"
     "  --precision P     arithmetic of the renderer: double (the reference,\n"
@@ -42,6 +55,11 @@ static const char usage[] =
     "  --samples N       rays per pixel, a square (1, 4, 9, ...; default 1:\n"
     "                    one ray through the pixel's centre)\n"
     "  --sampling S      regular (grid centres, default) or stratified\n"
+    "  --aperture A      lens radius in scene units for depth of field\n"
+    "                    (default: the scene's, else 0: a pinhole camera);\n"
+    "                    smooth only with several samples per pixel\n"
+    "  --focus F         the distance in focus, in scene units along the\n"
+    "                    view axis (default: the scene's, else |AO|)\n"
     "  --kernel K        auto (default: the fastest loops this processor\n"
     "                    runs) or scalar (one facet at a time); the image\n"
     "                    is the same\n"
@@ -55,12 +73,14 @@ static const char usage[] =
     "  -h, --help        this help\n"
     "  --version         the version\n"
     "\n"
-    "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage.\n";
+    "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage.\n"
+    "A signal during the save leaves the previous file intact.\n";
 
 typedef struct arguments {
     const char *scene;
     const char *output;
-    rt_ppm_format format;
+    rt_image_format format;
+    int format_given;
     int depth;
     int threads;
     rt_precision precision;
@@ -69,6 +89,8 @@ typedef struct arguments {
     rt_sampling sampling;
     rt_kernel_choice kernel;
     rt_accel accel;
+    double aperture;        /* negative: the scene's */
+    double focal_distance;  /* 0: the scene's */
     int check;
     int stats;
     int quiet;
@@ -93,10 +115,34 @@ static int parse_int(const char *text, int min, int max, int *value)
     return 1;
 }
 
+/* A finite length in scene units: > 0 when `positive`, else >= 0. */
+static int parse_length(const char *text, int positive, double *value)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (errno != 0 || end == text || *end != '\0' || !isfinite(v) ||
+        (positive ? !(v > 0.0) : !(v >= 0.0)))
+        return 0;
+    *value = v;
+    return 1;
+}
+
+/* Non-zero when the file name at the end of `path` has an extension (a
+ * name without one, such as /dev/null or `-', is written as P6). */
+static int has_extension(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    return dot != NULL && dot != base;
+}
+
 /* Returns -1 to go on, or an exit status. */
 static int parse_arguments(int argc, char **argv, arguments *a)
 {
-    *a = (arguments){.format = RT_PPM_P6, .depth = RT_DEFAULT_DEPTH,
+    *a = (arguments){.format = RT_IMAGE_P6, .depth = RT_DEFAULT_DEPTH,
+                     .aperture = -1.0,
                      .samples = 1};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
@@ -109,7 +155,9 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--samples") ||
                           !strcmp(arg, "--sampling") ||
                           !strcmp(arg, "--kernel") ||
-                          !strcmp(arg, "--accel");
+                          !strcmp(arg, "--accel") ||
+                          !strcmp(arg, "--aperture") ||
+                          !strcmp(arg, "--focus");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -122,12 +170,15 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             a->output = value;
         } else if (!strcmp(arg, "--format")) {
             if (!strcmp(value, "p3") || !strcmp(value, "P3"))
-                a->format = RT_PPM_P3;
+                a->format = RT_IMAGE_P3;
             else if (!strcmp(value, "p6") || !strcmp(value, "P6"))
-                a->format = RT_PPM_P6;
+                a->format = RT_IMAGE_P6;
+            else if (!strcmp(value, "png") || !strcmp(value, "PNG"))
+                a->format = RT_IMAGE_PNG;
             else
-                return usage_error("expected p3 or p6 after --format, "
+                return usage_error("expected p3, p6 or png after --format, "
                                    "found '%s'", value);
+            a->format_given = 1;
         } else if (!strcmp(arg, "--depth")) {
             if (!parse_int(value, 0, 1000000, &a->depth))
                 return usage_error("expected a depth in 0..1000000, "
@@ -172,6 +223,14 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             else
                 return usage_error("expected auto or scalar after --kernel, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--aperture")) {
+            if (!parse_length(value, 0, &a->aperture))
+                return usage_error("expected a lens radius >= 0 after "
+                                   "--aperture, found '%s'", value);
+        } else if (!strcmp(arg, "--focus")) {
+            if (!parse_length(value, 1, &a->focal_distance))
+                return usage_error("expected a distance > 0 after --focus, "
+                                   "found '%s'", value);
         } else if (!strcmp(arg, "--accel")) {
             if (!strcmp(value, "auto"))
                 a->accel = RT_ACCEL_AUTO;
@@ -200,22 +259,66 @@ static int parse_arguments(int argc, char **argv, arguments *a)
     }
     if (a->scene == NULL)
         return usage_error("%s", "expected a scene file");
+    if (!strcmp(a->scene, "-") && a->output == NULL)
+        return usage_error("%s", "expected -o OUT (or -o - for standard "
+                           "output) with a scene read from standard input");
+    if (!a->format_given && a->output != NULL && has_extension(a->output) &&
+        rt_image_format_from_path(a->output, &a->format) != RT_OK)
+        return usage_error("cannot tell the image format from the name "
+                           "'%s': expected .png, .ppm or .pnm, or --format "
+                           "p3, p6 or png", a->output);
     return -1;
 }
 
-/* "dir/name.scn" -> "name.ppm" (in the current directory). */
-static char *default_output(const char *scene)
+/* "dir/name.scn" -> "name.ppm", or "name.png" for PNG (in the current
+ * directory). */
+static char *default_output(const char *scene, rt_image_format format)
 {
     const char *base = strrchr(scene, '/');
     base = base ? base + 1 : scene;
     const char *dot = strrchr(base, '.');
     size_t length = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    const char *extension = format == RT_IMAGE_PNG ? ".png" : ".ppm";
     char *out = malloc(length + 5);
     if (out != NULL) {
         memcpy(out, base, length);
-        memcpy(out + length, ".ppm", 5);
+        memcpy(out + length, extension, 5);
     }
     return out;
+}
+
+/* Reads the whole scene from standard input and parses it as "<stdin>". */
+static rt_status load_standard_input(rt_scene **scene, rt_error *error)
+{
+    size_t capacity = 1 << 16, used = 0;
+    char *text = malloc(capacity);
+    while (text != NULL) {
+        used += fread(text + used, 1, capacity - used, stdin);
+        if (used < capacity)
+            break;
+        char *bigger = capacity <= SIZE_MAX / 2 ? realloc(text, capacity * 2)
+                                                : NULL;
+        if (bigger == NULL)
+            free(text);
+        text = bigger;
+        capacity *= 2;
+    }
+    if (text == NULL) {
+        *scene = NULL;
+        snprintf(error->message, sizeof error->message,
+                 "<stdin>: out of memory reading the scene");
+        return RT_ERR_NOMEM;
+    }
+    if (ferror(stdin)) {
+        free(text);
+        *scene = NULL;
+        snprintf(error->message, sizeof error->message,
+                 "<stdin>: cannot read: %s", strerror(errno));
+        return RT_ERR_IO;
+    }
+    rt_status status = rt_scene_parse(text, used, "<stdin>", scene, error);
+    free(text);
+    return status;
 }
 
 static void print_check(const char *path, const rt_scene *scene)
@@ -225,9 +328,10 @@ static void print_check(const char *path, const rt_scene *scene)
     printf("%s: valid scene\n", path);
     printf("  image      %d x %d\n", info.width, info.height);
     printf("  vertices   %d\n", info.vertex_count);
-    printf("  facets     %d (%d can be hit, %d reflective)\n",
+    printf("  facets     %d (%d can be hit, %d reflective, %d "
+           "transparent)\n",
            info.facet_count, info.live_facet_count,
-           info.reflective_facet_count);
+           info.reflective_facet_count, info.transparent_facet_count);
     printf("  camera     O (%g, %g, %g), A (%g, %g, %g)%s\n",
            info.camera.observer.x, info.camera.observer.y,
            info.camera.observer.z, info.camera.screen_center.x,
@@ -235,10 +339,16 @@ static void print_check(const char *path, const rt_scene *scene)
            info.camera.b_was_projected
                ? ", B projected onto the screen plane"
                : "");
-    printf("  light      (%g, %g, %g), colour %d %d %d\n",
-           info.light_position.x, info.light_position.y,
-           info.light_position.z, info.light_color.r, info.light_color.g,
-           info.light_color.b);
+    if (info.camera.aperture > 0.0)
+        printf("  lens       aperture %g, focal distance %g\n",
+               info.camera.aperture, info.camera.focal_distance);
+    for (int i = 0; i < info.light_count; i++) {
+        rt_light light;
+        rt_scene_light(scene, i, &light);
+        printf("  light      (%g, %g, %g), colour %d %d %d\n",
+               light.position.x, light.position.y, light.position.z,
+               light.color.r, light.color.g, light.color.b);
+    }
     printf("  background %d %d %d\n", info.background.r, info.background.g,
            info.background.b);
     printf("  warnings   %d\n", info.warning_count);
@@ -286,20 +396,25 @@ static void print_stats(const rt_render_stats *s, double load_seconds,
     double tests_per_second = s->seconds > 0 ? s->ray_facet_tests / s->seconds
                                              : 0.0;
     unsigned long long cast = s->camera_rays + s->shadow_rays +
-                              s->reflection_rays;
+                              s->reflection_rays + s->refraction_rays;
     fprintf(stderr,
-            "rays: %llu camera, %llu shadow, %llu reflection (%llu in all)\n"
+            "rays: %llu camera, %llu shadow, %llu reflection, %llu refraction "
+            "(%llu in all)\n"
             "skipped by the scene analysis: %llu shadow rays "
-            "(N.S <= 0 or k = 1), %llu reflection rays (k = 0)\n"
+            "(N.S <= 0 or d = 0), %llu reflection rays (k = 0), %llu "
+            "refraction rays (depth limit or total internal reflection; "
+            "none where t = 0)\n"
             "ray-facet tests: %llu (%.3g per second); %llu more without the "
             "analysis and early exits\n"
             "time: load %.3f s, render %.3f s (%s threads, %s kernel, %s), "
             "write %.3f s\n",
             (unsigned long long)s->camera_rays,
             (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->reflection_rays, cast,
+            (unsigned long long)s->reflection_rays,
+            (unsigned long long)s->refraction_rays, cast,
             (unsigned long long)s->shadow_rays_skipped,
             (unsigned long long)s->reflection_rays_skipped,
+            (unsigned long long)s->refraction_rays_skipped,
             (unsigned long long)s->ray_facet_tests, tests_per_second,
             (unsigned long long)s->ray_facet_tests_skipped, load_seconds,
             s->seconds, a->threads == 0 ? "all" : "the given",
@@ -333,23 +448,50 @@ static int same_file(const char *a, const char *b)
            sa.st_ino == sb.st_ino;
 }
 
+/* Non-zero when `path` names the file open as descriptor `fd`
+ * (-o /dev/stdout). */
+static int same_file_as(const char *path, int fd)
+{
+    struct stat sp, sf;
+    return stat(path, &sp) == 0 && fstat(fd, &sf) == 0 &&
+           sp.st_dev == sf.st_dev && sp.st_ino == sf.st_ino;
+}
+
 int main(int argc, char **argv)
 {
     arguments a;
     int code = parse_arguments(argc, argv, &a);
     if (code >= 0)
         return code;
+    int to_stdout = a.output != NULL && !strcmp(a.output, "-");
+    int from_stdin = !strcmp(a.scene, "-");
+    const char *scene_name = from_stdin ? "<stdin>" : a.scene;
+    if (!a.check && !rt_image_format_supported(a.format)) {
+        fprintf(stderr, "rt-export: cannot write %s: this build has no PNG "
+                        "support (it was built without libpng); use --format "
+                        "p6 or p3\n", a.output ? a.output : "PNG");
+        return EXIT_BAD_INPUT;
+    }
+    if (!a.check && to_stdout && a.format != RT_IMAGE_P3 &&
+        isatty(STDOUT_FILENO)) {
+        fprintf(stderr, "rt-export: refusing to write a binary image to a "
+                        "terminal; redirect standard output, or use "
+                        "--format p3\n");
+        return EXIT_USAGE;
+    }
 
     rt_scene *scene;
     rt_error error;
     struct timespec load_start;
     clock_gettime(CLOCK_MONOTONIC, &load_start);
-    if (rt_scene_load(a.scene, &scene, &error) != RT_OK) {
+    rt_status loaded = from_stdin ? load_standard_input(&scene, &error)
+                                  : rt_scene_load(a.scene, &scene, &error);
+    if (loaded != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
     if (a.check) {
-        print_check(a.scene, scene);
+        print_check(scene_name, scene);
         rt_scene_free(scene);
         return EXIT_SUCCESS;
     }
@@ -359,21 +501,30 @@ int main(int argc, char **argv)
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-export: %s\n", rt_scene_warning(scene, i)->message);
 
-    char *output = a.output ? NULL : default_output(a.scene);
+    char *output = a.output ? NULL : default_output(a.scene, a.format);
     const char *path = a.output ? a.output : output;
     rt_image image = {0};
     code = EXIT_BAD_INPUT;
-    if (path == NULL || rt_image_create(&image, info.width, info.height)) {
+    if (path == NULL) {
         fprintf(stderr, "rt-export: out of memory\n");
         goto done;
     }
-    if (same_file(path, a.scene)) {
+    if (!from_stdin && !to_stdout && same_file(path, a.scene)) {
         fprintf(stderr, "rt-export: %s: refusing to write the image over "
                         "the scene it was rendered from\n", path);
         goto done;
     }
+    /* A bad output fails now, not after the render. */
+    if (!to_stdout && rt_image_save_check(path, &error) != RT_OK) {
+        fprintf(stderr, "rt-export: %s\n", error.message);
+        goto done;
+    }
+    if (rt_image_create(&image, info.width, info.height) != RT_OK) {
+        fprintf(stderr, "rt-export: out of memory\n");
+        goto done;
+    }
 
-    progress p = {.name = a.scene, .rows = info.height};
+    progress p = {.name = scene_name, .rows = info.height};
     clock_gettime(CLOCK_MONOTONIC, &p.start);
     rt_render_stats stats;
     rt_render_options options;
@@ -385,6 +536,8 @@ int main(int argc, char **argv)
     options.samples = a.samples;
     options.sampling = a.sampling;
     options.kernel = a.kernel;
+    options.aperture = a.aperture;
+    options.focal_distance = a.focal_distance;
     options.accel = a.accel;
     options.stats = &stats;
     if (!a.quiet && isatty(STDERR_FILENO)) {
@@ -395,19 +548,24 @@ int main(int argc, char **argv)
     if (p.shown)
         fprintf(stderr, "\n");
     if (status != RT_OK) {
-        fprintf(stderr, "rt-export: %s: rendering failed: %s\n", a.scene,
+        fprintf(stderr, "rt-export: %s: rendering failed: %s\n", scene_name,
                 rt_status_string(status));
         goto done;
     }
     struct timespec write_start;
     clock_gettime(CLOCK_MONOTONIC, &write_start);
-    if (rt_ppm_save(path, &image, a.format, &error) != RT_OK) {
-        fprintf(stderr, "rt-export: %s\n", error.message);
+    status = to_stdout ? rt_image_write_file(stdout, &image, a.format, &error)
+                       : rt_image_save(path, &image, a.format, &error);
+    if (status != RT_OK) {
+        fprintf(stderr, "rt-export: %s%s\n",
+                to_stdout ? "<stdout>: " : "", error.message);
         goto done;
     }
     if (a.stats)
         print_stats(&stats, load_seconds, seconds_since(&write_start), &a);
-    printf("%s\n", path);
+    /* The path goes to standard output unless the image went there. */
+    if (!to_stdout && !same_file_as(path, STDOUT_FILENO))
+        printf("%s\n", path);
     code = EXIT_SUCCESS;
 done:
     rt_image_destroy(&image);

@@ -10,6 +10,10 @@
  */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <time.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,12 +45,18 @@ static const char usage_text[] =
     "                for a quick preview or 2 for detail (default 1; the\n"
     "                window is scaled down to fit the screen either way)\n"
     "  --threads N   rendering threads, 0 for one per core (default 0)\n"
+    "  --samples N   rays per pixel, a square (1, 4, 9, ...; default 1)\n"
+    "  --aperture A  lens radius in scene units (default: the scene's; 0 for\n"
+    "                a pinhole); depth of field needs several samples\n"
+    "  --focus F     distance in focus, in scene units along the view axis\n"
+    "                (default: the scene's, else the screen's distance)\n"
     "  --help        show this help and exit\n"
     "  --version     show the version and exit\n"
     "\n"
     "Keys:\n"
-    "  S             save the image as PPM next to the scene (SCENE.ppm);\n"
-    "                rows not rendered yet are black; prints the path\n"
+    "  S             save the image next to the scene, as SCENE.png (or\n"
+    "                SCENE.ppm in a build without PNG support); rows not\n"
+    "                rendered yet are black; prints the path\n"
     "  R             render again\n"
     "  + / -         one more / one less reflection, and render again\n"
     "  Q, Esc        quit (a render in progress is cancelled)\n"
@@ -54,12 +64,17 @@ static const char usage_text[] =
     "Drop a .scn file on the window to load and render it.  A scene with\n"
     "errors is reported as FILE:LINE:COLUMN: MESSAGE on stderr and in the\n"
     "title; the picture shown before stays.  The window can be moved,\n"
-    "resized or closed at any time.\n";
+    "resized or closed at any time.  SIGINT, SIGTERM or SIGHUP cancel the\n"
+    "render (and a save under way, leaving the file as it was) and end\n"
+    "rt-view with 128 + the signal's number.\n";
 
 typedef struct viewer {
     double scale;
     int max_depth;
     int threads;
+    int samples;
+    double aperture;            /* negative: the scene's */
+    double focal_distance;      /* 0: the scene's */
     char *scene_path;           /* of the session; NULL when none */
     view_session *session;
     view_window *window;
@@ -68,6 +83,7 @@ typedef struct viewer {
     char title[RT_ERROR_MESSAGE_SIZE + 256];
     int shown;                  /* the window is on screen */
     int quit;
+    int quit_signal;        /* the termination signal that ended it, or 0 */
     int redraw;
 } viewer;
 
@@ -169,6 +185,9 @@ static void open_scene(viewer *v, const char *path)
     view_session_options_init(&options);
     options.max_depth = v->max_depth;
     options.threads = v->threads;
+    options.samples = v->samples;
+    options.aperture = v->aperture;
+    options.focal_distance = v->focal_distance;
     options.notify = wake;
     options.notify_context = v;
     view_session *session;
@@ -195,13 +214,41 @@ static void open_scene(viewer *v, const char *path)
     v->redraw = 1;
 }
 
+/* SIGINT, SIGTERM and SIGHUP are blocked in every thread (main() blocks
+ * them before any thread starts) and taken here, in the event loop, so that
+ * a save under way first removes its temporary file (rt_image_save). */
+static void termination_signals(sigset_t *set)
+{
+    sigemptyset(set);
+    sigaddset(set, SIGINT);
+    sigaddset(set, SIGTERM);
+    sigaddset(set, SIGHUP);
+}
+
+/* Takes a pending termination signal, if any, and asks the loop to quit. */
+static void take_termination_signal(viewer *v)
+{
+    sigset_t set;
+    termination_signals(&set);
+    struct timespec now = {0, 0};
+    int signal_number = sigtimedwait(&set, NULL, &now);
+    if (signal_number > 0) {
+        v->quit = 1;
+        v->quit_signal = signal_number;
+    }
+}
+
 /* Saves the finished rows (the others black) next to the scene. */
 static void save_image(viewer *v)
 {
     if (v->session == NULL)
         return;
     char path[4096];
-    if (!view_scene_image_path(v->scene_path, path, sizeof path)) {
+    rt_image_format format =
+        rt_image_format_supported(RT_IMAGE_PNG) ? RT_IMAGE_PNG : RT_IMAGE_P6;
+    if (!view_scene_image_path(v->scene_path,
+                               format == RT_IMAGE_PNG ? ".png" : ".ppm", path,
+                               sizeof path)) {
         show_message(v, "the image's path is too long");
         return;
     }
@@ -220,7 +267,10 @@ static void save_image(viewer *v)
         }
     }
     rt_error error;
-    if (rt_ppm_save(path, &copy, RT_PPM_P6, &error) != RT_OK) {
+    rt_status status = rt_image_save(path, &copy, format, &error);
+    if (status == RT_ERR_INTERRUPTED) {
+        take_termination_signal(v);     /* the file is as it was */
+    } else if (status != RT_OK) {
         show_message(v, error.message);
     } else if (rows < image->height) {
         printf("%s (partial: %d of %d rows)\n", path, rows, image->height);
@@ -321,6 +371,7 @@ static void run(viewer *v)
             while (!v->quit && SDL_PollEvent(&event))
                 handle_event(v, &event);
         }
+        take_termination_signal(v);
         if (v->quit)
             break;
         now = SDL_GetTicks64();
@@ -362,6 +413,19 @@ static int parse_scale(const char *text, double *value)
     return 1;
 }
 
+/* A finite length in scene units: > 0 when `positive`, else >= 0. */
+static int parse_length(const char *text, int positive, double *value)
+{
+    char *end;
+    errno = 0;
+    double number = strtod(text, &end);
+    if (errno || end == text || *end || !isfinite(number) ||
+        (positive ? !(number > 0.0) : !(number >= 0.0)))
+        return 0;
+    *value = number;
+    return 1;
+}
+
 static int usage_error(const char *message, const char *argument)
 {
     fprintf(stderr, PROGRAM ": %s '%s'\nTry '" PROGRAM " --help'.\n",
@@ -383,6 +447,32 @@ static int parse_arguments(int argc, char **argv, viewer *v,
         } else if (strcmp(arg, "--version") == 0) {
             printf(PROGRAM " (libraytrace) %s\n", rt_version_string());
             return 0;
+        } else if (strcmp(arg, "--samples") == 0 ||
+                   strcmp(arg, "--aperture") == 0 ||
+                   strcmp(arg, "--focus") == 0) {
+            if (next == NULL)
+                return usage_error("missing value after", arg);
+            i++;
+            if (strcmp(arg, "--samples") == 0) {
+                int root = 1;
+                if (!parse_int(next, 1, 1024, &v->samples))
+                    return usage_error("--samples expects a square in "
+                                       "1..1024, not", next);
+                while (root * root < v->samples)
+                    root++;
+                if (root * root != v->samples)
+                    return usage_error("--samples expects a square (1, 4, "
+                                       "9, 16, ...), not", next);
+            } else if (!parse_length(next, strcmp(arg, "--focus") == 0,
+                                     strcmp(arg, "--focus") == 0
+                                         ? &v->focal_distance
+                                         : &v->aperture)) {
+                return usage_error(strcmp(arg, "--focus") == 0
+                                       ? "--focus expects a distance > 0, not"
+                                       : "--aperture expects a radius >= 0, "
+                                         "not",
+                                   next);
+            }
         } else if (strcmp(arg, "--depth") == 0 ||
                    strcmp(arg, "--threads") == 0 ||
                    strcmp(arg, "--scale") == 0) {
@@ -419,10 +509,18 @@ int main(int argc, char **argv)
     memset(&v, 0, sizeof v);
     v.scale = 1.0;
     v.max_depth = RT_DEFAULT_DEPTH;
+    v.samples = 1;
+    v.aperture = -1.0;
     const char *scene;
     int code = parse_arguments(argc, argv, &v, &scene);
     if (code >= 0)
         return code;
+
+    /* Before any thread exists, so that every thread inherits the mask. */
+    sigset_t signals;
+    termination_signals(&signals);
+    pthread_sigmask(SIG_BLOCK, &signals, NULL);
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
 
     SDL_SetMainReady();
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
@@ -456,5 +554,5 @@ int main(int argc, char **argv)
     view_window_destroy(v.window);
     free(v.scene_path);
     SDL_Quit();
-    return 0;
+    return v.quit_signal ? 128 + v.quit_signal : 0;
 }

@@ -114,7 +114,7 @@ rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
                        .light_color = {255, 255, 255}};
     look_at_origin(&d, (rt_vec3){1.0, -4.0, 1.5}, 0.45);
     rt_vec3 *v = malloc((size_t)facets * 3 * sizeof *v);
-    rt_facet_desc *f = malloc((size_t)facets * sizeof *f);
+    rt_facet_desc *f = calloc((size_t)facets, sizeof *f);
     if (v == NULL || f == NULL)
         return build(&d, v, f, scene, error);
     uint64_t state = 12345;

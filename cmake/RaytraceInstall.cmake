@@ -30,6 +30,14 @@ install(FILES "${PROJECT_BINARY_DIR}/include/raytrace/version.h"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/raytrace")
 
 # The CMake package.
+# A static libraytrace built with libpng needs it at link time.
+if(RAYTRACE_HAVE_PNG)
+  set(RAYTRACE_PC_REQUIRES_PRIVATE "libpng")
+  set(RAYTRACE_FIND_PNG "find_dependency(PNG)")
+else()
+  set(RAYTRACE_PC_REQUIRES_PRIVATE "")
+  set(RAYTRACE_FIND_PNG "")
+endif()
 install(EXPORT raytraceTargets
   NAMESPACE raytrace::
   DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")

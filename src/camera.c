@@ -45,6 +45,8 @@ const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
     camera->width = width;
     camera->height = height;
     camera->b_was_projected = projected;
+    camera->aperture = 0.0;
+    camera->focal_distance = v3_length(ao);
     return NULL;
 }
 

@@ -35,6 +35,8 @@ typedef struct job {
     kernel_ref kernel;
     rt_trace_settings settings;
     int grid;               /* samples per side of a pixel */
+    double aperture;        /* the lens radius of this render (0: pinhole) */
+    double focal_distance;  /* the distance in focus, along AO */
     rt_image *image;
     int row_end;
     atomic_int next_row;
@@ -103,6 +105,8 @@ void rt_render_options_init(rt_render_options *options)
     options->samples = 1;
     options->sampling = RT_SAMPLING_REGULAR;
     options->accel = RT_ACCEL_AUTO;
+    options->aperture = -1.0;           /* the scene's */
+    options->focal_distance = 0.0;      /* the scene's */
 }
 
 unsigned char rt_channel_to_byte(double value)
@@ -152,6 +156,56 @@ static rt_ray camera_ray_at(const rt_camera *camera, double x, double y)
     return (rt_ray){camera->observer, v3_sub(p, camera->observer)};
 }
 
+#define PI 3.14159265358979323846
+
+/*
+ * Shirley and Chiu's concentric map ("A Low Distortion Map Between Disk and
+ * Square", JGT 2(3), 1997, section 3): the point (x, y) of the unit square
+ * to the unit disk, strata to strata.
+ */
+static void square_to_disk(double x, double y, double *u, double *v)
+{
+    double p = 2.0 * x - 1.0, q = 2.0 * y - 1.0;
+    if (p == 0.0 && q == 0.0) {
+        *u = *v = 0.0;
+        return;
+    }
+    double r, phi;
+    if (fabs(p) > fabs(q)) {
+        r = p;
+        phi = (PI / 4.0) * (q / p);
+    } else {
+        r = q;
+        phi = PI / 2.0 - (PI / 4.0) * (p / q);
+    }
+    *u = r * cos(phi);
+    *v = r * sin(phi);
+}
+
+/*
+ * The thin-lens ray of the rendering model: `pinhole` is the ray from the
+ * observer O through the screen point P; (x, y) the point of the unit
+ * square that picks the lens point.  The ray starts at
+ * L = O + a (u AB/|AB| + v AC/|AC|), (u, v) = square_to_disk(x, y), and
+ * goes towards the focus point F = O + (P - O) f / ((P - O).w), w the unit
+ * vector from O to A.
+ */
+static rt_ray lens_ray(const job *j, rt_ray pinhole, double x, double y)
+{
+    const rt_camera *camera = &j->scene->camera;
+    double u, v;
+    square_to_disk(x, y, &u, &v);
+    rt_vec3 w = v3_normalize(v3_sub(camera->screen_center, camera->observer));
+    rt_vec3 to_focus = v3_scale(pinhole.direction,
+                                j->focal_distance /
+                                    v3_dot(pinhole.direction, w));
+    rt_vec3 focus = v3_add(camera->observer, to_focus);
+    rt_vec3 offset = v3_add(v3_scale(v3_normalize(camera->right), u),
+                            v3_scale(v3_normalize(camera->up), v));
+    rt_vec3 lens = v3_add(camera->observer, v3_scale(offset, j->aperture));
+    return (rt_ray){lens, v3_sub(focus, lens)};
+}
+
 static rt_color trace(const job *j, rt_ray ray, rt_counters *counters)
 {
     if (j->kernel.d != NULL)
@@ -168,8 +222,11 @@ static rt_color render_pixel(const job *j, int i, int row,
     const rt_camera *camera = &j->scene->camera;
     int n = j->grid;
     if (n == 1) {
+        rt_ray ray = rt_camera_ray(camera, i, row);
+        if (j->aperture > 0.0)  /* one sample: the lens centre */
+            ray = lens_ray(j, ray, 0.5, 0.5);
         (*rays)++;
-        return trace(j, rt_camera_ray(camera, i, row), counters);
+        return trace(j, ray, counters);
     }
     rt_color sum = {0.0, 0.0, 0.0};
     int stratified = j->options->sampling == RT_SAMPLING_STRATIFIED;
@@ -184,6 +241,18 @@ static rt_color render_pixel(const job *j, int i, int row,
                                   : 0.5;
             rt_ray ray = camera_ray_at(camera, i + (sx + u) / n,
                                        row + (sy + v) / n);
+            if (j->aperture > 0.0) {
+                /* The lens stratum is the pixel's, transposed, so that
+                 * where a sample falls in the pixel and on the lens are
+                 * not aligned; jittered like it when stratified. */
+                double lu = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                                   2 * (sample + n * n))
+                                       : 0.5;
+                double lv = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                                   2 * (sample + n * n) + 1)
+                                       : 0.5;
+                ray = lens_ray(j, ray, (sy + lu) / n, (sx + lv) / n);
+            }
             rt_color c = trace(j, ray, counters);
             sum.r += c.r, sum.g += c.g, sum.b += c.b;
             (*rays)++;
@@ -238,6 +307,9 @@ static void *worker(void *argument)
     j->totals.tests += counters.tests;
     j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
     j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
+    j->totals.refraction_rays += counters.refraction_rays;
+    j->totals.refraction_rays_skipped += counters.refraction_rays_skipped;
+    j->totals.out_of_memory |= counters.out_of_memory;
     j->totals.early_exit_saved += counters.early_exit_saved;
     j->totals.accel_queries += counters.accel_queries;
     j->totals.accel_leaves += counters.accel_leaves;
@@ -278,6 +350,8 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
     stats->ray_facet_tests = j->totals.tests;
     stats->shadow_rays_skipped = j->totals.shadow_rays_skipped;
     stats->reflection_rays_skipped = j->totals.reflection_rays_skipped;
+    stats->refraction_rays = j->totals.refraction_rays;
+    stats->refraction_rays_skipped = j->totals.refraction_rays_skipped;
     stats->seconds = seconds;
     /* what a renderer that skips nothing would test on top */
     uint64_t live = (uint64_t)j->scene->live_count;
@@ -285,7 +359,7 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
     uint64_t skipped_rays = stats->shadow_rays_skipped +
                             stats->reflection_rays_skipped;
     uint64_t cast = stats->camera_rays + stats->shadow_rays +
-                    stats->reflection_rays;
+                    stats->reflection_rays + stats->refraction_rays;
     stats->ray_facet_tests_skipped =
         skipped_rays * (live + dead) + cast * dead + j->totals.early_exit_saved;
     if (j->settings.octree) {
@@ -332,7 +406,8 @@ static int fits_float(const rt_scene *scene)
                           v3_max_abs(v3_add(c->screen_center,
                                             v3_add(v3_abs(c->right),
                                                    v3_abs(c->up)))));
-    largest = fmax(largest, v3_max_abs(scene->light));
+    for (int i = 0; i < scene->light_count; i++)
+        largest = fmax(largest, v3_max_abs(scene->lights[i].position));
     for (int i = 0; i < scene->vertex_count; i++)
         largest = fmax(largest, v3_max_abs(scene->vertices[i]));
     return largest < FLT_MAX;
@@ -366,8 +441,16 @@ rt_status rt_render_rows(const rt_scene *scene,
         return RT_ERR_ARGUMENT;
 
     double start = now_seconds();
+    double aperture = options->aperture >= 0.0 ? options->aperture
+                                               : scene->camera.aperture;
+    double focal_distance = options->focal_distance > 0.0
+                                ? options->focal_distance
+                                : scene->camera.focal_distance;
+    if (!isfinite(aperture) || !isfinite(focal_distance))
+        return RT_ERR_ARGUMENT;
     job j = {.scene = scene, .options = options, .image = image,
-             .row_end = row_end, .grid = grid,
+             .row_end = row_end, .grid = grid, .aperture = aperture,
+             .focal_distance = focal_distance,
              .settings = {options->max_depth, options->fast_inv_sqrt != 0,
                           options->kernel, NULL, 0}};
     /* The float kernel is built by the first float render and kept with
@@ -428,6 +511,8 @@ rt_status rt_render_rows(const rt_scene *scene,
         fill_stats(&j, now_seconds() - start, options->stats);
     if (status == RT_OK && atomic_load(&j.cancelled))
         status = RT_ERR_CANCELLED;
+    if (status == RT_OK && j.totals.out_of_memory)
+        status = RT_ERR_NOMEM;
     return status;
 }
 

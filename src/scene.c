@@ -121,9 +121,16 @@ static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
         (d->facet_count > 0 && d->facets == NULL))
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected vertex and facet arrays");
+    if (d->more_light_count < 0 ||
+        (d->more_light_count > 0 && d->more_lights == NULL))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected an array of further lights");
     if (!v3_is_finite(d->observer) || !v3_is_finite(d->screen_center) ||
         !v3_is_finite(d->screen_right) || !v3_is_finite(d->light_position))
         what = "the camera and the light";
+    for (int i = 0; what == NULL && i < d->more_light_count; i++)
+        if (!v3_is_finite(d->more_lights[i].position))
+            what = "every light";
     for (int i = 0; what == NULL && i < d->vertex_count; i++)
         if (!v3_is_finite(d->vertices[i]))
             what = "every vertex";
@@ -142,7 +149,28 @@ static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
             return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
                                  "facet %d: expected k in [0, 1], found %g",
                                  i, f->k);
+        if (!(f->t >= 0.0 && f->t <= 1.0 - f->k))
+            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                                 "facet %d: expected a transparency t in "
+                                 "[0, 1 - k] = [0, %g], found %g",
+                                 i, 1.0 - f->k, f->t);
+        if (!(f->n >= 0.0 && isfinite(f->n)))
+            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                                 "facet %d: expected a refractive index "
+                                 "n > 0, found %g", i, f->n);
+        if (f->d_given && !(f->d >= 0.0 && isfinite(f->d)))
+            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                                 "facet %d: expected a diffuse weight "
+                                 "d >= 0, found %g", i, f->d);
     }
+    if (!(d->aperture >= 0.0 && isfinite(d->aperture)))
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected an aperture a >= 0, found %g",
+                             d->aperture);
+    if (!(d->focal_distance >= 0.0 && isfinite(d->focal_distance)))
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected a focal distance f > 0 (or 0 for "
+                             "|AO|), found %g", d->focal_distance);
     return RT_OK;
 }
 
@@ -190,8 +218,10 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
     s->warnings = malloc((nf ? nf : 1) * sizeof *s->warnings);
+    s->light_count = 1 + d->more_light_count;
+    s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
     if ((name && !s->name) || !s->vertices || !s->facets ||
-        !s->warnings) {
+        !s->warnings || !s->lights) {
         rt_scene_free(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
@@ -200,8 +230,13 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
     s->background = d->background;
-    s->light = d->light_position;
-    s->light_color = d->light_color;
+    s->lights[0] = (rt_light){d->light_position, d->light_color};
+    for (int i = 0; i < d->more_light_count; i++)
+        s->lights[1 + i] = d->more_lights[i];
+    if (d->aperture > 0.0)
+        s->camera.aperture = d->aperture;
+    if (d->focal_distance > 0.0)
+        s->camera.focal_distance = d->focal_distance;
 
     for (int i = 0; i < d->facet_count; i++) {
         const rt_facet_desc *f = &d->facets[i];
@@ -210,6 +245,9 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
                 c = d->vertices[f->vertex[2]];
         memcpy(info->vertex, f->vertex, sizeof info->vertex);
         info->k = f->k;
+        info->t = f->t;
+        info->n = f->n > 0.0 ? f->n : 1.0;
+        info->d = f->d_given ? f->d : 1.0 - f->k - f->t;
         info->color = f->color;
         info->line = facet_lines ? facet_lines[i] : 0;
         info->normal = facet_normal(a, b, c);
@@ -220,6 +258,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
         }
         s->live_count++;
         s->reflective_count += f->k > 0.0;
+        s->transparent_count += f->t > 0.0;
     }
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
@@ -251,6 +290,7 @@ void rt_scene_free(rt_scene *scene)
     free(scene->name);
     free(scene->vertices);
     free(scene->facets);
+    free(scene->lights);
     rt__kernel_d_free(scene->kernel);
     rt__kernel_f_free(atomic_load(&scene->kernel_f));
     pthread_mutex_destroy(&scene->kernel_lock);
@@ -269,9 +309,11 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
     info->reflective_facet_count = s->reflective_count;
     info->warning_count = s->warning_count;
     info->background = s->background;
-    info->light_position = s->light;
-    info->light_color = s->light_color;
+    info->light_position = s->lights[0].position;
+    info->light_color = s->lights[0].color;
     info->camera = s->camera;
+    info->light_count = s->light_count;
+    info->transparent_facet_count = s->transparent_count;
 }
 
 rt_vec3 rt_scene_vertex(const rt_scene *scene, int i)
@@ -284,6 +326,11 @@ void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
     *facet = scene->facets[i];
 }
 
+void rt_scene_light(const rt_scene *scene, int i, rt_light *light)
+{
+    *light = scene->lights[i];
+}
+
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
 {
     return &scene->warnings[i];
@@ -294,8 +341,8 @@ void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
     source->vertices = s->vertices;
     source->facets = s->facets;
     source->facet_count = s->facet_count;
-    source->light_position = s->light;
-    source->light_color = s->light_color;
+    source->lights = s->lights;
+    source->light_count = s->light_count;
     source->background = s->background;
 }
 

@@ -26,14 +26,15 @@ struct rt_scene {
     rt_warning *warnings;
     int warning_count;
     rt_rgb8 background;
-    rt_vec3 light;
-    rt_rgb8 light_color;
+    rt_light *lights;       /* light_count >= 1; the first is the file's */
+    int light_count;
     rt_kernel_d *kernel;    /* what the double-precision renderer reads */
     _Atomic(rt_kernel_f *) kernel_f;    /* the float renderer's, built by
                                            the first float render */
     pthread_mutex_t kernel_lock;        /* serialises that construction */
     int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
+    int transparent_count;  /* live facets with t > 0 */
 };
 
 /*
@@ -46,7 +47,8 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
                           rt_error *error);
 
 /*
- * Computes the camera of SPEC.md section 2.  Returns NULL on success, or a
+ * Computes the camera of SPEC.md section 2 (aperture 0, focal distance
+ * |AO|: the pinhole camera).  Returns NULL on success, or a
  * phrase saying what is degenerate ("the observer O is the screen centre A").
  */
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,

@@ -437,13 +437,14 @@ START_TEST(line_of_commas_is_refused_at_the_first_stray_comma)
     ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:1: expected a number, found `,`");
-    /* values then a million commas: the ninth value is the error, found
-     * before the commas are read */
-    memcpy(text, "1,2,3,4,5,6,7,8,9", 17);
+    /* values then a million commas: the eleventh value (one more than the
+     * longest record holds) is the error, found before the commas are
+     * read */
+    memcpy(text, "1,2,3,4,5,6,7,8,9,10,11", 23);
     ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
-                     "hostile.scn:1:17: expected the end of the line, found "
-                     "`9`");
+                     "hostile.scn:1:22: expected the end of the line, found "
+                     "`11`");
     /* a complete observer, then a million commas on the next line */
     memset(text, ',', length);
     memcpy(text, "0,0,0\n1,", 8);
@@ -822,8 +823,8 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     ck_assert_int_eq(error.status, RT_ERR_IO);
     char expected[PATH_MAX + 128];
     snprintf(expected, sizeof expected,
-             "%s: cannot create a temporary file here: No such file or "
-             "directory", path);
+             "%s: cannot write the image: the folder %s/missing/ does not "
+             "exist", path, dir);
     ck_assert_str_eq(error.message, expected);
     assert_dir_holds(dir, "");
     /* a path through a regular file, which no user (root included) can
@@ -833,7 +834,7 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     char *through = join(dir, "plain/out.ppm");
     ck_assert_int_eq(rt_ppm_save(through, &image, RT_PPM_P6, &error),
                      RT_ERR_IO);
-    ck_assert_ptr_nonnull(strstr(error.message, "Not a directory"));
+    ck_assert_ptr_nonnull(strstr(error.message, "plain/ is not a folder"));
     assert_dir_holds(dir, "plain");
     /* a read-only directory, when permissions apply to this user */
     ck_assert_int_eq(chmod(dir, 0555), 0);
@@ -1131,7 +1132,8 @@ START_TEST(export_refuses_to_write_over_its_own_scene)
     char *link_path = join(dir, "link.scn");
     ck_assert_int_eq(symlink("scene.scn", link_path), 0);
     for (int i = 0; i < 3; i++) {
-        const char *args[] = {"scene.scn", "-o", outputs[i], "-q", NULL};
+        const char *args[] = {"scene.scn", "-o", outputs[i], "--format",
+                              "p6", "-q", NULL};
         int code = run_export(dir, args, -1, RLIM_INFINITY, &out, &err);
         ck_assert_int_eq(code, 1);
         char expected[256];
@@ -1173,8 +1175,8 @@ START_TEST(export_exit_codes_say_what_went_wrong)
         {{"absent.scn", NULL}, 1,
          "rt-export: absent.scn: cannot open: No such file or directory\n"},
         {{"scene.scn", "-o", "no/such/dir/x.ppm", "-q", NULL}, 1,
-         "rt-export: no/such/dir/x.ppm: cannot create a temporary file "
-         "here: No such file or directory\n"},
+         "rt-export: no/such/dir/x.ppm: cannot write the image: the "
+         "folder no/such/dir/ does not exist\n"},
         {{"scene.scn", "--depth", "-1", NULL}, 2,
          "rt-export: expected a depth in 0..1000000, found '-1'\n"
          "Try 'rt-export --help'.\n"},

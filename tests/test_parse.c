@@ -155,8 +155,20 @@ static const bad_case bad_cases[] = {
     /* too many values: the first extra token */
     {"observer with 4 values", 1, "0 0 5 7", ALL, NULL, S_SYNTAX, 1, 7, "7", 1},
     {"vertex with 4 values", 5, "1 -1 0 0", ALL, NULL, S_SYNTAX, 5, 8, "0", 1},
-    {"facet with 8 values", 8, "1 2 3 0 255 0 0 9", ALL, NULL, S_SYNTAX, 8, 17,
-     "9", 1},
+    {"facet with 10 values", 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL, S_SYNTAX, 8,
+     21, "9", 1},
+    {"facet with k + t > 1", 8, "1 2 3 0.5 255 0 0 0.6", ALL, NULL, S_RANGE, 8,
+     19, "0.6", 1},
+    {"facet with t < 0", 8, "1 2 3 0 255 0 0 -0.1", ALL, NULL, S_RANGE, 8, 17,
+     "-0.1", 1},
+    {"facet with n = 0", 8, "1 2 3 0 255 0 0 0.5 0", ALL, NULL, S_RANGE, 8, 21,
+     "0", 1},
+    {"screen with an aperture and no focal distance", 2,
+     "0 0 4 1 0 0 8 8 0.1", ALL, NULL, S_SYNTAX, 2, 20, "", 1},
+    {"screen with a negative aperture", 2, "0 0 4 1 0 0 8 8 -1 3", ALL, NULL,
+     S_RANGE, 2, 17, "-1", 1},
+    {"screen with a zero focal distance", 2, "0 0 4 1 0 0 8 8 0.1 0", ALL,
+     NULL, S_RANGE, 2, 21, "0", 1},
     {"background with 4 values", 9, "10 20 30 40", ALL, NULL, S_SYNTAX, 9, 10,
      "40", 1},
     {"count with 2 values", 3, "3 4", ALL, NULL, S_SYNTAX, 3, 3, "4", 1},
@@ -172,8 +184,10 @@ static const bad_case bad_cases[] = {
     {"missing light after comments", 0, NULL, 9, "# no light\n\n", S_SYNTAX,
      12, 1, "light", 1},
     /* anything after the light */
-    {"record after the light", 0, NULL, ALL, "1 2 3\n", S_SYNTAX, 11, 1, "1",
-     1},
+    {"short light after the light", 0, NULL, ALL, "1 2 3\n", S_SYNTAX, 11, 6,
+     "3", 1},
+    {"light with a colour beyond 255", 0, NULL, ALL, "1 2 3 0 0 256\n",
+     S_RANGE, 11, 11, "256", 1},
     {"word after the light", 0, NULL, ALL, "# ok\n  junk\n", S_SYNTAX, 12, 3,
      "junk", 1},
     /* counts promising more lines than the file holds */
@@ -725,7 +739,8 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
     char text[2048];
     build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
     write_file(good, text);
-    build_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 9", ALL, NULL, "\n");
+    build_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
+                "\n");
     write_file(bad, text);
 
     rt_scene *scene = NULL;
@@ -737,8 +752,8 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
 
     scene = NULL;
     status = rt_scene_load(bad, &scene, &error);
-    bad_case c = {"file with 8 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
-                  17, "9", 1};
+    bad_case c = {"file with 10 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
+                  21, "9", 1};
     check_error(&c, status, scene, &error, bad);
 
     unlink(good);

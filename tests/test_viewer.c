@@ -603,15 +603,20 @@ END_TEST
 START_TEST(image_is_saved_next_to_the_scene)
 {
     char path[64];
-    ck_assert(view_scene_image_path("scenes/cubes.scn", path, sizeof path));
+    ck_assert(view_scene_image_path("scenes/cubes.scn", ".ppm", path,
+                                    sizeof path));
     ck_assert_str_eq(path, "scenes/cubes.ppm");
-    ck_assert(view_scene_image_path("/a.b/scene", path, sizeof path));
+    ck_assert(view_scene_image_path("scenes/cubes.scn", ".png", path,
+                                    sizeof path));
+    ck_assert_str_eq(path, "scenes/cubes.png");
+    ck_assert(view_scene_image_path("/a.b/scene", ".ppm", path, sizeof path));
     ck_assert_str_eq(path, "/a.b/scene.ppm");
-    ck_assert(view_scene_image_path("x.txt", path, sizeof path));
+    ck_assert(view_scene_image_path("x.txt", ".ppm", path, sizeof path));
     ck_assert_str_eq(path, "x.txt.ppm");
-    ck_assert(view_scene_image_path("dir/.scn", path, sizeof path));
+    ck_assert(view_scene_image_path("dir/.scn", ".ppm", path, sizeof path));
     ck_assert_str_eq(path, "dir/.scn.ppm");
-    ck_assert(!view_scene_image_path("a-rather-long-name.scn", path, 8));
+    ck_assert(!view_scene_image_path("a-rather-long-name.scn", ".ppm", path,
+                                     8));
 }
 END_TEST
 

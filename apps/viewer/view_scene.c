@@ -89,7 +89,21 @@ rt_status view_scene_rescale(const rt_scene *scene, const char *name,
         memcpy(facets[i].vertex, facet.vertex, sizeof facets[i].vertex);
         facets[i].k = facet.k;
         facets[i].color = facet.color;
+        facets[i].t = facet.t;
+        facets[i].n = facet.n;
+        facets[i].d = facet.d;
+        facets[i].d_given = 1;
     }
+    rt_light *more_lights =
+        malloc((size_t)(info.light_count > 1 ? info.light_count - 1 : 1) *
+               sizeof *more_lights);
+    if (more_lights == NULL) {
+        free(vertices);
+        free(facets);
+        return fail(error, RT_ERR_NOMEM, name, "out of memory");
+    }
+    for (int i = 1; i < info.light_count; i++)
+        rt_scene_light(scene, i, &more_lights[i - 1]);
     const rt_camera *camera = &info.camera;
     rt_scene_desc desc = {
         .observer = camera->observer,
@@ -106,10 +120,15 @@ rt_status view_scene_rescale(const rt_scene *scene, const char *name,
         .background = info.background,
         .light_position = info.light_position,
         .light_color = info.light_color,
+        .more_lights = more_lights,
+        .more_light_count = info.light_count - 1,
+        .aperture = camera->aperture,
+        .focal_distance = camera->focal_distance,
     };
     rt_status status = rt_scene_create(&desc, scaled, error);
     free(vertices);
     free(facets);
+    free(more_lights);
     if (status != RT_OK && error)
         prefix_message(error, name ? name : "<scene>");
     return status;
@@ -132,7 +151,8 @@ rt_status view_scene_load(const char *path, double scale, rt_scene **scene,
     return status;
 }
 
-int view_scene_image_path(const char *scene_path, char *buffer, size_t size)
+int view_scene_image_path(const char *scene_path, const char *extension,
+                          char *buffer, size_t size)
 {
     const char *slash = strrchr(scene_path, '/');
     const char *base = slash ? slash + 1 : scene_path;
@@ -140,6 +160,7 @@ int view_scene_image_path(const char *scene_path, char *buffer, size_t size)
     size_t keep = strlen(scene_path);
     if (dot && dot != base && strcmp(dot, ".scn") == 0)
         keep = (size_t)(dot - scene_path);
-    int written = snprintf(buffer, size, "%.*s.ppm", (int)keep, scene_path);
+    int written = snprintf(buffer, size, "%.*s%s", (int)keep, scene_path,
+                           extension);
     return written >= 0 && (size_t)written < size;
 }

@@ -35,9 +35,11 @@ rt_status view_scene_rescale(const rt_scene *scene, const char *name,
 
 /*
  * Where `S` saves the image of `scene_path`: the same directory and name
- * with the extension `.ppm` instead of `.scn` (appended when the name has
- * another extension or none).  Returns 0 when it does not fit in `size`.
+ * with `extension` (".png", ".ppm") instead of `.scn` (appended when the
+ * name has another extension or none).  Returns 0 when it does not fit in
+ * `size`.
  */
-int view_scene_image_path(const char *scene_path, char *buffer, size_t size);
+int view_scene_image_path(const char *scene_path, const char *extension,
+                          char *buffer, size_t size);
 
 #endif /* VIEW_SCENE_H */

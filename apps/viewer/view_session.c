@@ -72,6 +72,9 @@ static void *worker_main(void *arg)
     rt_render_options_init(&options);
     options.max_depth = session->options.max_depth;
     options.threads = session->options.threads;
+    options.samples = session->options.samples;
+    options.aperture = session->options.aperture;
+    options.focal_distance = session->options.focal_distance;
     options.on_row = on_row;
     options.user = session;
     options.cancel = session->cancel;
@@ -97,6 +100,9 @@ void view_session_options_init(view_session_options *options)
     memset(options, 0, sizeof *options);
     options->max_depth = RT_DEFAULT_DEPTH;
     options->threads = 0;
+    options->samples = 1;
+    options->aperture = -1.0;
+    options->focal_distance = 0.0;
 }
 
 rt_status view_session_create(rt_scene *scene,

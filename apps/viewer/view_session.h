@@ -39,6 +39,11 @@ typedef void (*view_notify_func)(void *context);
 typedef struct view_session_options {
     int max_depth;              /* 0..VIEW_MAX_DEPTH; default RT_DEFAULT_DEPTH */
     int threads;                /* as rt_render_options.threads; default 0 */
+    int samples;                /* as rt_render_options.samples; default 1 */
+    double aperture;            /* as rt_render_options; default -1: the
+                                   scene's */
+    double focal_distance;      /* as rt_render_options; default 0: the
+                                   scene's */
     view_notify_func notify;    /* optional */
     void *notify_context;
 } view_session_options;

@@ -39,6 +39,11 @@ extern "C" {
  * freeScene(s).  Zero-area facets are kept and reported as warnings on
  * stderr ("file:line:column: warning: ...").
  *
+ * A file that uses the library's extensions beyond the handout (several
+ * lights, transparent facets, a lens aperture) is refused with
+ * RT_ERR_FORMAT and a message saying so: this struct has one light, no
+ * transparency and a pinhole camera.
+ *
  * On failure returns non-zero (the library's rt_status code), prints one
  * line "file:line:column: what was expected, what was found" on stderr,
  * allocates nothing and leaves *s zeroed (so freeScene(s) is harmless).

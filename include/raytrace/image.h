@@ -1,16 +1,49 @@
 /*
- * raytrace/image.h - RGB8 images and the PPM format.
+ * raytrace/image.h - RGB8 images, their file formats, and saving them.
  *
  * An rt_image is a view: width, height, a row stride in bytes and a pointer
  * to pixels (3 bytes per pixel, R G B, rows top to bottom).  The caller may
  * point it at memory it owns, or let rt_image_create allocate it.
  *
- * PPM writers go to a sink (a callback), to a FILE, or to a path; the path
- * variant writes a temporary file in the destination directory, flushes it
- * and renames it over the destination, so the file at `path` is either the
- * old one or the complete new one, never a partial image.  Readers accept P3
- * and P6 with maxval 255 (what the writers produce) from memory or a path.
- * All functions are thread-safe on distinct images.
+ * Formats: PPM (Netpbm P3, ASCII, and P6, binary, maxval 255) always; PNG
+ * (8-bit RGB, no gamma or colour-space chunk, so viewers show the computed
+ * values as they are) when the library was built with libpng
+ * (rt_image_format_supported says).  Every writer goes to a sink (a
+ * callback); the FILE and path variants are thin wrappers.
+ *
+ * Saving to a path (rt_image_save, and rt_ppm_save over it) never damages
+ * what the path names.  The rule, by what the path names once symbolic
+ * links are followed to their final target:
+ *
+ *   - nothing yet, or a regular file: the image is written to a temporary
+ *     file in the same folder (".rt-save-XXXXXX"), flushed to the disk and
+ *     renamed over the target, so the target is always either the complete
+ *     old file or the complete new one.  A new file gets the mode
+ *     0666 & ~umask, as cp and compilers give; a replaced file keeps its
+ *     permission bits, and its owner and group where the process may set
+ *     them.  A regular file with several hard links is written in place
+ *     instead, so that the links stay one file: the image is first written
+ *     completely to the temporary file, its space reserved in the target,
+ *     then copied over it.
+ *   - a symbolic link: the rule applies to its final target; the link stays.
+ *   - a character or block device, a FIFO, a socket, or an open descriptor
+ *     named through /proc or /dev/fd (/dev/stdout): written directly, as a
+ *     stream, never replaced (no temporary file, no rename).
+ *   - a directory, a missing folder, a folder that cannot be written to: an
+ *     error naming the path and the reason; nothing is created.
+ *
+ * The temporary file is removed on every failure.  While it exists the
+ * calling thread blocks SIGINT, SIGTERM and SIGHUP; if one arrives, the
+ * temporary file is removed, the target is left as it was, the signal mask is
+ * restored (so the signal then takes its usual effect: a program that keeps
+ * the default action ends, killed by it) and the call returns
+ * RT_ERR_INTERRUPTED.  A program with other threads should block those
+ * signals in them, or a signal sent to the process may be taken by another
+ * thread while a save is under way.
+ *
+ * Readers accept P3 and P6 with maxval 255 (what the writers produce) from
+ * memory or a path.  All functions are thread-safe on distinct images and
+ * distinct paths.
  */
 #ifndef RAYTRACE_IMAGE_H
 #define RAYTRACE_IMAGE_H
@@ -51,15 +84,80 @@ static inline unsigned char *rt_image_pixel(const rt_image *image, int x,
     return image->pixels + (size_t)y * image->stride + (size_t)x * 3;
 }
 
+/* The file formats the library writes.  The PPM values equal
+ * rt_ppm_format's. */
+typedef enum rt_image_format {
+    RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format) */
+    RT_IMAGE_P6 = 6,        /* PPM, binary */
+    RT_IMAGE_PNG = 16       /* PNG, 8-bit RGB; needs a build with libpng */
+} rt_image_format;
+
+/* Non-zero when this build can write `format` (PNG needs libpng).
+ * Thread-safe. */
+int rt_image_format_supported(rt_image_format format);
+
+/* The lower-case name of a format ("p3", "p6", "png"); "unknown" for any
+ * other value.  Thread-safe. */
+const char *rt_image_format_name(rt_image_format format);
+
+/*
+ * The format a path's extension asks for, case-insensitively: ".png" PNG,
+ * ".ppm" and ".pnm" binary P6 (P3 is never chosen by extension: it is asked
+ * for by name).  Returns RT_OK, or RT_ERR_FORMAT for any other extension or
+ * none (*format untouched).  Does not look at the file.  Thread-safe.
+ */
+rt_status rt_image_format_from_path(const char *path,
+                                    rt_image_format *format);
+
 /* Receives `size` bytes of output; returns non-zero on success. */
 typedef int (*rt_write_func)(void *context, const void *data, size_t size);
 
+/*
+ * Encodes `image` in `format` to the sink.  Returns RT_OK, RT_ERR_ARGUMENT
+ * (no image or sink), RT_ERR_FORMAT (a format this build cannot write; the
+ * message says why), RT_ERR_IO (the sink returned 0) or RT_ERR_NOMEM.  A
+ * NULL `error` is allowed.  Thread-safe on distinct sinks.
+ */
+rt_status rt_image_write_to(rt_write_func write, void *context,
+                            const rt_image *image, rt_image_format format,
+                            rt_error *error);
+
+/* The same to a stdio stream, flushed at the end (a full device is an
+ * RT_ERR_IO).  The stream is not closed.  Thread-safe on distinct
+ * streams. */
+rt_status rt_image_write_file(FILE *file, const rt_image *image,
+                              rt_image_format format, rt_error *error);
+
+/*
+ * Saves `image` in `format` at `path` following the rule at the top of this
+ * header.  Returns RT_OK; RT_ERR_IO with a message naming the path and the
+ * reason ("is a directory", "the folder ... does not exist", "Permission
+ * denied", "No space left on device" ...); RT_ERR_FORMAT; RT_ERR_NOMEM;
+ * RT_ERR_INTERRUPTED (a signal arrived: nothing was changed); or
+ * RT_ERR_ARGUMENT.  Thread-safe on distinct paths.
+ */
+rt_status rt_image_save(const char *path, const rt_image *image,
+                        rt_image_format format, rt_error *error);
+
+/*
+ * Checks, without rendering anything, that rt_image_save could write at
+ * `path`: the folder exists and takes a new file (a file is created in it
+ * and removed at once), or the device opens for writing, or the FIFO or
+ * socket may be written to; a directory is refused.  Leaves nothing behind.
+ * Returns RT_OK or what rt_image_save would return, with the same
+ * messages.  Programs call it before a long render so that a bad output
+ * fails in milliseconds.  Thread-safe.
+ */
+rt_status rt_image_save_check(const char *path, rt_error *error);
+
+/* PPM writers (P3 lines are at most 70 characters); the same as the
+ * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6. */
 rt_status rt_ppm_write_to(rt_write_func write, void *context,
                           const rt_image *image, rt_ppm_format format);
 rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
                             rt_ppm_format format);
 
-/* Atomic save (see above).  Errors name the path and the reason. */
+/* rt_image_save with RT_IMAGE_P3 or RT_IMAGE_P6. */
 rt_status rt_ppm_save(const char *path, const rt_image *image,
                       rt_ppm_format format, rt_error *error);
 

@@ -69,6 +69,10 @@ typedef struct rt_render_stats {
     uint64_t accel_fallbacks;         /* queries it left to brute force */
     uint64_t accel_facets;            /* live facets: what brute force
                                          tests per query */
+    uint64_t refraction_rays;         /* rays refracted at facets t > 0 */
+    uint64_t refraction_rays_skipped; /* t > 0 but past the depth limit,
+                                         or a total internal reflection
+                                         (the mirror ray carries t) */
 } rt_render_stats;
 
 /*
@@ -154,6 +158,11 @@ typedef struct rt_render_options {
     rt_render_stats *stats;     /* optional; zeroed then filled */
     rt_kernel_choice kernel;    /* default RT_KERNEL_AUTO */
     rt_accel accel;             /* default RT_ACCEL_AUTO */
+    double aperture;        /* thin-lens radius a in scene units; negative
+                               (the default): the scene's; 0: the pinhole
+                               camera, today's rays exactly */
+    double focal_distance;  /* f > 0 in scene units; 0 (the default): the
+                               scene's (|AO| unless the file sets it) */
 } rt_render_options;
 
 /* Sets the defaults: max_depth 5, all cores, double precision, exact

@@ -29,6 +29,12 @@ extern "C" {
 
 typedef struct rt_scene rt_scene;
 
+/* A point light: its position and its colour C_S. */
+typedef struct rt_light {
+    rt_vec3 position;
+    rt_rgb8 color;
+} rt_light;
+
 /* A non-fatal remark about the scene, such as a zero-area facet. */
 typedef struct rt_warning {
     int line;
@@ -49,6 +55,10 @@ typedef struct rt_camera {
     rt_vec3 up;             /* AC */
     int width, height;      /* image size in pixels */
     int b_was_projected;    /* non-zero when the file's B needed projection */
+    double aperture;        /* thin-lens radius a >= 0, scene units; 0 for
+                               the pinhole camera */
+    double focal_distance;  /* f > 0, scene units, along AO from O: the
+                               distance that stays sharp (default |AO|) */
 } rt_camera;
 
 /* What a facet record of the file says. */
@@ -59,6 +69,9 @@ typedef struct rt_facet_info {
     rt_vec3 normal;         /* unit (b-a)x(c-a); zero for a zero-area facet */
     int degenerate;         /* non-zero for a zero-area facet (never hit) */
     int line;               /* line of the record in the source */
+    double t;               /* transparency in [0, 1], k + t <= 1 */
+    double n;               /* refractive index, > 0 (1 when not given) */
+    double d;               /* diffuse weight >= 0 (1 - k - t in .scn) */
 } rt_facet_info;
 
 /* Sizes and settings of a scene. */
@@ -70,16 +83,25 @@ typedef struct rt_scene_info {
     int reflective_facet_count; /* live facets with k > 0 */
     int warning_count;
     rt_rgb8 background;
-    rt_vec3 light_position;
+    rt_vec3 light_position; /* the first light */
     rt_rgb8 light_color;
     rt_camera camera;
+    int light_count;        /* 1 or more; see rt_scene_light */
+    int transparent_facet_count; /* live facets with t > 0 */
 } rt_scene_info;
 
-/* A facet to build a scene from. */
+/*
+ * A facet to build a scene from.  A description zeroed beyond `color` is a
+ * handout facet: opaque (t = 0), n = 1, d = 1 - k.
+ */
 typedef struct rt_facet_desc {
     int vertex[3];          /* 0-based indices into the vertex array */
     double k;               /* reflection coefficient in [0, 1] */
     rt_rgb8 color;
+    double t;               /* transparency: t >= 0, k + t <= 1 */
+    double n;               /* refractive index > 0; 0 stands for 1 */
+    double d;               /* diffuse weight >= 0, used when d_given */
+    int d_given;            /* 0: d = 1 - k - t (the .scn rule) */
 } rt_facet_desc;
 
 /*
@@ -96,15 +118,20 @@ typedef struct rt_scene_desc {
     const rt_facet_desc *facets;
     int facet_count;
     rt_rgb8 background;
-    rt_vec3 light_position;
+    rt_vec3 light_position; /* the first light */
     rt_rgb8 light_color;
+    const rt_light *more_lights;    /* further lights (copied), or NULL */
+    int more_light_count;
+    double aperture;        /* thin-lens radius a >= 0 (0: pinhole) */
+    double focal_distance;  /* f > 0; 0 stands for |AO| */
 } rt_scene_desc;
 
 /*
- * Builds a scene from `desc`, checking the rules of SPEC.md sections 1-2
- * (finite coordinates, k in [0, 1], indices in range, sizes, a camera that
- * is not degenerate).  Messages have no file position; zero-area facets give
- * warnings.  Thread-safe.
+ * Builds a scene from `desc`, checking the rules of the rendering model
+ * (docs/rendering-model.md): finite coordinates, k and t in [0, 1] with
+ * k + t <= 1, n > 0, d >= 0, indices in range, sizes, a >= 0, f >= 0, a
+ * camera that is not degenerate.  Messages have no file position; zero-area
+ * facets give warnings.  Thread-safe.
  */
 rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                           rt_error *error);
@@ -134,6 +161,10 @@ rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
 
 /* The i-th facet record (0-based, i < facet_count).  Thread-safe. */
 void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
+
+/* The i-th light (0-based, i < light_count; 0 is the first).
+ * Thread-safe. */
+void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
 
 /* The i-th warning (0-based, i < warning_count).  Thread-safe. */
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i);

@@ -26,7 +26,8 @@ extern "C" {
     X(RT_ERR_LIMIT, 6, "input exceeds a limit")                              \
     X(RT_ERR_ARGUMENT, 7, "invalid argument")                                \
     X(RT_ERR_CANCELLED, 8, "cancelled")                                      \
-    X(RT_ERR_FORMAT, 9, "unsupported image format")
+    X(RT_ERR_FORMAT, 9, "unsupported image format")                          \
+    X(RT_ERR_INTERRUPTED, 10, "interrupted by a signal")
 
 typedef enum rt_status {
 #define RT_STATUS_ENUM_(name, value, text) name = value,

@@ -84,6 +84,18 @@ int parse(char *fname, scene *s)
 
     rt_scene_info info;
     rt_scene_get_info(loaded, &info);
+    if (info.light_count > 1 || info.transparent_facet_count > 0 ||
+        info.camera.aperture > 0.0) {
+        fprintf(stderr,
+                "%s: uses extensions beyond the handout (%s%s%s); the "
+                "course's scene has one light, no transparency and a pinhole "
+                "camera: render it with rt-export\n",
+                fname, info.light_count > 1 ? "several lights " : "",
+                info.transparent_facet_count > 0 ? "transparent facets " : "",
+                info.camera.aperture > 0.0 ? "a lens aperture" : "");
+        rt_scene_free(loaded);
+        return RT_ERR_FORMAT;
+    }
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "%s\n", rt_scene_warning(loaded, i)->message);
 

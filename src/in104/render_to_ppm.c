@@ -36,7 +36,7 @@ static rt_status build(const scene *s, rt_scene **built)
     rt_facet_desc *facets = NULL;
     if (count > 0) {
         vertices = malloc((size_t)count * 3 * sizeof *vertices);
-        facets = malloc((size_t)count * sizeof *facets);
+        facets = calloc((size_t)count, sizeof *facets);
         if (vertices == NULL || facets == NULL) {
             free(vertices);
             free(facets);

@@ -31,8 +31,8 @@ typedef struct rt_kernel_source {
     const rt_vec3 *vertices;
     const rt_facet_info *facets;
     int facet_count;
-    rt_vec3 light_position;
-    rt_rgb8 light_color;
+    const rt_light *lights; /* light_count >= 1 */
+    int light_count;
     rt_rgb8 background;
 } rt_kernel_source;
 
@@ -54,6 +54,9 @@ typedef struct rt_counters {
     uint64_t tests;
     uint64_t shadow_rays_skipped;
     uint64_t reflection_rays_skipped;
+    uint64_t refraction_rays;
+    uint64_t refraction_rays_skipped;   /* t > 0 but the depth limit, or
+                                           a total internal reflection */
     uint64_t early_exit_saved;  /* facets a shadow ray did not test after
                                    its first hit */
     uint64_t accel_queries;     /* queries through the octree */
@@ -61,6 +64,7 @@ typedef struct rt_counters {
     uint64_t accel_tests;       /* facets they tested */
     uint64_t accel_fallbacks;   /* of them, done by brute force after all
                                    (origin too far, too many hits) */
+    int out_of_memory;          /* a ray tree outgrew the memory */
 } rt_counters;
 
 /* An octree lists at most this many facet references per facet (plus

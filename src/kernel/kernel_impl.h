@@ -35,7 +35,11 @@ typedef struct tri {
     vec a, b, c;
     vec normal;             /* unit, in the direction of (b-a) x (c-a) */
     REAL k;
-    REAL diffuse[3];        /* (1 - k) C_S C_F / 255 per channel */
+    REAL diffuse[3];        /* d C_S C_F / 255 per channel, for the first
+                               light (d = 1 - k - t in .scn files) */
+    REAL t;                 /* transparency */
+    REAL n;                 /* refractive index */
+    REAL d;                 /* diffuse weight */
     int facet;              /* index of the facet record */
 } tri;
 
@@ -54,7 +58,12 @@ struct KERNEL_T {
     block *blocks;          /* the same facets, eight by eight */
     int block_count;
     int avx2;               /* the processor runs the AVX2 loops */
-    vec light;
+    vec light;              /* the first light */
+    vec *lights;            /* every light, the first included */
+    int light_count;
+    REAL *more_diffuse;     /* per facet, per further light l >= 1:
+                               d C_S,l C_F / 255 at [(i (L-1) + l-1) 3 + c] */
+    int transparent;        /* some facet has t > 0 */
     REAL background[3];
     _Atomic(octree *) tree;     /* built on first use, then only read */
     pthread_mutex_t tree_lock;  /* serialises that construction */
@@ -79,6 +88,8 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     KERNEL_T *k = calloc(1, sizeof *k);
     if (k == NULL)
         return NULL;
+    atomic_init(&k->tree, NULL);
+    pthread_mutex_init(&k->tree_lock, NULL);
     k->tris = malloc((size_t)(s->facet_count > 0 ? s->facet_count : 1) *
                      sizeof *k->tris);
     if (k->tris == NULL) {
@@ -93,8 +104,21 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
         free(k);
         return NULL;
     }
-    k->light = from_rt(s->light_position);
-    REAL light[3] = {s->light_color.r, s->light_color.g, s->light_color.b};
+    int more = s->light_count - 1;
+    k->light_count = s->light_count;
+    k->lights = malloc((size_t)s->light_count * sizeof *k->lights);
+    /* One light (the handout's case) needs no table. */
+    size_t more_size = more > 0 && s->facet_count > 0
+                           ? (size_t)more * (size_t)s->facet_count * 3
+                           : 1;
+    k->more_diffuse = malloc(more_size * sizeof *k->more_diffuse);
+    if (k->lights == NULL || k->more_diffuse == NULL) {
+        KERNEL(free)(k);
+        return NULL;
+    }
+    for (int l = 0; l < s->light_count; l++)
+        k->lights[l] = from_rt(s->lights[l].position);
+    k->light = k->lights[0];
     k->background[0] = s->background.r;
     k->background[1] = s->background.g;
     k->background[2] = s->background.b;
@@ -108,16 +132,30 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
         f->c = from_rt(s->vertices[info->vertex[2]]);
         f->normal = from_rt(info->normal);
         f->k = (REAL)info->k;
+        f->t = (REAL)info->t;
+        f->n = (REAL)info->n;
+        /* The file's rule d = 1 - k - t in this precision (so a handout
+         * facet gets exactly the (1 - k) of section 3); else the given d. */
+        REAL d = info->d == 1.0 - info->k - info->t ? 1 - f->k - f->t
+                                                     : (REAL)info->d;
+        f->d = d;
+        k->transparent |= f->t > 0;
         REAL color[3] = {info->color.r, info->color.g, info->color.b};
-        for (int c = 0; c < 3; c++)
-            f->diffuse[c] = (1 - f->k) * light[c] * color[c] / 255;
+        for (int l = 0; l < s->light_count; l++) {
+            const rt_rgb8 *c8 = &s->lights[l].color;
+            REAL light[3] = {c8->r, c8->g, c8->b};
+            REAL *out = l == 0 ? f->diffuse
+                               : &k->more_diffuse[((size_t)(k->count - 1) *
+                                                       (size_t)more +
+                                                   (size_t)(l - 1)) * 3];
+            for (int c = 0; c < 3; c++)
+                out[c] = d * light[c] * color[c] / 255;
+        }
         f->facet = i;
     }
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
     fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
-    atomic_init(&k->tree, NULL);
-    pthread_mutex_init(&k->tree_lock, NULL);
     return k;
 }
 
@@ -126,6 +164,8 @@ void KERNEL(free)(KERNEL_T *k)
     if (k != NULL) {
         free(k->tris);
         free(k->blocks);
+        free(k->lights);
+        free(k->more_diffuse);
         octree_free(atomic_load(&k->tree));
         pthread_mutex_destroy(&k->tree_lock);
     }

@@ -61,46 +61,59 @@ static vec offset_origin(vec point, vec error_bound, vec normal,
               step_away(p.z, offset.z));
 }
 
-/* Adds E (N.S) (1 - k) C_S C_F / 255, weighted, to color. */
+/* The terms d C_S,l C_F / 255 of facet `index` for light `l`. */
+static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
+                              int l)
+{
+    if (l == 0)
+        return f->diffuse;
+    return &k->more_diffuse[((size_t)index * (size_t)(k->light_count - 1) +
+                             (size_t)(l - 1)) * 3];
+}
+
+/* Adds the direct light, weighted, to color: for each light l,
+ * E_l (N.S_l) d C_S,l C_F / 255.  No shadow ray where it cannot matter:
+ * d = 0 (k = 1 on a handout facet) or N.S_l <= 0. */
 static void add_direct_light(const KERNEL_T *k, const octree *tree,
                              const tri *f, int index, vec point,
                              vec error_bound, vec normal, REAL weight,
                              int fast, int simd, REAL color[3],
                              rt_counters *counters)
 {
-    vec to_light = sub(k->light, point);
-    if (f->k == 1 || !(dot(normal, to_light) > 0)) {
-        counters->shadow_rays_skipped++;
-        return;
+    int dark = f->d == 0;   /* k = 1 on a handout facet */
+    for (int l = 0; l < k->light_count; l++) {
+        vec light = k->lights[l];
+        vec to_light = sub(light, point);
+        if (dark || !(dot(normal, to_light) > 0)) {
+            counters->shadow_rays_skipped++;
+            continue;
+        }
+        vec origin = offset_origin(point, error_bound, normal, to_light);
+        ray shadow = prepare(origin, sub(light, origin));
+        counters->shadow_rays++;
+        if (any_hit(k, simd, tree, &shadow, 1, index, counters))
+            continue;
+        REAL w = weight * dot(normal, normalize(to_light, fast));
+        const REAL *diffuse = diffuse_of(k, f, index, l);
+        for (int c = 0; c < 3; c++)
+            color[c] += w * diffuse[c];
     }
-    vec origin = offset_origin(point, error_bound, normal, to_light);
-    ray shadow = prepare(origin, sub(k->light, origin));
-    counters->shadow_rays++;
-    if (any_hit(k, simd, tree, &shadow, 1, index, counters))
-        return;
-    REAL w = weight * dot(normal, normalize(to_light, fast));
-    for (int c = 0; c < 3; c++)
-        color[c] += w * f->diffuse[c];
 }
 
 /*
- * SPEC.md section 3, with the recursion on C_R unrolled: the colour is the
- * sum over bounces of each hit's own term times the product of the k met
- * before it, so any depth runs in constant stack.  Work that cannot change
- * the result is left out: no shadow ray where N.S <= 0 or k = 1, no
- * reflected ray from a facet with k = 0.
+ * The opaque case (no facet with t > 0): the rendering model with the
+ * recursion on C_R unrolled: the colour is the sum over bounces of each
+ * hit's own term times the product of the k met before it, so any depth
+ * runs in constant stack.  Work that cannot change the result is left out:
+ * no shadow ray where N.S <= 0 or d = 0, no reflected ray from a facet with
+ * k = 0.
  */
-rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
-                       rt_vec3 direction_d, const rt_trace_settings *settings,
-                       rt_counters *counters)
+static void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
+                         const rt_trace_settings *settings, const octree *tree,
+                         int simd, REAL color[3], rt_counters *counters)
 {
-    REAL color[3] = {0, 0, 0};
     REAL weight = 1;
     int skip = -1, fast = settings->fast_inv_sqrt;
-    int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
-    const octree *tree = settings->octree ? octree_of(k) : NULL;
-    vec origin = from_rt(origin_d);
-    vec incoming = normalize(from_rt(direction_d), fast);
     for (int bounce = 0;; bounce++) {
         ray r = prepare(origin, incoming);
         hit h;
@@ -129,5 +142,139 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
         skip = h.index;
         counters->reflection_rays++;
     }
+}
+
+/* A ray still to follow, with the weight its colour carries. */
+typedef struct ray_task {
+    vec origin, incoming;   /* incoming is unit */
+    REAL weight;
+    int skip;               /* the facet it leaves, or -1 */
+    int level;              /* 0 for the camera ray */
+} ray_task;
+
+/* Rays a transparent trace keeps on its own stack; more go to the heap. */
+#define RAY_TASKS_LOCAL 32
+
+/*
+ * The direction T of the ray refracted at a facet of winding normal n_w
+ * and index n (Snell-Descartes, as the rendering model states it), or 0
+ * for a total internal reflection.  `incoming` is unit.
+ */
+static int refract(vec incoming, vec n_w, REAL n, vec *out)
+{
+    int entering = dot(incoming, n_w) < 0;
+    REAL eta = entering ? 1 / n : n;
+    vec normal = entering ? n_w : neg(n_w);
+    REAL c = -dot(incoming, normal);
+    REAL q = 1 - eta * eta * (1 - c * c);
+    if (q < 0)
+        return 0;
+    *out = add(scale(incoming, eta), scale(normal, eta * c - sqrt(q)));
+    return 1;
+}
+
+/*
+ * A scene with transparent facets: each hit may send a reflected ray
+ * (k > 0) and a refracted one (t > 0), so the rays form a tree, walked
+ * depth first with an explicit stack.  A total internal reflection sends
+ * the mirror ray for both terms (weight k + t).  Returns 0 when the stack
+ * cannot grow (out of memory); the colour is then incomplete.
+ */
+static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
+                             const rt_trace_settings *settings,
+                             const octree *tree, int simd, REAL color[3],
+                             rt_counters *counters)
+{
+    ray_task local[RAY_TASKS_LOCAL], *stack = local;
+    int used = 0, capacity = RAY_TASKS_LOCAL, fast = settings->fast_inv_sqrt;
+    stack[used++] = (ray_task){origin, incoming, 1, -1, 0};
+    int ok = 1;
+    while (used > 0) {
+        ray_task p = stack[--used];
+        ray r = prepare(p.origin, p.incoming);
+        hit h;
+        if (!nearest(k, simd, tree, p.level == 0 ? settings->eye : NULL, &r,
+                     INFINITY, p.skip, &h, counters)) {
+            for (int c = 0; c < 3; c++)
+                color[c] += p.weight * k->background[c];
+            continue;
+        }
+        const tri *f = &k->tris[h.index];
+        vec error_bound;
+        vec point = hit_point(f, &h, p.origin, p.incoming, &error_bound);
+        vec normal = dot(f->normal, p.incoming) > 0 ? neg(f->normal)
+                                                    : f->normal;
+        add_direct_light(k, tree, f, h.index, point, error_bound, normal,
+                         p.weight, fast, simd, color, counters);
+        int deeper = p.level < settings->max_depth;
+        if (f->k == 0)
+            counters->reflection_rays_skipped += deeper;
+        if (!deeper) {
+            counters->refraction_rays_skipped += f->t > 0;
+            continue;       /* past the limit: black */
+        }
+        vec mirror = sub(p.incoming, scale(normal, 2 * dot(p.incoming,
+                                                           normal)));
+        REAL mirror_weight = f->k;
+        vec refracted;
+        int refracts = f->t > 0 && refract(p.incoming, f->normal, f->n,
+                                           &refracted);
+        if (f->t > 0 && !refracts) {
+            mirror_weight += f->t;  /* total internal reflection */
+            counters->refraction_rays_skipped++;
+        }
+        if (used + 2 > capacity) {
+            int bigger = capacity * 2;
+            ray_task *grown = malloc((size_t)bigger * sizeof *grown);
+            if (grown == NULL) {
+                ok = 0;
+                break;
+            }
+            memcpy(grown, stack, (size_t)used * sizeof *stack);
+            if (stack != local)
+                free(stack);
+            stack = grown;
+            capacity = bigger;
+        }
+        if (refracts) {
+            stack[used++] = (ray_task){
+                offset_origin(point, error_bound, normal, refracted),
+                normalize(refracted, fast), p.weight * f->t, h.index,
+                p.level + 1};
+            counters->refraction_rays++;
+        }
+        if (mirror_weight > 0) {
+            stack[used++] = (ray_task){
+                offset_origin(point, error_bound, normal, mirror),
+                normalize(mirror, fast), p.weight * mirror_weight, h.index,
+                p.level + 1};
+            counters->reflection_rays++;
+        }
+    }
+    if (stack != local)
+        free(stack);
+    return ok;
+}
+
+/*
+ * The colour a ray carries (the rendering model's formula, up to
+ * max_depth reflected or refracted rays after it).  A scene without
+ * transparent facets takes the constant-stack loop of the handout's model.
+ */
+rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
+                       rt_vec3 direction_d, const rt_trace_settings *settings,
+                       rt_counters *counters)
+{
+    REAL color[3] = {0, 0, 0};
+    int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
+    const octree *tree = settings->octree ? octree_of(k) : NULL;
+    vec origin = from_rt(origin_d);
+    vec incoming = normalize(from_rt(direction_d), settings->fast_inv_sqrt);
+    if (!k->transparent)
+        trace_opaque(k, origin, incoming, settings, tree, simd, color,
+                     counters);
+    else if (!trace_transparent(k, origin, incoming, settings, tree, simd,
+                                color, counters))
+        counters->out_of_memory = 1;
     return (rt_color){color[0], color[1], color[2]};
 }

@@ -77,13 +77,17 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
     source.vertices = e->vertices;
     source.facets = e->facets;
     source.facet_count = info.facet_count;
-    source.light_position = info.light_position;
-    source.light_color = info.light_color;
+    rt_light *lights = calloc((size_t)info.light_count, sizeof *lights);
+    for (int i = 0; lights != NULL && i < info.light_count; i++)
+        rt_scene_light(scene, i, &lights[i]);
+    source.lights = lights;
+    source.light_count = lights != NULL ? info.light_count : 0;
     source.background = info.background;
-    if (precision == RT_PRECISION_FLOAT)
+    if (lights != NULL && precision == RT_PRECISION_FLOAT)
         e->kf = rt__kernel_f_create(&source);
-    else
+    else if (lights != NULL)
         e->kd = rt__kernel_d_create(&source);
+    free(lights);       /* the kernel keeps its own copy */
     /* With the octree forced on, every query of the kernel goes through it
      * (a kernel that has one uses it for nearest_hit and occluded too). */
     if (rb_accel() == RT_ACCEL_OCTREE) {

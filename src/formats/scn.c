@@ -1,5 +1,5 @@
 /*
- * scene_parse.c - the `.scn` scene format (SPEC.md section 1), read from
+ * scn.c - the `.scn` scene format (SPEC.md section 1), read from
  * memory into an rt_scene_desc and handed to the scene builder.
  *
  * The reader goes record by record over the lines that hold something
@@ -23,7 +23,7 @@
 #include "scene_internal.h"
 #include "vecmath.h"
 
-#define MAX_VALUES 8        /* the longest record: the screen */
+#define MAX_VALUES 10       /* the longest record: the screen with a lens */
 #define MAX_NUMBER_LENGTH 256
 
 /* A token of the current line. */
@@ -192,11 +192,12 @@ static void end_position(const parser *p, const char *text, int *line,
 }
 
 /*
- * Reads the next record, which must have `count` values; `what` names it
- * for messages ("the observer `x, y, z`").
+ * Reads the next record, which must have `count` values, or up to `most`
+ * (most >= count) for a record with optional values at its end; `what`
+ * names it for messages ("the observer `x, y, z`").
  */
-static rt_status expect_record(parser *p, const char *text, int count,
-                               const char *what)
+static rt_status expect_values(parser *p, const char *text, int count,
+                               int most, const char *what)
 {
     rt_status status = next_record(p);
     if (status != RT_OK)
@@ -207,12 +208,12 @@ static rt_status expect_record(parser *p, const char *text, int count,
         return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, line, column,
                              "unexpected end of file: expected %s", what);
     }
-    if (p->value_count > count) {
+    if (p->value_count > most) {
         char expected[160];
-        snprintf(expected, sizeof expected, "%d value%s for %s", count,
-                 count == 1 ? "" : "s", what);
-        return fail_at(p, RT_ERR_SYNTAX, p->values[count].column, expected,
-                       &p->values[count]);
+        snprintf(expected, sizeof expected, "%d value%s for %s", most,
+                 most == 1 ? "" : "s", what);
+        return fail_at(p, RT_ERR_SYNTAX, p->values[most].column, expected,
+                       &p->values[most]);
     }
     if (p->value_count < count) {
         const token *last = &p->values[p->value_count - 1];
@@ -223,6 +224,12 @@ static rt_status expect_record(parser *p, const char *text, int count,
                              p->value_count);
     }
     return RT_OK;
+}
+
+static rt_status expect_record(parser *p, const char *text, int count,
+                               const char *what)
+{
+    return expect_values(p, text, count, count, what);
 }
 
 /* The i-th value of the current record as a finite number. */
@@ -343,6 +350,52 @@ static rt_status count(parser *p, const char *text, const char *what,
     return RT_OK;
 }
 
+/* The optional `a, f` of the screen record (values 8 and 9): both or
+ * neither, a >= 0, f > 0. */
+static rt_status lens_values(parser *p, double *aperture, double *focal)
+{
+    if (p->value_count == 8)
+        return RT_OK;
+    if (p->value_count == 9) {
+        const token *last = &p->values[8];
+        return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, p->record_line,
+                             last->column + (int)last->length,
+                             "expected the focal distance `f` after the "
+                             "aperture `a`, found the end of the line");
+    }
+    rt_status status = number(p, 8, aperture);
+    if (status == RT_OK && !(*aperture >= 0.0))
+        status = fail_at(p, RT_ERR_RANGE, p->values[8].column,
+                         "an aperture a >= 0", &p->values[8]);
+    if (status == RT_OK)
+        status = number(p, 9, focal);
+    if (status == RT_OK && !(*focal > 0.0))
+        status = fail_at(p, RT_ERR_RANGE, p->values[9].column,
+                         "a focal distance f > 0", &p->values[9]);
+    return status;
+}
+
+/* The optional `t [, n]` of a facet record (values 7 and 8). */
+static rt_status transparency(parser *p, rt_facet_desc *f)
+{
+    rt_status status = RT_OK;
+    if (p->value_count > 7) {
+        status = number(p, 7, &f->t);
+        if (status == RT_OK && !(f->t >= 0.0 && f->t <= 1.0 - f->k))
+            status = fail_at(p, RT_ERR_RANGE, p->values[7].column,
+                             f->t >= 0.0 ? "a transparency t with k + t <= 1"
+                                         : "a transparency t >= 0",
+                             &p->values[7]);
+    }
+    if (status == RT_OK && p->value_count > 8) {
+        status = number(p, 8, &f->n);
+        if (status == RT_OK && !(f->n > 0.0))
+            status = fail_at(p, RT_ERR_RANGE, p->values[8].column,
+                             "a refractive index n > 0", &p->values[8]);
+    }
+    return status;
+}
+
 #define TRY(call)                                                            \
     do {                                                                     \
         if ((status = (call)) != RT_OK)                                      \
@@ -357,15 +410,17 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
     rt_vec3 *vertices = NULL;
     rt_facet_desc *facets = NULL;
     int *facet_lines = NULL;
+    rt_light *lights = NULL;
 
     TRY(expect_record(p, text, 3, "the observer `x, y, z`"));
     TRY(point(p, 0, &d.observer));
-    TRY(expect_record(p, text, 8,
-                      "the screen `xA, yA, zA, xB, yB, zB, w, h`"));
+    TRY(expect_values(p, text, 8, 10,
+                      "the screen `xA, yA, zA, xB, yB, zB, w, h [, a, f]`"));
     TRY(point(p, 0, &d.screen_center));
     TRY(point(p, 3, &d.screen_right));
     TRY(integer(p, 6, 1, RT_MAX_IMAGE_SIDE, "an image width", &d.width));
     TRY(integer(p, 7, 1, RT_MAX_IMAGE_SIDE, "an image height", &d.height));
+    TRY(lens_values(p, &d.aperture, &d.focal_distance));
     rt_camera camera;
     const char *reason = rt__camera_make(d.observer, d.screen_center,
                                          d.screen_right, d.width, d.height,
@@ -392,13 +447,14 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
 
     TRY(count(p, text, "facet", &d.facet_count));
     size_t m = (size_t)(d.facet_count ? d.facet_count : 1);
-    facets = malloc(m * sizeof *facets);
+    facets = calloc(m, sizeof *facets);
     facet_lines = malloc(m * sizeof *facet_lines);
     if (facets == NULL || facet_lines == NULL)
         goto nomem;
     for (int i = 0; i < d.facet_count; i++) {
         rt_facet_desc *f = &facets[i];
-        TRY(expect_record(p, text, 7, "a facet `a, b, c, k, R, G, B`"));
+        TRY(expect_values(p, text, 7, 9,
+                          "a facet `a, b, c, k, R, G, B [, t [, n]]`"));
         for (int j = 0; j < 3; j++) {
             int vertex = 0;
             TRY(integer(p, j, 1, d.vertex_count, "a vertex index", &vertex));
@@ -412,6 +468,7 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
             goto done;
         }
         TRY(color(p, 4, &f->color));
+        TRY(transparency(p, f));
         facet_lines[i] = p->record_line;
     }
     d.facets = facets;
@@ -422,13 +479,35 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
     TRY(point(p, 0, &d.light_position));
     TRY(color(p, 3, &d.light_color));
 
-    TRY(next_record(p));
-    if (p->value_count >= 0) {
-        status = fail_at(p, RT_ERR_SYNTAX, p->values[0].column,
-                         "the end of the file after the light source",
-                         &p->values[0]);
-        goto done;
+    /* Further lights, one a line, to the end of the file. */
+    if (p->record_lines_left > 0) {
+        lights = malloc((size_t)p->record_lines_left * sizeof *lights);
+        if (lights == NULL)
+            goto nomem;
     }
+    while (p->record_lines_left > 0) {
+        rt_light *light = &lights[d.more_light_count];
+        static const char what[] = "a further light `x, y, z, R, G, B`";
+        TRY(expect_values(p, text, 1, 6, what));
+        /* Something that is not a number is named before any count. */
+        for (int i = 0; i < p->value_count; i++) {
+            double ignored;
+            TRY(number(p, i, &ignored));
+        }
+        if (p->value_count < 6) {
+            const token *last = &p->values[p->value_count - 1];
+            status = rt__error_set(p->error, RT_ERR_SYNTAX, p->name,
+                                   p->record_line,
+                                   last->column + (int)last->length,
+                                   "expected 6 values for %s, found %d",
+                                   what, p->value_count);
+            goto done;
+        }
+        TRY(point(p, 0, &light->position));
+        TRY(color(p, 3, &light->color));
+        d.more_light_count++;
+    }
+    d.more_lights = lights;
     status = rt__scene_build(&d, p->name, facet_lines, scene, p->error);
     goto done;
 nomem:
@@ -438,6 +517,7 @@ done:
     free(vertices);
     free(facets);
     free(facet_lines);
+    free(lights);
     return status;
 }
 

@@ -1,20 +1,17 @@
 /*
  * ppm.c - writing and reading PPM images (Netpbm P3 and P6, maxval 255).
  *
- * Writers produce bytes through a sink callback; the FILE and path variants
- * are thin wrappers, and the path variant makes the write atomic (temporary
- * file in the destination directory, flushed, synced, renamed).  Readers take
+ * Writers produce bytes through a sink callback; the FILE variant is a thin
+ * wrapper, and saving to a path goes through the one save routine of every
+ * format (save.c).  Readers take
  * exactly what the writers produce plus what other Netpbm tools commonly
  * emit: comments and arbitrary white space in the header.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "error.h"
 #include "file.h"
@@ -97,58 +94,11 @@ rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
 rt_status rt_ppm_save(const char *path, const rt_image *image,
                       rt_ppm_format format, rt_error *error)
 {
-    if (path == NULL || !valid_image(image))
-        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
-                             "expected a path and an image");
-    /* The temporary file is in the destination's directory (a rename
-     * across file systems is not atomic) with a short name, so that a
-     * destination whose name is as long as allowed still works. */
-    const char *slash = strrchr(path, '/');
-    size_t dir_length = slash ? (size_t)(slash - path) + 1 : 0;
-    static const char pattern[] = ".rt-save-XXXXXX";
-    char *temp = malloc(dir_length + sizeof pattern);
-    if (temp == NULL)
-        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                             "out of memory");
-    memcpy(temp, path, dir_length);
-    memcpy(temp + dir_length, pattern, sizeof pattern);
-    int fd = mkstemp(temp);
-    if (fd < 0) {
-        int saved = errno;
-        free(temp);
-        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot create a temporary file here: %s",
-                             strerror(saved));
-    }
-    /* mkstemp makes the file private; an image is an ordinary file. */
-    fchmod(fd, 0644);
-    FILE *file = fdopen(fd, "wb");
-    rt_status status = file ? rt_ppm_write_file(file, image, format)
-                            : RT_ERR_IO;
-    int saved = errno;
-    if (file != NULL) {
-        if (status == RT_OK && (fflush(file) != 0 || fsync(fileno(file)) != 0))
-            status = RT_ERR_IO, saved = errno;
-        if (fclose(file) != 0 && status == RT_OK)
-            status = RT_ERR_IO, saved = errno;
-    } else {
-        close(fd);
-    }
-    if (status == RT_OK && rename(temp, path) != 0)
-        status = RT_ERR_IO, saved = errno;
-    if (status != RT_OK) {
-        unlink(temp);
-        free(temp);
-        if (status == RT_ERR_IO)
-            return rt__error_set(error, status, path, 0, 0,
-                                 "cannot write the image: %s",
-                                 strerror(saved));
-        return rt__error_set(error, status, path, 0, 0,
-                             "cannot write the image: %s",
-                             rt_status_string(status));
-    }
-    free(temp);
-    return RT_OK;
+    if (format != RT_PPM_P3 && format != RT_PPM_P6)
+        return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
+                             "expected P3 or P6, found format %d",
+                             (int)format);
+    return rt_image_save(path, image, (rt_image_format)format, error);
 }
 
 /* A cursor over PPM bytes that knows its line and column. */
@@ -293,9 +243,6 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
     }
     return RT_OK;
 }
-
-
-
 
 rt_status rt_ppm_load(const char *path, rt_image *image, rt_error *error)
 {

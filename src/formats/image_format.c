@@ -1,0 +1,121 @@
+/*
+ * image_format.c - choosing an image format and writing an image in it:
+ * the dispatch between the PPM writers (ppm.c) and the PNG writer (png.c,
+ * present only in builds with libpng).
+ */
+#include <ctype.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "error.h"
+#include "formats/formats.h"
+
+int rt_image_format_supported(rt_image_format format)
+{
+    switch (format) {
+    case RT_IMAGE_P3:
+    case RT_IMAGE_P6:
+        return 1;
+    case RT_IMAGE_PNG:
+        return RAYTRACE_HAVE_PNG;
+    }
+    return 0;
+}
+
+const char *rt_image_format_name(rt_image_format format)
+{
+    switch (format) {
+    case RT_IMAGE_P3:
+        return "p3";
+    case RT_IMAGE_P6:
+        return "p6";
+    case RT_IMAGE_PNG:
+        return "png";
+    }
+    return "unknown";
+}
+
+/* Non-zero when `extension` (with its dot) equals `wanted`, ignoring
+ * case. */
+static int extension_is(const char *extension, const char *wanted)
+{
+    for (; *extension && *wanted; extension++, wanted++)
+        if (tolower((unsigned char)*extension) != *wanted)
+            return 0;
+    return *extension == '\0' && *wanted == '\0';
+}
+
+rt_status rt_image_format_from_path(const char *path, rt_image_format *format)
+{
+    if (path == NULL)
+        return RT_ERR_ARGUMENT;
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    if (dot == NULL || dot == base)
+        return RT_ERR_FORMAT;
+    if (extension_is(dot, ".png"))
+        *format = RT_IMAGE_PNG;
+    else if (extension_is(dot, ".ppm") || extension_is(dot, ".pnm"))
+        *format = RT_IMAGE_P6;
+    else
+        return RT_ERR_FORMAT;
+    return RT_OK;
+}
+
+rt_status rt__image_format_refusal(rt_image_format format, rt_error *error)
+{
+    if (format == RT_IMAGE_PNG)
+        return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
+                             "cannot write PNG: this build of libraytrace "
+                             "has no PNG support (it was built without "
+                             "libpng)");
+    return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
+                         "cannot write images in format %d: expected p3, "
+                         "p6 or png", (int)format);
+}
+
+rt_status rt_image_write_to(rt_write_func write, void *context,
+                            const rt_image *image, rt_image_format format,
+                            rt_error *error)
+{
+    if (!rt_image_format_supported(format))
+        return rt__image_format_refusal(format, error);
+    if (write == NULL || image == NULL || image->pixels == NULL ||
+        image->width < 1 || image->height < 1 ||
+        image->stride < (size_t)image->width * 3)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected an image and a sink");
+#if RAYTRACE_HAVE_PNG
+    if (format == RT_IMAGE_PNG)
+        return rt__png_write_to(write, context, image, error);
+#endif
+    rt_status status =
+        rt_ppm_write_to(write, context, image, (rt_ppm_format)format);
+    if (status != RT_OK)
+        return rt__error_set(error, status, NULL, 0, 0,
+                             "cannot write the image: %s",
+                             rt_status_string(status));
+    return RT_OK;
+}
+
+static int write_to_file(void *context, const void *data, size_t size)
+{
+    return fwrite(data, 1, size, (FILE *)context) == size;
+}
+
+rt_status rt_image_write_file(FILE *file, const rt_image *image,
+                              rt_image_format format, rt_error *error)
+{
+    if (file == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a stream");
+    rt_status status = rt_image_write_to(write_to_file, file, image, format,
+                                         error);
+    /* A full device shows up only when the buffer is flushed. */
+    if (status == RT_OK && (fflush(file) != 0 || ferror(file)))
+        status = rt__error_set(error, RT_ERR_IO, NULL, 0, 0,
+                               "cannot write the image: %s",
+                               "input/output error");
+    return status;
+}

@@ -1,0 +1,615 @@
+/*
+ * save.c - the one routine that writes an image file at a path, for every
+ * format (rt_image_save, rt_image_save_check).
+ *
+ * The rule is stated in raytrace/image.h: what the path names decides how it
+ * is written.  Regular files (and names not taken yet) are replaced
+ * atomically through a temporary file in the same folder; devices, FIFOs,
+ * sockets and open descriptors are streams and are written directly; a
+ * multiply linked file is rewritten in place from a complete temporary copy
+ * so the links stay one file.  Symbolic links are followed here, link by
+ * link, so that the temporary file lands beside the final target and the
+ * rename replaces the target, not the link.  SIGINT, SIGTERM and SIGHUP are
+ * blocked in the calling thread while a temporary file exists and polled
+ * between writes, so an interrupted save removes its temporary file first.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "error.h"
+#include "formats/formats.h"
+#include "raytrace/image.h"
+
+/* Links followed before giving up, as the kernel's own limit (ELOOP). */
+#define MAX_LINKS 40
+/* Bytes gathered before each write(2). */
+#define BUFFER_SIZE (1 << 16)
+
+/* What the destination is, once links are followed. */
+typedef enum kind {
+    KIND_ABSENT,            /* nothing there yet */
+    KIND_REGULAR,
+    KIND_LINKED,            /* a regular file with several hard links */
+    KIND_STREAM,            /* device, FIFO, or descriptor via /proc */
+    KIND_SOCKET,
+    KIND_DIRECTORY
+} kind;
+
+typedef struct destination {
+    char *path;             /* the final target (malloc'd) */
+    kind kind;
+    struct stat st;         /* of the target, when it exists */
+} destination;
+
+/* A buffered sink over a file descriptor that stops when a blocked
+ * termination signal is pending (watch_signals). */
+typedef struct fd_sink {
+    int fd;
+    int watch_signals;
+    int interrupted;        /* the signal that stopped it, or 0 */
+    int error;              /* errno of a failed write, or 0 */
+    size_t used;
+    unsigned char buffer[BUFFER_SIZE];
+} fd_sink;
+
+static const int watched[] = {SIGINT, SIGTERM, SIGHUP};
+#define WATCHED_COUNT (sizeof watched / sizeof watched[0])
+
+/* The termination signals that would end or reach the program: those it
+ * ignores (a background job's SIGINT, nohup's SIGHUP) cannot interrupt a
+ * save. */
+static void termination_signals(sigset_t *set)
+{
+    sigemptyset(set);
+    for (size_t i = 0; i < WATCHED_COUNT; i++) {
+        struct sigaction action;
+        if (sigaction(watched[i], NULL, &action) == 0 &&
+            action.sa_handler != SIG_IGN)
+            sigaddset(set, watched[i]);
+    }
+}
+
+/* A termination signal waiting for this thread or the process, or 0. */
+static int pending_termination(void)
+{
+    sigset_t pending, watching;
+    if (sigpending(&pending) != 0)
+        return 0;
+    termination_signals(&watching);
+    for (size_t i = 0; i < WATCHED_COUNT; i++)
+        if (sigismember(&pending, watched[i]) == 1 &&
+            sigismember(&watching, watched[i]) == 1)
+            return watched[i];
+    return 0;
+}
+
+static int write_all(int fd, const unsigned char *data, size_t size)
+{
+    while (size > 0) {
+        ssize_t n = write(fd, data, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return n == 0 ? (errno = EIO, 0) : 0;
+        data += n;
+        size -= (size_t)n;
+    }
+    return 1;
+}
+
+static int sink_flush(fd_sink *s)
+{
+    if (s->watch_signals && (s->interrupted = pending_termination()) != 0)
+        return 0;
+    if (!write_all(s->fd, s->buffer, s->used)) {
+        s->error = errno;
+        return 0;
+    }
+    s->used = 0;
+    return 1;
+}
+
+static int sink_write(void *context, const void *data, size_t size)
+{
+    fd_sink *s = context;
+    const unsigned char *bytes = data;
+    while (size > 0) {
+        if (s->used == BUFFER_SIZE && !sink_flush(s))
+            return 0;
+        size_t n = BUFFER_SIZE - s->used < size ? BUFFER_SIZE - s->used : size;
+        memcpy(s->buffer + s->used, bytes, n);
+        s->used += n;
+        bytes += n;
+        size -= n;
+    }
+    return 1;
+}
+
+static char *copy_string(const char *s, size_t length)
+{
+    char *copy = malloc(length + 1);
+    if (copy != NULL) {
+        memcpy(copy, s, length);
+        copy[length] = '\0';
+    }
+    return copy;
+}
+
+/* The folder part of `path` with its slash ("dir/"), or "" (malloc'd). */
+static char *folder_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return copy_string(path, slash ? (size_t)(slash - path) + 1 : 0);
+}
+
+/* A link's target, read relative to the link's folder (malloc'd). */
+static char *follow(const char *link, rt_status *status)
+{
+    size_t capacity = 256;
+    for (;;) {
+        char *target = malloc(capacity);
+        if (target == NULL)
+            return *status = RT_ERR_NOMEM, NULL;
+        ssize_t n = readlink(link, target, capacity);
+        if (n < 0) {
+            free(target);
+            return *status = RT_ERR_IO, NULL;
+        }
+        if ((size_t)n < capacity) {
+            target[n] = '\0';
+            if (target[0] == '/')
+                return target;
+            char *folder = folder_of(link);
+            char *joined = folder ? malloc(strlen(folder) + (size_t)n + 1)
+                                  : NULL;
+            if (joined != NULL) {
+                strcpy(joined, folder);
+                strcat(joined, target);
+            }
+            free(folder);
+            free(target);
+            return joined ? joined : (*status = RT_ERR_NOMEM, NULL);
+        }
+        free(target);
+        if (capacity > (size_t)SSIZE_MAX / 2)
+            return *status = RT_ERR_IO, errno = ENAMETOOLONG, NULL;
+        capacity *= 2;
+    }
+}
+
+/* A path inside /proc names an open descriptor (/dev/stdout leads there);
+ * its links are the kernel's, not paths to follow by hand. */
+static int in_proc(const char *path)
+{
+    return strncmp(path, "/proc/", 6) == 0;
+}
+
+static rt_status io_error(rt_error *error, const char *path, int saved,
+                          const char *what)
+{
+    return rt__error_set(error, RT_ERR_IO, path, 0, 0, "%s: %s", what,
+                         strerror(saved));
+}
+
+/* Follows `path` to what it finally names and says what that is. */
+static rt_status resolve(const char *path, destination *d, rt_error *error)
+{
+    memset(d, 0, sizeof *d);
+    char *current = copy_string(path, strlen(path));
+    if (current == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    for (int links = 0;; links++) {
+        if (in_proc(current)) {
+            /* Let the kernel follow its own links: stat the whole path. */
+            free(current);
+            d->path = copy_string(path, strlen(path));
+            if (d->path == NULL)
+                return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                                     "out of memory");
+            if (stat(path, &d->st) != 0) {
+                int saved = errno;
+                if (saved == ENOENT || saved == ENOTDIR) {
+                    d->kind = KIND_ABSENT;  /* a new file in a real folder
+                                               reached through /proc */
+                    return RT_OK;
+                }
+                free(d->path);
+                d->path = NULL;
+                return io_error(error, path, saved, "cannot write the image");
+            }
+            if (S_ISDIR(d->st.st_mode))
+                return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                                     "cannot write the image: is a "
+                                     "directory");
+            d->kind = KIND_STREAM;
+            return RT_OK;
+        }
+        if (lstat(current, &d->st) != 0) {
+            int saved = errno;
+            /* A missing or non-folder parent is told by the temporary
+             * file's creation, which names the folder. */
+            if (saved != ENOENT && saved != ENOTDIR) {
+                free(current);
+                return io_error(error, path, saved, "cannot write the image");
+            }
+            d->kind = KIND_ABSENT;
+            break;
+        }
+        if (!S_ISLNK(d->st.st_mode)) {
+            mode_t m = d->st.st_mode;
+            d->kind = S_ISDIR(m)    ? KIND_DIRECTORY
+                      : S_ISSOCK(m) ? KIND_SOCKET
+                      : S_ISREG(m)  ? (d->st.st_nlink > 1 ? KIND_LINKED
+                                                          : KIND_REGULAR)
+                                    : KIND_STREAM;
+            break;
+        }
+        if (links == MAX_LINKS) {
+            free(current);
+            return io_error(error, path, ELOOP, "cannot write the image");
+        }
+        rt_status status = RT_OK;
+        char *next = follow(current, &status);
+        int saved = errno;
+        free(current);
+        if (next == NULL)
+            return status == RT_ERR_NOMEM
+                       ? rt__error_set(error, status, path, 0, 0,
+                                       "out of memory")
+                       : io_error(error, path, saved,
+                                  "cannot follow the symbolic link");
+        current = next;
+    }
+    d->path = current;
+    if (d->kind == KIND_DIRECTORY)
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: is a directory");
+    return RT_OK;
+}
+
+/* The message for a temporary file that cannot be made in `folder`. */
+static rt_status folder_error(rt_error *error, const char *path,
+                              const char *folder, int saved)
+{
+    const char *shown = folder[0] ? folder : "./";
+    if (saved == ENOENT)
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: the folder %s does "
+                             "not exist", shown);
+    if (saved == ENOTDIR)
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: %s is not a folder",
+                             shown);
+    return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                         "cannot write the image in the folder %s: %s",
+                         shown, strerror(saved));
+}
+
+/*
+ * Creates a new file ".rt-save-XXXXXX" in the folder of `target` with mode
+ * 0666 (the umask applies, as for any new file).  Returns its descriptor and
+ * sets *temp, or -1 with errno set.
+ */
+static int create_temporary(const char *target, char **temp)
+{
+    static const char letters[] =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    char *folder = folder_of(target);
+    char *name = folder ? malloc(strlen(folder) + sizeof ".rt-save-XXXXXX")
+                        : NULL;
+    if (name == NULL) {
+        free(folder);
+        errno = ENOMEM;
+        return -1;
+    }
+    struct timespec now;
+    clock_gettime(CLOCK_REALTIME, &now);
+    uint64_t state = (uint64_t)now.tv_nsec ^ ((uint64_t)now.tv_sec << 20) ^
+                     ((uint64_t)getpid() << 40) ^ (uint64_t)(uintptr_t)name;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; attempt++) {
+        char suffix[7];
+        for (int i = 0; i < 6; i++) {
+            state = state * 6364136223846793005u + 1442695040888963407u;
+            suffix[i] = letters[(state >> 33) % (sizeof letters - 1)];
+        }
+        suffix[6] = '\0';
+        sprintf(name, "%s.rt-save-%s", folder, suffix);
+        fd = open(name, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOCTTY,
+                  0666);
+        if (fd < 0 && errno != EEXIST)
+            break;
+    }
+    free(folder);
+    if (fd < 0) {
+        int saved = errno;
+        free(name);
+        errno = saved;
+        return -1;
+    }
+    *temp = name;
+    return fd;
+}
+
+/* Gives the temporary file the replaced file's owner, group and mode
+ * (owner and group only where the process may; chown first, as it clears
+ * set-user-ID bits). */
+static void keep_attributes(int fd, const struct stat *old)
+{
+    struct stat now;
+    if (fstat(fd, &now) == 0 &&
+        (now.st_uid != old->st_uid || now.st_gid != old->st_gid) &&
+        fchown(fd, old->st_uid, old->st_gid) != 0)
+        (void)!fchown(fd, (uid_t)-1, old->st_gid);
+    (void)fchmod(fd, old->st_mode & 07777);
+}
+
+/* Encodes into `s`, flushing the tail; the status says why it stopped. */
+static rt_status encode(fd_sink *s, const rt_image *image,
+                        rt_image_format format, rt_error *error)
+{
+    rt_status status = rt_image_write_to(sink_write, s, image, format, error);
+    if (status == RT_OK && s->used > 0 && !sink_flush(s))
+        status = RT_ERR_IO;
+    return status;
+}
+
+/* The error of a sink that stopped. */
+static rt_status sink_error(const fd_sink *s, rt_status status,
+                            const char *path, rt_error *error)
+{
+    if (s->interrupted)
+        return rt__error_set(error, RT_ERR_INTERRUPTED, path, 0, 0,
+                             "save interrupted by signal %d; the file was "
+                             "left as it was", s->interrupted);
+    if (status == RT_ERR_IO)
+        return io_error(error, path, s->error ? s->error : EIO,
+                        "cannot write the image");
+    return status;          /* the encoder filled *error */
+}
+
+/* Copies the complete temporary file over the linked file in place, after
+ * reserving its space, so the links keep pointing at one file. */
+static int copy_in_place(int temp_fd, const char *target, fd_sink *s)
+{
+    off_t size = lseek(temp_fd, 0, SEEK_END);
+    int fd = open(target, O_WRONLY | O_CLOEXEC | O_NOCTTY);
+    if (size < 0 || fd < 0) {
+        s->error = errno;
+        if (fd >= 0)
+            close(fd);
+        return 0;
+    }
+    int reserved = size == 0 ? 0 : posix_fallocate(fd, 0, size);
+    int ok = reserved == 0 || reserved == EINVAL || reserved == EOPNOTSUPP;
+    if (!ok)
+        s->error = reserved;
+    for (off_t at = 0; ok && at < size;) {
+        ssize_t n = pread(temp_fd, s->buffer, BUFFER_SIZE, at);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0 || !write_all(fd, s->buffer, (size_t)n)) {
+            s->error = n == 0 ? EIO : errno;
+            ok = 0;
+            break;
+        }
+        at += n;
+    }
+    if (ok && (ftruncate(fd, size) != 0 || fsync(fd) != 0))
+        ok = 0, s->error = errno;
+    if (close(fd) != 0 && ok)
+        ok = 0, s->error = errno;
+    return ok;
+}
+
+/* Makes a rename durable: syncs the folder (best effort; some file systems
+ * refuse fsync on a folder). */
+static void sync_folder(const char *target)
+{
+    char *folder = folder_of(target);
+    if (folder == NULL)
+        return;
+    int fd = open(folder[0] ? folder : ".", O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+        (void)fsync(fd);
+        close(fd);
+    }
+    free(folder);
+}
+
+/* Nothing there or a regular file: through a temporary file. */
+static rt_status save_through_temporary(const char *path,
+                                        const destination *d,
+                                        const rt_image *image,
+                                        rt_image_format format,
+                                        rt_error *error)
+{
+    fd_sink *s = malloc(sizeof *s);
+    if (s == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    sigset_t signals, previous;
+    termination_signals(&signals);
+    pthread_sigmask(SIG_BLOCK, &signals, &previous);
+
+    rt_status status = RT_OK;
+    char *temp = NULL;
+    int fd = create_temporary(d->path, &temp);
+    if (fd < 0) {
+        int saved = errno;
+        char *folder = folder_of(d->path);
+        status = folder ? folder_error(error, path, folder, saved)
+                        : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                                        "out of memory");
+        free(folder);
+        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+        free(s);
+        return status;
+    }
+    *s = (fd_sink){.fd = fd, .watch_signals = 1};
+    if (d->kind == KIND_REGULAR)
+        keep_attributes(fd, &d->st);
+    status = encode(s, image, format, error);
+    if (status == RT_OK && fsync(fd) != 0)
+        status = RT_ERR_IO, s->error = errno;
+    if (status == RT_OK && (s->interrupted = pending_termination()) != 0)
+        status = RT_ERR_IO;
+    if (status == RT_OK && d->kind == KIND_LINKED &&
+        !copy_in_place(fd, d->path, s))
+        status = RT_ERR_IO;
+    if (close(fd) != 0 && status == RT_OK)
+        status = RT_ERR_IO, s->error = errno;
+    if (status == RT_OK && d->kind != KIND_LINKED) {
+        if (rename(temp, d->path) != 0)
+            status = RT_ERR_IO, s->error = errno;
+        else
+            sync_folder(d->path);
+    }
+    if (status != RT_OK || d->kind == KIND_LINKED)
+        unlink(temp);
+    if (status != RT_OK)
+        status = sink_error(s, status, path, error);
+    free(temp);
+    free(s);
+    /* A signal that came meanwhile is delivered now, the file in order. */
+    pthread_sigmask(SIG_SETMASK, &previous, NULL);
+    return status;
+}
+
+/* Opens a Unix socket's listener as a stream, or -1 with errno set. */
+static int connect_socket(const char *path)
+{
+    struct sockaddr_un address = {.sun_family = AF_UNIX};
+    if (strlen(path) >= sizeof address.sun_path) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(address.sun_path, path);
+    int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd >= 0 && connect(fd, (struct sockaddr *)&address,
+                           sizeof address) != 0) {
+        int saved = errno;
+        close(fd);
+        errno = saved;
+        fd = -1;
+    }
+    return fd;
+}
+
+/* A device, FIFO, socket or open descriptor: written as a stream. */
+static rt_status save_to_stream(const char *path, const destination *d,
+                                const rt_image *image, rt_image_format format,
+                                rt_error *error)
+{
+    /* A regular file behind /proc/.../fd/N is rewritten from its start. */
+    int truncate = d->kind == KIND_STREAM && S_ISREG(d->st.st_mode);
+    int fd = d->kind == KIND_SOCKET
+                 ? connect_socket(d->path)
+                 : open(d->path, O_WRONLY | O_CLOEXEC | O_NOCTTY |
+                                     (truncate ? O_TRUNC : 0));
+    if (fd < 0)
+        return io_error(error, path, errno, "cannot open for writing");
+    fd_sink *s = malloc(sizeof *s);
+    if (s == NULL) {
+        close(fd);
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    }
+    *s = (fd_sink){.fd = fd};
+    rt_status status = encode(s, image, format, error);
+    if (close(fd) != 0 && status == RT_OK)
+        status = RT_ERR_IO, s->error = errno;
+    if (status != RT_OK)
+        status = sink_error(s, status, path, error);
+    free(s);
+    return status;
+}
+
+static int valid_image(const rt_image *image)
+{
+    return image != NULL && image->pixels != NULL && image->width > 0 &&
+           image->height > 0 && image->stride >= (size_t)image->width * 3;
+}
+
+rt_status rt_image_save(const char *path, const rt_image *image,
+                        rt_image_format format, rt_error *error)
+{
+    if (path == NULL || path[0] == '\0' || !valid_image(image))
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected a path and an image");
+    if (!rt_image_format_supported(format))
+        return rt__image_format_refusal(format, error);
+    destination d;
+    rt_status status = resolve(path, &d, error);
+    if (status == RT_OK)
+        status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
+                     ? save_to_stream(path, &d, image, format, error)
+                     : save_through_temporary(path, &d, image, format,
+                                              error);
+    free(d.path);
+    return status;
+}
+
+rt_status rt_image_save_check(const char *path, rt_error *error)
+{
+    if (path == NULL || path[0] == '\0')
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected a path");
+    destination d;
+    rt_status status = resolve(path, &d, error);
+    if (status != RT_OK) {
+        free(d.path);
+        return status;
+    }
+    int fd = -1;
+    if (d.kind == KIND_STREAM && !S_ISFIFO(d.st.st_mode)) {
+        fd = open(d.path, O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+        if (fd < 0)
+            status = io_error(error, path, errno, "cannot open for writing");
+    } else if (d.kind == KIND_STREAM || d.kind == KIND_SOCKET) {
+        /* A FIFO would wait for its reader: its permission is enough. */
+        if (access(d.path, W_OK) != 0)
+            status = io_error(error, path, errno, "cannot open for writing");
+    } else {
+        if (d.kind == KIND_LINKED &&
+            (fd = open(d.path, O_WRONLY | O_CLOEXEC | O_NOCTTY)) < 0)
+            status = io_error(error, path, errno, "cannot open for writing");
+        /* The probe exists only between two calls: no signal may end the
+         * program in between, leaving it behind. */
+        sigset_t signals, previous;
+        termination_signals(&signals);
+        pthread_sigmask(SIG_BLOCK, &signals, &previous);
+        char *temp = NULL;
+        int probe = status == RT_OK ? create_temporary(d.path, &temp) : 0;
+        if (probe < 0) {
+            int saved = errno;
+            char *folder = folder_of(d.path);
+            status = folder ? folder_error(error, path, folder, saved)
+                            : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                                            "out of memory");
+            free(folder);
+        } else if (status == RT_OK) {
+            close(probe);
+            unlink(temp);
+            free(temp);
+        }
+        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+    }
+    if (fd >= 0)
+        close(fd);
+    free(d.path);
+    return status;
+}
