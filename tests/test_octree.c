@@ -319,6 +319,43 @@ START_TEST(far_and_inside_cameras_render_identically)
 }
 END_TEST
 
+/* Transparent facets (refraction, total internal reflection), several
+ * lights and a thin lens: every query of the ray tree goes through the
+ * octree too. */
+START_TEST(transparency_lights_and_lens_render_identically)
+{
+    soup s = {0};
+    for (int i = 0; i < (memcheck() ? 150 : 1200); i++) {
+        rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+        soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
+        if (i % 3 == 0) {
+            s.f[s.nf - 1].t = 0.6;
+            s.f[s.nf - 1].n = i % 2 ? 1.5 : 0.7;
+        }
+    }
+    rt_light lights[2] = {{{-3, 2, 4}, {120, 200, 90}},
+                          {{2, -4, -3}, {200, 80, 150}}};
+    rt_scene_desc desc = {
+        .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
+        .screen_right = {0.8, -3, 0.45},
+        .width = memcheck() ? 12 : 48, .height = memcheck() ? 12 : 48,
+        .vertices = s.v, .vertex_count = s.nv,
+        .facets = s.f, .facet_count = s.nf,
+        .background = {30, 40, 50},
+        .light_position = {1, -2, 5}, .light_color = {255, 255, 255},
+        .more_lights = lights, .more_light_count = 2,
+        .aperture = 0.05, .focal_distance = 4};
+    rt_scene *scene;
+    rt_error error;
+    ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
+                  error.message);
+    free(s.v);
+    free(s.f);
+    check_scene(scene, "transparency, lights, lens");
+    rt_scene_free(scene);
+}
+END_TEST
+
 /* --- single rays ------------------------------------------------------ */
 
 /* The same colour, bit for bit, through the octree and brute force, in
@@ -529,6 +566,7 @@ static Suite *octree_suite(void)
     tcase_add_test(images, slivers_beside_huge_walls_render_identically);
     tcase_add_test(images, coincident_facets_keep_the_tie_of_the_file_order);
     tcase_add_test(images, far_and_inside_cameras_render_identically);
+    tcase_add_test(images, transparency_lights_and_lens_render_identically);
     suite_add_tcase(s, images);
     TCase *rays = tcase_create("rays");
     tcase_set_timeout(rays, 300);
