@@ -338,6 +338,8 @@ static octree *octree_build(const KERNEL_T *k)
 {
     double start = seconds_now();
     octree *t = calloc(1, sizeof *t);
+    if (t == NULL)
+        return NULL;
     builder b = {0};
     size_t n = (size_t)k->count;
     b.tree = t;
@@ -345,8 +347,7 @@ static octree *octree_build(const KERNEL_T *k)
     int32_t *list = malloc((n ? n : 1) * sizeof *list);
     t->always = malloc((n ? n : 1) * sizeof *t->always);
     t->nodes = malloc(sizeof *t->nodes);
-    if (t == NULL || b.v == NULL || list == NULL || t->always == NULL ||
-        t->nodes == NULL) {
+    if (b.v == NULL || list == NULL || t->always == NULL || t->nodes == NULL) {
         free(b.v);
         free(list);
         octree_free(t);
@@ -378,6 +379,14 @@ static octree *octree_build(const KERNEL_T *k)
     double size = 0;
     for (int a = 0; listed > 0 && a < 3; a++)
         size = fmax(size, hi[a] - lo[a]);
+    if (!(size * 2 < INFINITY)) {
+        /* coordinates near double's limit: no cell arithmetic would be
+         * safe; every facet goes to the list every ray tests */
+        for (int i = 0; i < listed; i++)
+            t->always[t->always_count++] = list[i];
+        listed = 0;
+        size = 0;
+    }
     t->margin = size * OCTREE_MARGIN;
     /* A cube a little larger than the facets' box and off its centre, so
      * that the cells' faces do not fall on the round coordinates modelled
