@@ -35,7 +35,8 @@ typedef struct entry {
     int shared;             /* FROM_FILE: in the SPD directory */
     int facets;             /* generated scenes */
     int width, height;
-    int octree_only;        /* too big for brute force at this size */
+    int octree_only;        /* too big for brute force at this size (2: and
+                               run only when --only names it) */
 } entry;
 
 /* Image sizes keep the scalar renders of the big scenes to seconds. */
@@ -62,6 +63,7 @@ static const entry entries[] = {
     {"sphere-100k", SPHERE, NULL, 0, 100000, 400, 400, 1},
     {"sphere-1M", SPHERE, NULL, 0, 1000000, 400, 400, 1},
     {"soup-1M", SOUP, NULL, 0, 1000000, 400, 400, 1},
+    {"big-sphere-5M", SPHERE, NULL, 0, 5000000, 400, 400, 2},
 };
 #define ENTRY_COUNT ((int)(sizeof entries / sizeof entries[0]))
 
@@ -175,13 +177,16 @@ static void usage(void)
             "  --runs N    renders per setting, the median is kept "
             "(default 5)\n"
             "  --only NAME only the scenes whose name starts with NAME\n"
-            "  --spd DIR   the SPD scenes (default %s/spd-scenes)\n",
+            "              (big-sphere-5M, 5,000,000 facets, runs only so)\n"
+            "  --spd DIR   the SPD scenes (default %s/spd-scenes)\n"
+            "  --no-scalar leave out the scalar settings (minutes on the "
+            "big scenes)\n",
             RT_SHARED_DIR);
 }
 
 int main(int argc, char **argv)
 {
-    int runs = 5;
+    int runs = 5, skip_scalar = 0;
     const char *only = NULL;
     char spd[4096];
     snprintf(spd, sizeof spd, "%s/spd-scenes", RT_SHARED_DIR);
@@ -190,6 +195,8 @@ int main(int argc, char **argv)
             runs = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--only") && i + 1 < argc) {
             only = argv[++i];
+        } else if (!strcmp(argv[i], "--no-scalar")) {
+            skip_scalar = 1;
         } else if (!strcmp(argv[i], "--spd") && i + 1 < argc) {
             snprintf(spd, sizeof spd, "%s", argv[++i]);
         } else {
@@ -208,6 +215,8 @@ int main(int argc, char **argv)
     for (int e = 0; e < ENTRY_COUNT; e++) {
         const entry *en = &entries[e];
         if (only != NULL && strncmp(en->name, only, strlen(only)) != 0)
+            continue;
+        if (en->octree_only == 2 && only == NULL)
             continue;
         rt_scene *scene;
         rt_error error;
@@ -229,8 +238,9 @@ int main(int argc, char **argv)
             fprintf(stderr, "\r%-12s %4dx%-4d run %d of %d ", en->name,
                     en->width, en->height, run + 1, runs);
             for (int s = first; s < SETTING_COUNT && ok; s++)
-                ok = measure_once(scene, &settings[s], &images[s],
-                                  &results[e][s], run);
+                if (!skip_scalar || settings[s].kernel != RT_KERNEL_SCALAR)
+                    ok = measure_once(scene, &settings[s], &images[s],
+                                      &results[e][s], run);
         }
         for (int s = first; s < SETTING_COUNT && ok; s++) {
             result *r = &results[e][s];
@@ -242,13 +252,14 @@ int main(int argc, char **argv)
             identical[e] =
                 en->octree_only
                     ? same_pixels(&images[6], &images[7])
-                    : same_pixels(&images[0], &images[1]) &&
-                          same_pixels(&images[0], &images[2]) &&
-                          same_pixels(&images[3], &images[4]) &&
-                          same_pixels(&images[3], &images[5]) &&
-                          same_pixels(&images[0], &images[6]) &&
-                          same_pixels(&images[0], &images[7]) &&
-                          same_pixels(&images[3], &images[8]);
+                    : same_pixels(&images[1], &images[2]) &&
+                          same_pixels(&images[4], &images[5]) &&
+                          same_pixels(&images[1], &images[6]) &&
+                          same_pixels(&images[1], &images[7]) &&
+                          same_pixels(&images[4], &images[8]) &&
+                          (skip_scalar ||
+                           (same_pixels(&images[0], &images[1]) &&
+                            same_pixels(&images[3], &images[4])));
             failures += !identical[e];
         } else {
             fprintf(stderr, "\nrt-perf: %s: rendering failed\n", en->name);
@@ -276,7 +287,8 @@ int main(int argc, char **argv)
                entries[e].width, entries[e].height);
         for (int s = 0; s < SETTING_COUNT; s++) {
             const result *r = &results[e][s];
-            if (entries[e].octree_only && s < FIRST_OCTREE)
+            if ((entries[e].octree_only && s < FIRST_OCTREE) ||
+                (skip_scalar && settings[s].kernel == RT_KERNEL_SCALAR))
                 printf(" - |");
             else
                 printf(" %.2f / %.3f |", rays(&r->stats) / r->seconds * 1e-6,
@@ -291,7 +303,7 @@ int main(int argc, char **argv)
            "fast float/scalar double (1 thread) | fast/scalar float "
            "(1 thread) | all/1 thread double | all/1 thread float | "
            "same image |\n|---|--:|--:|--:|--:|--:|--:|:-:|\n");
-    for (int e = 0; e < ENTRY_COUNT; e++) {
+    for (int e = 0; e < ENTRY_COUNT && !skip_scalar; e++) {
         if (!done[e] || entries[e].octree_only)
             continue;
         const result *r = results[e];

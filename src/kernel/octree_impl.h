@@ -228,20 +228,43 @@ static void build_node(builder *b, const todo *d, const int32_t *list,
         mid[a] = d->lo[a] + (d->hi[a] - d->lo[a]) * 0.5;
     size_t start = next->ref_count, total = 0;
     todo children[8];
+    double centre[8][3], half[8][3];
     for (int c = 0; c < 8; c++) {
         todo *ch = &children[c];
-        double centre[3], half[3];
         child_box(d->lo, d->hi, mid, c, ch->lo, ch->hi);
         for (int a = 0; a < 3; a++) {
-            centre[a] = ch->lo[a] + (ch->hi[a] - ch->lo[a]) * 0.5;
-            half[a] = (ch->hi[a] - ch->lo[a]) * 0.5 + t->margin;
+            centre[c][a] = ch->lo[a] + (ch->hi[a] - ch->lo[a]) * 0.5;
+            half[c][a] = (ch->hi[a] - ch->lo[a]) * 0.5 + t->margin;
         }
-        ch->list = start + total;
         ch->n = 0;
-        for (int i = 0; i < n; i++)
-            if (triangle_box_overlap(centre, half, b->v[list[i]]))
-                next->refs[start + total + (size_t)ch->n++] = list[i];
-        total += (size_t)ch->n;
+    }
+    /* Child c collects its facets at start + c n, then the lists are
+     * packed.  A child the facet's bounding box clearly misses (by twice
+     * the margin: the overlap test would reject it too) is not tested. */
+    int32_t *region = next->refs + start;
+    for (int i = 0; i < n; i++) {
+        double (*v)[3] = b->v[list[i]];
+        unsigned sides[3];  /* bit 0: may be in the lower half, 1: upper */
+        for (int a = 0; a < 3; a++) {
+            double low = fmin(v[0][a], fmin(v[1][a], v[2][a]));
+            double high = fmax(v[0][a], fmax(v[1][a], v[2][a]));
+            sides[a] = (low <= mid[a] + 2 * t->margin) |
+                       (high >= mid[a] - 2 * t->margin) << 1;
+        }
+        for (int c = 0; c < 8; c++) {
+            if (!((sides[0] >> (c & 1)) & (sides[1] >> ((c >> 1) & 1)) &
+                  (sides[2] >> ((c >> 2) & 1)) & 1))
+                continue;
+            if (triangle_box_overlap(centre[c], half[c], v))
+                region[(size_t)c * (size_t)n + (size_t)children[c].n++] =
+                    list[i];
+        }
+    }
+    for (int c = 0; c < 8; c++) {
+        children[c].list = start + total;
+        memmove(next->refs + start + total, region + (size_t)c * (size_t)n,
+                (size_t)children[c].n * sizeof *region);
+        total += (size_t)children[c].n;
     }
     if (total > (size_t)OCTREE_SPLIT_GROWTH * (size_t)n ||
         b->frontier + total - (size_t)n > b->budget) {
