@@ -159,12 +159,14 @@ static int grow(void **array, size_t *capacity, size_t needed, size_t size)
 static void make_leaf(builder *b, int node, const int32_t *list, int n)
 {
     octree *t = b->tree;
-    if (!grow((void **)&t->refs, &b->ref_capacity, t->ref_count + (size_t)n,
-              sizeof *t->refs)) {
-        b->failed = 1;
-        return;
+    if (n > 0) {            /* (an empty leaf may have no list at all) */
+        if (!grow((void **)&t->refs, &b->ref_capacity,
+                  t->ref_count + (size_t)n, sizeof *t->refs)) {
+            b->failed = 1;
+            return;
+        }
+        memcpy(t->refs + t->ref_count, list, (size_t)n * sizeof *list);
     }
-    memcpy(t->refs + t->ref_count, list, (size_t)n * sizeof *list);
     t->nodes[node] = (onode){(int32_t)t->ref_count, n};
     t->ref_count += (size_t)n;
     t->leaf_count++;
