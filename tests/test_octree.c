@@ -356,6 +356,51 @@ START_TEST(transparency_lights_and_lens_render_identically)
 }
 END_TEST
 
+/* Coordinates near double's limit: no cell arithmetic is safe there, so
+ * every facet goes to the list every ray tests; the image stays brute
+ * force's (double only: a float render of such a scene is refused). */
+START_TEST(coordinates_near_the_limit_of_double_render_identically)
+{
+    soup s = {0};
+    double big = 8e307;
+    for (int i = 0; i < 400; i++) {
+        rt_vec3 p = {uniform(-big, big), uniform(-big, big), uniform(-1, 1)};
+        rt_vec3 q = {p.x + uniform(-1e307, 1e307), p.y + uniform(-1e307, 1e307),
+                     uniform(-1, 1)};
+        rt_vec3 r = {p.x + uniform(-1e307, 1e307), p.y + uniform(-1e307, 1e307),
+                     uniform(-1, 1)};
+        soup_add(&s, p, q, r, i % 4 ? 0.0 : 0.5);
+    }
+    rt_scene_desc desc = {
+        .observer = {0, -1e307, 5e306}, .screen_center = {0, 0, 4e306},
+        .screen_right = {1e307, 0, 4e306},
+        .width = memcheck() ? 8 : 32, .height = memcheck() ? 8 : 32,
+        .vertices = s.v, .vertex_count = s.nv,
+        .facets = s.f, .facet_count = s.nf,
+        .background = {20, 30, 40},
+        .light_position = {1e306, -2e306, 5e307},
+        .light_color = {255, 255, 255}};
+    rt_scene *scene;
+    rt_error error;
+    ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
+                  error.message);
+    free(s.v);
+    free(s.f);
+    for (int samples = 1; samples <= 4; samples += 3) {
+        rt_render_stats stats;
+        rt_image ref = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_NONE, 1,
+                              samples, NULL);
+        rt_image tree = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_OCTREE, 2,
+                               samples, &stats);
+        ck_assert_int_eq(rt_test_image_diff(&ref, &tree, NULL), 0);
+        ck_assert_uint_eq(stats.accel_always, 400);
+        rt_image_destroy(&ref);
+        rt_image_destroy(&tree);
+    }
+    rt_scene_free(scene);
+}
+END_TEST
+
 /* --- single rays ------------------------------------------------------ */
 
 /* The same colour, bit for bit, through the octree and brute force, in
@@ -567,6 +612,8 @@ static Suite *octree_suite(void)
     tcase_add_test(images, coincident_facets_keep_the_tie_of_the_file_order);
     tcase_add_test(images, far_and_inside_cameras_render_identically);
     tcase_add_test(images, transparency_lights_and_lens_render_identically);
+    tcase_add_test(images,
+                   coordinates_near_the_limit_of_double_render_identically);
     suite_add_tcase(s, images);
     TCase *rays = tcase_create("rays");
     tcase_set_timeout(rays, 300);
