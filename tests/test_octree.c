@@ -171,6 +171,20 @@ static void soup_add(soup *s, rt_vec3 a, rt_vec3 b, rt_vec3 c, double k)
     s->nf++;
 }
 
+/* The scene of `desc` (which holds the soup's arrays); the soup is then
+ * emptied. */
+static rt_scene *soup_create(const rt_scene_desc *desc, soup *s)
+{
+    rt_scene *scene;
+    rt_error error;
+    ck_assert_msg(rt_scene_create(desc, &scene, &error) == RT_OK, "%s",
+                  error.message);
+    free(s->v);
+    free(s->f);
+    memset(s, 0, sizeof *s);
+    return scene;
+}
+
 /* The soup seen from `eye` towards `at`, the light at `light`. */
 static rt_scene *soup_scene(soup *s, rt_vec3 eye, rt_vec3 at, rt_vec3 light,
                             int side)
@@ -191,14 +205,7 @@ static rt_scene *soup_scene(soup *s, rt_vec3 eye, rt_vec3 at, rt_vec3 light,
         .facets = s->f, .facet_count = s->nf,
         .background = {20, 30, 40},
         .light_position = light, .light_color = {255, 240, 220}};
-    rt_scene *scene;
-    rt_error error;
-    ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
-                  error.message);
-    free(s->v);
-    free(s->f);
-    memset(s, 0, sizeof *s);
-    return scene;
+    return soup_create(&desc, s);
 }
 
 static rt_vec3 jitter(rt_vec3 p, double r)
@@ -345,12 +352,7 @@ START_TEST(transparency_lights_and_lens_render_identically)
         .light_position = {1, -2, 5}, .light_color = {255, 255, 255},
         .more_lights = lights, .more_light_count = 2,
         .aperture = 0.05, .focal_distance = 4};
-    rt_scene *scene;
-    rt_error error;
-    ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
-                  error.message);
-    free(s.v);
-    free(s.f);
+    rt_scene *scene = soup_create(&desc, &s);
     check_scene(scene, "transparency, lights, lens");
     rt_scene_free(scene);
 }
@@ -380,12 +382,7 @@ START_TEST(coordinates_near_the_limit_of_double_render_identically)
         .background = {20, 30, 40},
         .light_position = {1e306, -2e306, 5e307},
         .light_color = {255, 255, 255}};
-    rt_scene *scene;
-    rt_error error;
-    ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
-                  error.message);
-    free(s.v);
-    free(s.f);
+    rt_scene *scene = soup_create(&desc, &s);
     for (int samples = 1; samples <= 4; samples += 3) {
         rt_render_stats stats;
         rt_image ref = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_NONE, 1,
