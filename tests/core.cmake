@@ -8,7 +8,8 @@ foreach(suite
     test_shade
     test_reflect
     test_ppm
-    test_render)
+    test_render
+    test_extension)
   raytrace_add_suite(${suite})
 endforeach()
 
