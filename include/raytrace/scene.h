@@ -179,6 +179,18 @@ typedef struct rt_load_options {
                                    (0, 1); 0: the default (docs/formats.md) */
     int width, height;          /* the image size for formats that give none
                                    (OBJ); 0: the default */
+    /* A view that overrides or completes the file's camera, each part on
+     * its own (the others keep the file's values): */
+    int look_from_given, look_at_given, up_given, fov_given;
+    rt_vec3 look_from;          /* the observer O */
+    rt_vec3 look_at;            /* the screen centre A lies on O -> look_at,
+                                   at its distance (the default focus) */
+    rt_vec3 up;                 /* up in the image (need not be unit) */
+    double fov;                 /* horizontal field of view in degrees,
+                                   in (0, 180) */
+    const rt_light *lights;     /* when light_count > 0: the lights, in place
+                                   of the file's (copied) */
+    int light_count;
 } rt_load_options;
 
 /* Sets the defaults above.  Thread-safe. */

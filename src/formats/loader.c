@@ -5,6 +5,7 @@
  * nff.c, obj.c).  Each reader is a client of the scene builder.
  */
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,6 +14,8 @@
 #include "formats/formats.h"
 #include "formats/reader.h"
 #include "raytrace/scene.h"
+#include "scene_internal.h"
+#include "vecmath.h"
 
 void rt_load_options_init(rt_load_options *options)
 {
@@ -62,6 +65,69 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format)
     return RT_ERR_FORMAT;
 }
 
+#define PI 3.14159265358979323846
+
+/*
+ * The view of `options` applied to the camera of `d`: what is not given
+ * keeps the file's value (observer O, look-at A, up AC, horizontal field of
+ * view 2 atan(|AB| / |AO|)).  Returns NULL, or what is wrong.
+ */
+static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
+{
+    rt_vec3 from = d->observer, at = d->screen_center;
+    rt_vec3 ao = v3_sub(d->observer, d->screen_center);
+    rt_vec3 ab = v3_sub(d->screen_right, d->screen_center);
+    rt_vec3 up = v3_cross(ao, ab);
+    double fov = 2 * atan(v3_length(ab) / v3_length(ao)) * 180 / PI;
+    if (o->look_from_given)
+        from = o->look_from;
+    if (o->look_at_given)
+        at = o->look_at;
+    if (o->up_given)
+        up = o->up;
+    if (o->fov_given)
+        fov = o->fov;
+    if (!(fov > 0 && fov < 180))
+        return "the field of view is not in (0, 180) degrees";
+    rt_vec3 view = v3_sub(at, from);
+    double distance = v3_length(view);
+    if (!(distance > 0) || !isfinite(distance))
+        return "the look-from point is the look-at point";
+    rt_vec3 right = v3_cross(view, up);
+    if (!(v3_length(right) > 0))
+        return "the up direction is along the view";
+    d->observer = from;
+    d->screen_center = at;
+    d->screen_right = v3_add(at, v3_scale(v3_normalize(right),
+                                          distance * tan(fov * PI / 360)));
+    return NULL;
+}
+
+rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
+                            const int *facet_lines, const rt_notes *notes,
+                            const rt_load_options *options, rt_scene **scene,
+                            rt_error *error)
+{
+    if (options != NULL && (options->look_from_given ||
+                            options->look_at_given || options->up_given ||
+                            options->fov_given)) {
+        const char *wrong = apply_view(desc, options);
+        if (wrong != NULL)
+            return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
+                                 "expected a view, found that %s", wrong);
+    }
+    if (options != NULL && options->light_count > 0) {
+        if (options->lights == NULL)
+            return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                                 "expected an array of lights");
+        desc->light_position = options->lights[0].position;
+        desc->light_color = options->lights[0].color;
+        desc->more_lights = options->lights + 1;
+        desc->more_light_count = options->light_count - 1;
+    }
+    return rt__scene_build(desc, name, facet_lines, notes, scene, error);
+}
+
 rt_status rt_scene_parse_with(const char *text, size_t length,
                               const char *name,
                               const rt_load_options *options,
@@ -81,7 +147,7 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
         format = RT_SCENE_FORMAT_SCN;
     switch (format) {
     case RT_SCENE_FORMAT_SCN:
-        return rt_scene_parse(text, length, name, scene, error);
+        return rt__scn_parse(text, length, name, options, scene, error);
     case RT_SCENE_FORMAT_NFF:
     case RT_SCENE_FORMAT_OBJ:
         return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,

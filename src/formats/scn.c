@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "formats/formats.h"
 #include "formats/reader.h"
 #include "scene_internal.h"
 #include "vecmath.h"
@@ -415,7 +416,8 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
             goto done;                                                       \
     } while (0)
 
-static rt_status parse(parser *p, const char *text, rt_scene **scene)
+static rt_status parse(parser *p, const char *text,
+                       const rt_load_options *options, rt_scene **scene)
 {
     rt_status status;
     rt_scene_desc d;
@@ -521,8 +523,8 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
         d.more_light_count++;
     }
     d.more_lights = lights;
-    status = rt__scene_build(&d, p->name, facet_lines, NULL, scene,
-                             p->error);
+    status = rt__reader_finish(&d, p->name, facet_lines, NULL, options, scene,
+                               p->error);
     goto done;
 nomem:
     status = rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
@@ -535,8 +537,9 @@ done:
     return status;
 }
 
-rt_status rt_scene_parse(const char *text, size_t length, const char *name,
-                         rt_scene **scene, rt_error *error)
+rt_status rt__scn_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options, rt_scene **scene,
+                        rt_error *error)
 {
     if (scene == NULL)
         return RT_ERR_ARGUMENT;
@@ -564,7 +567,13 @@ rt_status rt_scene_parse(const char *text, size_t length, const char *name,
     if (p.c_locale == (locale_t)0)
         return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,
                              "cannot create the C locale");
-    rt_status status = parse(&p, text, scene);
+    rt_status status = parse(&p, text, options, scene);
     freelocale(p.c_locale);
     return status;
+}
+
+rt_status rt_scene_parse(const char *text, size_t length, const char *name,
+                         rt_scene **scene, rt_error *error)
+{
+    return rt__scn_parse(text, length, name, NULL, scene, error);
 }
