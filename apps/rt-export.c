@@ -29,13 +29,15 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
-    "                 [--aperture A] [--focus F]\n"
+    "                 [--aperture A] [--focus F] [--input-format scn|nff|obj]\n"
+    "                 [--tessellate T] [--look-from X,Y,Z] [--look-at X,Y,Z]\n"
+    "                 [--up X,Y,Z] [--fov DEGREES] [--light X,Y,Z[,R,G,B]]...\n"
     "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
     "                 [--check] [--stats] [--quiet]\n"
     "\n"
-    "Renders SCENE.scn (a scene of triangles lit by point lights) to an\n"
-    "image and prints the path it wrote.  SCENE.scn `-' reads the scene from\n"
-    "standard input (then -o is needed).\n"
+    "Renders SCENE (a .scn scene, an NFF file or a Wavefront OBJ model, by\n"
+    "its extension) to an image and prints the path it wrote.  SCENE `-'\n"
+    "reads the scene from standard input (then -o is needed).\n"
     "\n"
     "  -o, --output OUT  where to write the image (default: the scene's name\n"
     "                    with .ppm, or .png with --format png, in the\n"
@@ -66,6 +68,17 @@ static const char usage[] =
     "  --accel A         auto (default: an octree from 64 facets on), none\n"
     "                    (every ray tests every facet) or octree; the\n"
     "                    image is the same\n"
+    "  --input-format F  scn, nff or obj, whatever the scene's extension says\n"
+    "  --tessellate T    NFF spheres and cones: the largest distance between\n"
+    "                    the surface and its facets, relative to the radius\n"
+    "  --look-from P     the observer, X,Y,Z (each view option on its own\n"
+    "                    replaces that part of the scene's camera)\n"
+    "  --look-at P       the point the screen is centred on, X,Y,Z\n"
+    "  --up V            up in the image, X,Y,Z\n"
+    "  --fov D           the horizontal field of view in degrees\n"
+    "  --light L         a point light X,Y,Z or X,Y,Z,R,G,B (0..255; white\n"
+    "                    by default); repeat for several; they replace the\n"
+    "                    scene's lights (an OBJ's default light included)\n"
     "  --check           validate the scene and print what it holds; do not\n"
     "                    render\n"
     "  --stats           print the work done (rays, tests, time) on stderr\n"
@@ -94,7 +107,11 @@ typedef struct arguments {
     int check;
     int stats;
     int quiet;
+    rt_load_options load;   /* format, tessellation, view, lights */
+    rt_light lights[16];    /* --light, in order */
 } arguments;
+
+#define MAX_LIGHTS 16
 
 static int usage_error(const char *fmt, const char *value)
 {
@@ -128,6 +145,52 @@ static int parse_length(const char *text, int positive, double *value)
     return 1;
 }
 
+/* `count_min` to `count_max` finite numbers separated by commas, into
+ * `out` (x, y, z of an rt_vec3 are consecutive doubles); returns how many,
+ * or 0 when the text is not such a list. */
+static int parse_numbers(const char *text, int count_min, int count_max,
+                         double *out)
+{
+    double values[6];
+    int n = 0;
+    const char *at = text;
+    for (;;) {
+        char *end;
+        errno = 0;
+        double v = strtod(at, &end);
+        if (errno != 0 || end == at || !isfinite(v) || n == count_max ||
+            n == 6)
+            return 0;
+        values[n++] = v;
+        if (*end == '\0')
+            break;
+        if (*end != ',')
+            return 0;
+        at = end + 1;
+    }
+    if (n < count_min)
+        return 0;
+    for (int i = 0; out != NULL && i < n; i++)
+        out[i] = values[i];
+    return n;
+}
+
+/* A light "x,y,z" (white) or "x,y,z,r,g,b". */
+static int parse_light(const char *text, rt_light *light)
+{
+    double v[6] = {0, 0, 0, 255, 255, 255};
+    int n = parse_numbers(text, 3, 6, v);
+    if (n != 3 && n != 6)
+        return 0;
+    for (int i = 3; i < 6; i++)
+        if (v[i] != floor(v[i]) || v[i] < 0 || v[i] > 255)
+            return 0;
+    light->position = (rt_vec3){v[0], v[1], v[2]};
+    light->color = (rt_rgb8){(unsigned char)v[3], (unsigned char)v[4],
+                             (unsigned char)v[5]};
+    return 1;
+}
+
 /* Non-zero when the file name at the end of `path` has an extension (a
  * name without one, such as /dev/null or `-', is written as P6). */
 static int has_extension(const char *path)
@@ -157,7 +220,13 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--kernel") ||
                           !strcmp(arg, "--accel") ||
                           !strcmp(arg, "--aperture") ||
-                          !strcmp(arg, "--focus");
+                          !strcmp(arg, "--focus") ||
+                          !strcmp(arg, "--input-format") ||
+                          !strcmp(arg, "--tessellate") ||
+                          !strcmp(arg, "--look-from") ||
+                          !strcmp(arg, "--look-at") ||
+                          !strcmp(arg, "--up") || !strcmp(arg, "--fov") ||
+                          !strcmp(arg, "--light");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -223,6 +292,52 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             else
                 return usage_error("expected auto or scalar after --kernel, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--input-format")) {
+            if (!strcmp(value, "scn"))
+                a->load.format = RT_SCENE_FORMAT_SCN;
+            else if (!strcmp(value, "nff"))
+                a->load.format = RT_SCENE_FORMAT_NFF;
+            else if (!strcmp(value, "obj"))
+                a->load.format = RT_SCENE_FORMAT_OBJ;
+            else
+                return usage_error("expected scn, nff or obj after "
+                                   "--input-format, found '%s'", value);
+        } else if (!strcmp(arg, "--tessellate")) {
+            if (!parse_length(value, 1, &a->load.tessellation) ||
+                !(a->load.tessellation < 1))
+                return usage_error("expected a tolerance in (0, 1) after "
+                                   "--tessellate, found '%s'", value);
+        } else if (!strcmp(arg, "--look-from")) {
+            if (!parse_numbers(value, 3, 3, &a->load.look_from.x))
+                return usage_error("expected x,y,z after --look-from, "
+                                   "found '%s'", value);
+            a->load.look_from_given = 1;
+        } else if (!strcmp(arg, "--look-at")) {
+            if (!parse_numbers(value, 3, 3, &a->load.look_at.x))
+                return usage_error("expected x,y,z after --look-at, found "
+                                   "'%s'", value);
+            a->load.look_at_given = 1;
+        } else if (!strcmp(arg, "--up")) {
+            if (!parse_numbers(value, 3, 3, &a->load.up.x))
+                return usage_error("expected x,y,z after --up, found '%s'",
+                                   value);
+            a->load.up_given = 1;
+        } else if (!strcmp(arg, "--fov")) {
+            if (!parse_length(value, 1, &a->load.fov) ||
+                !(a->load.fov < 180))
+                return usage_error("expected a field of view in (0, 180) "
+                                   "degrees after --fov, found '%s'", value);
+            a->load.fov_given = 1;
+        } else if (!strcmp(arg, "--light")) {
+            if (a->load.light_count == MAX_LIGHTS)
+                return usage_error("expected at most 16 --light options, "
+                                   "found another: '%s'", value);
+            if (!parse_light(value, &a->lights[a->load.light_count]))
+                return usage_error("expected x,y,z or x,y,z,r,g,b (colour "
+                                   "0..255) after --light, found '%s'",
+                                   value);
+            a->load.light_count++;
+            a->load.lights = a->lights;
         } else if (!strcmp(arg, "--aperture")) {
             if (!parse_length(value, 0, &a->aperture))
                 return usage_error("expected a lens radius >= 0 after "
@@ -288,13 +403,18 @@ static char *default_output(const char *scene, rt_image_format format)
 }
 
 /* Reads the whole scene from standard input and parses it as "<stdin>". */
-static rt_status load_standard_input(rt_scene **scene, rt_error *error)
+static rt_status load_standard_input(const rt_load_options *options,
+                                     rt_scene **scene, rt_error *error)
 {
     size_t capacity = 1 << 16, used = 0;
     char *text = malloc(capacity);
     while (text != NULL) {
-        used += fread(text + used, 1, capacity - used, stdin);
+        size_t got = fread(text + used, 1, capacity - used, stdin);
+        used += got;
         if (used < capacity)
+            break;
+        /* /dev/zero or a huge binary: the loader's check names it */
+        if (used > RT_MAX_SCENE_BYTES || memchr(text + used - got, 0, got))
             break;
         char *bigger = capacity <= SIZE_MAX / 2 ? realloc(text, capacity * 2)
                                                 : NULL;
@@ -316,7 +436,8 @@ static rt_status load_standard_input(rt_scene **scene, rt_error *error)
                  "<stdin>: cannot read: %s", strerror(errno));
         return RT_ERR_IO;
     }
-    rt_status status = rt_scene_parse(text, used, "<stdin>", scene, error);
+    rt_status status = rt_scene_parse_with(text, used, "<stdin>", options,
+                                           scene, error);
     free(text);
     return status;
 }
@@ -484,8 +605,10 @@ int main(int argc, char **argv)
     rt_error error;
     struct timespec load_start;
     clock_gettime(CLOCK_MONOTONIC, &load_start);
-    rt_status loaded = from_stdin ? load_standard_input(&scene, &error)
-                                  : rt_scene_load(a.scene, &scene, &error);
+    rt_status loaded = from_stdin
+                           ? load_standard_input(&a.load, &scene, &error)
+                           : rt_scene_load_with(a.scene, &a.load, &scene,
+                                                &error);
     if (loaded != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
         return EXIT_BAD_INPUT;
