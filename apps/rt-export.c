@@ -20,6 +20,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli_values.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -29,7 +30,7 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
-    "                 [--aperture A] [--focus F] [--input-format scn|nff|obj]\n"
+    "                 [--aperture A] [--focus F] [--input-format F]\n"
     "                 [--tessellate T] [--look-from X,Y,Z] [--look-at X,Y,Z]\n"
     "                 [--up X,Y,Z] [--fov DEGREES] [--light X,Y,Z[,R,G,B]]...\n"
     "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
@@ -129,65 +130,6 @@ static int parse_int(const char *text, int min, int max, int *value)
     if (errno != 0 || end == text || *end != '\0' || v < min || v > max)
         return 0;
     *value = (int)v;
-    return 1;
-}
-
-/* A finite length in scene units: > 0 when `positive`, else >= 0. */
-static int parse_length(const char *text, int positive, double *value)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (errno != 0 || end == text || *end != '\0' || !isfinite(v) ||
-        (positive ? !(v > 0.0) : !(v >= 0.0)))
-        return 0;
-    *value = v;
-    return 1;
-}
-
-/* `count_min` to `count_max` finite numbers separated by commas, into
- * `out` (x, y, z of an rt_vec3 are consecutive doubles); returns how many,
- * or 0 when the text is not such a list. */
-static int parse_numbers(const char *text, int count_min, int count_max,
-                         double *out)
-{
-    double values[6];
-    int n = 0;
-    const char *at = text;
-    for (;;) {
-        char *end;
-        errno = 0;
-        double v = strtod(at, &end);
-        if (errno != 0 || end == at || !isfinite(v) || n == count_max ||
-            n == 6)
-            return 0;
-        values[n++] = v;
-        if (*end == '\0')
-            break;
-        if (*end != ',')
-            return 0;
-        at = end + 1;
-    }
-    if (n < count_min)
-        return 0;
-    for (int i = 0; out != NULL && i < n; i++)
-        out[i] = values[i];
-    return n;
-}
-
-/* A light "x,y,z" (white) or "x,y,z,r,g,b". */
-static int parse_light(const char *text, rt_light *light)
-{
-    double v[6] = {0, 0, 0, 255, 255, 255};
-    int n = parse_numbers(text, 3, 6, v);
-    if (n != 3 && n != 6)
-        return 0;
-    for (int i = 3; i < 6; i++)
-        if (v[i] != floor(v[i]) || v[i] < 0 || v[i] > 255)
-            return 0;
-    light->position = (rt_vec3){v[0], v[1], v[2]};
-    light->color = (rt_rgb8){(unsigned char)v[3], (unsigned char)v[4],
-                             (unsigned char)v[5]};
     return 1;
 }
 
@@ -293,37 +235,31 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                 return usage_error("expected auto or scalar after --kernel, "
                                    "found '%s'", value);
         } else if (!strcmp(arg, "--input-format")) {
-            if (!strcmp(value, "scn"))
-                a->load.format = RT_SCENE_FORMAT_SCN;
-            else if (!strcmp(value, "nff"))
-                a->load.format = RT_SCENE_FORMAT_NFF;
-            else if (!strcmp(value, "obj"))
-                a->load.format = RT_SCENE_FORMAT_OBJ;
-            else
+            if (!cli_parse_scene_format(value, &a->load.format))
                 return usage_error("expected scn, nff or obj after "
                                    "--input-format, found '%s'", value);
         } else if (!strcmp(arg, "--tessellate")) {
-            if (!parse_length(value, 1, &a->load.tessellation) ||
+            if (!cli_parse_length(value, 1, &a->load.tessellation) ||
                 !(a->load.tessellation < 1))
                 return usage_error("expected a tolerance in (0, 1) after "
                                    "--tessellate, found '%s'", value);
         } else if (!strcmp(arg, "--look-from")) {
-            if (!parse_numbers(value, 3, 3, &a->load.look_from.x))
+            if (!cli_parse_point(value, &a->load.look_from))
                 return usage_error("expected x,y,z after --look-from, "
                                    "found '%s'", value);
             a->load.look_from_given = 1;
         } else if (!strcmp(arg, "--look-at")) {
-            if (!parse_numbers(value, 3, 3, &a->load.look_at.x))
+            if (!cli_parse_point(value, &a->load.look_at))
                 return usage_error("expected x,y,z after --look-at, found "
                                    "'%s'", value);
             a->load.look_at_given = 1;
         } else if (!strcmp(arg, "--up")) {
-            if (!parse_numbers(value, 3, 3, &a->load.up.x))
+            if (!cli_parse_point(value, &a->load.up))
                 return usage_error("expected x,y,z after --up, found '%s'",
                                    value);
             a->load.up_given = 1;
         } else if (!strcmp(arg, "--fov")) {
-            if (!parse_length(value, 1, &a->load.fov) ||
+            if (!cli_parse_length(value, 1, &a->load.fov) ||
                 !(a->load.fov < 180))
                 return usage_error("expected a field of view in (0, 180) "
                                    "degrees after --fov, found '%s'", value);
@@ -332,18 +268,18 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             if (a->load.light_count == MAX_LIGHTS)
                 return usage_error("expected at most 16 --light options, "
                                    "found another: '%s'", value);
-            if (!parse_light(value, &a->lights[a->load.light_count]))
+            if (!cli_parse_light(value, &a->lights[a->load.light_count]))
                 return usage_error("expected x,y,z or x,y,z,r,g,b (colour "
                                    "0..255) after --light, found '%s'",
                                    value);
             a->load.light_count++;
             a->load.lights = a->lights;
         } else if (!strcmp(arg, "--aperture")) {
-            if (!parse_length(value, 0, &a->aperture))
+            if (!cli_parse_length(value, 0, &a->aperture))
                 return usage_error("expected a lens radius >= 0 after "
                                    "--aperture, found '%s'", value);
         } else if (!strcmp(arg, "--focus")) {
-            if (!parse_length(value, 1, &a->focal_distance))
+            if (!cli_parse_length(value, 1, &a->focal_distance))
                 return usage_error("expected a distance > 0 after --focus, "
                                    "found '%s'", value);
         } else if (!strcmp(arg, "--accel")) {
