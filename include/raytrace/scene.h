@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 
+#include "raytrace/image.h"
 #include "raytrace/status.h"
 #include "raytrace/vec3.h"
 
@@ -273,6 +274,33 @@ int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
  */
 int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
                       int skip_facet);
+
+/* What a handout .scn file cannot hold (rt_scene_write_scn's *dropped,
+ * bits): lights beyond the first, transparency and refractive indices, a
+ * lens, diffuse weights other than 1 - k - t (as NFF's Kd). */
+#define RT_SCN_DROPPED_LIGHTS 1u
+#define RT_SCN_DROPPED_TRANSPARENCY 2u
+#define RT_SCN_DROPPED_LENS 4u
+#define RT_SCN_DROPPED_DIFFUSE 8u
+
+/*
+ * Writes `scene` as a .scn file to the sink: the handout's records only,
+ * or with `extended` also the optional lens, transparency and further-light
+ * records (docs/scene-format.md).  Numbers are written with 17 significant
+ * digits, so reading the file back gives the same doubles and the same
+ * picture.  *dropped (may be NULL) receives the RT_SCN_DROPPED_ bits of
+ * what the file could not hold.  Returns RT_OK, RT_ERR_IO (the sink
+ * refused) or RT_ERR_ARGUMENT.  Thread-safe.
+ */
+rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
+                             rt_write_func write, void *context,
+                             unsigned *dropped, rt_error *error);
+
+/* The same saved at `path` by the rule of raytrace/image.h (atomic
+ * replacement, streams written directly).  Thread-safe on distinct
+ * paths. */
+rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
+                            int extended, unsigned *dropped, rt_error *error);
 
 #ifdef __cplusplus
 }

@@ -13,6 +13,20 @@ rt_status rt__image_format_refusal(rt_image_format format, rt_error *error);
 
 struct rt_notes;
 
+/* Bytes to save: `produce` writes `what` to the sink and returns a status
+ * (filling *error on failure). */
+typedef struct rt_producer {
+    rt_status (*produce)(rt_write_func write, void *context, const void *what,
+                         rt_error *error);
+    const void *what;
+} rt_producer;
+
+/* Writes what `producer` produces at `path` by the rule of
+ * raytrace/image.h (atomic replacement, streams written directly, links
+ * followed, signals handled).  Errors name `path`. */
+rt_status rt__save(const char *path, const rt_producer *producer,
+                   rt_error *error);
+
 /*
  * What every scene reader ends with: applies the view and lights of
  * `options` (may be NULL) to `desc`, then builds the scene with the
