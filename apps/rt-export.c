@@ -573,6 +573,10 @@ int main(int argc, char **argv)
                         "the scene it was rendered from\n", path);
         goto done;
     }
+    if (rt_scene_check_precision(scene, a.precision, &error) != RT_OK) {
+        fprintf(stderr, "rt-export: %s\n", error.message);
+        goto done;
+    }
     /* A bad output fails now, not after the render. */
     if (!to_stdout && rt_image_save_check(path, &error) != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);

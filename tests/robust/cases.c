@@ -1318,7 +1318,14 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
     }
     rt_image image;
     rt_image_create(&image, 64, 64);
-    r->nans += rb_engine_render(e, 5, 2, &image);
+    long render_nans = rb_engine_render(e, 5, 2, &image);
+    if (render_nans < 0 && method == RB_OURS && !is_double(precision))
+        /* Decided: float cannot resolve facets 3 wide at 1e8 (its rule,
+         * RT_FLOAT_SPREAD_MAX): rt_render refuses, never draws wrong. */
+        snprintf(r->note, sizeof r->note, "the render refused by float's "
+                                          "rule; the ray queries ran");
+    else
+        r->nans += render_nans;
     rt_image_destroy(&image);
     rb_engine_free(e);
     rt_scene_free(scene);
@@ -2116,6 +2123,14 @@ static void determinism(rb_method method, rt_precision precision, rb_result *r,
     }
     for (int which = 0; which < 3; which++) {
         rt_scene *scene = determinism_scene(which);
+        if (rt_scene_check_precision(scene, precision, NULL) != RT_OK) {
+            /* float refuses the translated scene (RT_FLOAT_SPREAD_MAX):
+             * every render of it is refused alike */
+            snprintf(r->note, sizeof r->note, "float refuses the scene "
+                                              "translated by 1e6");
+            rt_scene_free(scene);
+            continue;
+        }
         rt_image reference, other;
         rt_image_create(&reference, 64, 64);
         rt_image_create(&other, 64, 64);
