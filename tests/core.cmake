@@ -9,7 +9,8 @@ foreach(suite
     test_reflect
     test_ppm
     test_render
-    test_extension)
+    test_extension
+    test_readers)
   raytrace_add_suite(${suite})
 endforeach()
 
