@@ -151,10 +151,7 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
     case RT_SCENE_FORMAT_OBJ:
         return rt__obj_parse(text, length, name, options, scene, error);
     case RT_SCENE_FORMAT_NFF:
-        return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,
-                             "cannot read %s scenes: this version of the "
-                             "library reads only .scn",
-                             rt_scene_format_name(format));
+        return rt__nff_parse(text, length, name, options, scene, error);
     case RT_SCENE_FORMAT_AUTO:
         break;
     }
