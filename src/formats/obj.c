@@ -19,6 +19,7 @@
 #include <limits.h>
 #include <locale.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -60,9 +61,23 @@ typedef struct lexer {
     int count, capacity;
 } lexer;
 
+/* Names to numbers (materials, libraries read): open addressing over a
+ * power-of-two array kept at most half full, so that a file with many
+ * names costs linear time, not quadratic. */
+typedef struct name_entry {
+    char *name;                 /* NULL: an empty slot */
+    size_t length;
+    int value;
+} name_entry;
+
+typedef struct name_table {
+    name_entry *entries;
+    size_t size, used;
+} name_table;
+
 /* A material as the .mtl gives it. */
 typedef struct material {
-    char *name;
+    const char *name;           /* owned by the reader's name table */
     double kd[3], ks[3];
     int illum;
     double dissolve, tr, ni;
@@ -86,6 +101,8 @@ typedef struct reader {
     int facet_count, facet_capacity;
     material *materials;
     int material_count, material_capacity;
+    name_table material_names;  /* name -> its last definition */
+    name_table libraries;       /* the libraries already read */
     int current;                /* material of new facets; -1: default */
     /* polygon scratch */
     int *polygon, *order;
@@ -308,6 +325,78 @@ static void warn_once(reader *r, const char *name, const token *keyword,
              "more kinds of statements than are listed are ignored");
 }
 
+/* ---------------------------------------------------------------- names */
+
+static size_t name_hash(const char *name, size_t length)
+{
+    size_t h = 2166136261u;         /* FNV-1a */
+    for (size_t i = 0; i < length; i++)
+        h = (h ^ (unsigned char)name[i]) * 16777619u;
+    return h;
+}
+
+/* The entry of `name`, or the empty one where it would go (t->size > 0). */
+static name_entry *name_slot(const name_table *t, const char *name,
+                             size_t length)
+{
+    size_t i = name_hash(name, length) & (t->size - 1);
+    for (;; i = (i + 1) & (t->size - 1)) {
+        name_entry *e = &t->entries[i];
+        if (e->name == NULL ||
+            (e->length == length && memcmp(e->name, name, length) == 0))
+            return e;
+    }
+}
+
+static const name_entry *name_find(const name_table *t, const char *name,
+                                   size_t length)
+{
+    if (t->size == 0)
+        return NULL;
+    const name_entry *e = name_slot(t, name, length);
+    return e->name != NULL ? e : NULL;
+}
+
+/* The entry of `name`, added (value -1) when new; NULL when out of
+ * memory. */
+static name_entry *name_put(name_table *t, const char *name, size_t length)
+{
+    if (2 * (t->used + 1) > t->size) {
+        size_t bigger = t->size ? 2 * t->size : 16;
+        if (bigger > SIZE_MAX / 2 / sizeof(name_entry))
+            return NULL;
+        name_entry *entries = calloc(bigger, sizeof *entries);
+        if (entries == NULL)
+            return NULL;
+        name_table grown = {entries, bigger, t->used};
+        for (size_t i = 0; i < t->size; i++)
+            if (t->entries[i].name != NULL)
+                *name_slot(&grown, t->entries[i].name,
+                           t->entries[i].length) = t->entries[i];
+        free(t->entries);
+        *t = grown;
+    }
+    name_entry *e = name_slot(t, name, length);
+    if (e->name == NULL) {
+        char *copy = malloc(length + 1);
+        if (copy == NULL)
+            return NULL;
+        memcpy(copy, name, length);
+        copy[length] = '\0';
+        *e = (name_entry){copy, length, -1};
+        t->used++;
+    }
+    return e;
+}
+
+static void name_table_free(name_table *t)
+{
+    for (size_t i = 0; i < t->size; i++)
+        free(t->entries[i].name);
+    free(t->entries);
+    memset(t, 0, sizeof *t);
+}
+
 /* ---------------------------------------------------------------- materials */
 
 static void material_defaults(material *m)
@@ -362,7 +451,8 @@ static void material_look(reader *r, const char *library, int line,
     f->n = m->ni;
 }
 
-/* Adds a material with the default values. */
+/* Adds a material with the default values under `name` (a later
+ * definition of a name replaces the earlier one). */
 static material *material_add(reader *r, const char *name, size_t length)
 {
     if (r->material_count == r->material_capacity) {
@@ -376,15 +466,14 @@ static material *material_add(reader *r, const char *name, size_t length)
         r->materials = grown;
         r->material_capacity = bigger;
     }
+    name_entry *entry = name_put(&r->material_names, name, length);
+    if (entry == NULL)
+        return NULL;
     material *m = &r->materials[r->material_count];
     memset(m, 0, sizeof *m);
-    m->name = malloc(length + 1);
-    if (m->name == NULL)
-        return NULL;
-    memcpy(m->name, name, length);
-    m->name[length] = '\0';
+    m->name = entry->name;
     material_defaults(m);
-    r->material_count++;
+    entry->value = r->material_count++;
     return m;
 }
 
@@ -578,6 +667,15 @@ static rt_status read_libraries(reader *r)
         memcpy(path, r->path, prefix);
         memcpy(path + prefix, t->text, t->length);
         path[prefix + t->length] = '\0';
+        name_entry *seen = name_put(&r->libraries, path, prefix + t->length);
+        if (seen == NULL) {
+            free(path);
+            return RT_ERR_NOMEM;
+        }
+        if (seen->value++ >= 0) {       /* read already */
+            free(path);
+            continue;
+        }
         struct stat st;
         char *text = NULL;
         size_t length = 0;
@@ -626,13 +724,11 @@ static rt_status use_material(reader *r)
     const char *name;
     size_t length;
     rest_of_statement(x, &name, &length);
-    /* The last definition of a name wins. */
-    for (int i = r->material_count - 1; i >= 0; i--)
-        if (strlen(r->materials[i].name) == length &&
-            memcmp(r->materials[i].name, name, length) == 0) {
-            r->current = i;
-            return RT_OK;
-        }
+    const name_entry *known = name_find(&r->material_names, name, length);
+    if (known != NULL) {
+        r->current = known->value;
+        return RT_OK;
+    }
     material *m = material_add(r, name, length);
     if (m == NULL)
         return RT_ERR_NOMEM;
@@ -1223,9 +1319,9 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
                              "cannot create the C locale");
     status = read_obj(&r, options, scene);
     freelocale(r.c_locale);
-    for (int i = 0; i < r.material_count; i++)
-        free(r.materials[i].name);
     free(r.materials);
+    name_table_free(&r.material_names);
+    name_table_free(&r.libraries);
     free(r.lex.tokens);
     free(r.vertices);
     free(r.facets);
