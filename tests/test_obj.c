@@ -393,6 +393,25 @@ START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
 }
 END_TEST
 
+START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
+{
+    rt_scene *scene = obj_file("tests/data/obj/spaced-library.obj");
+    material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.warning_count, 0);
+    rt_scene_free(scene);
+    scene = obj_file("tests/data/obj/escaped-library.obj");
+    material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.warning_count, 1);
+    ck_assert_int_eq(warnings_with(scene, "escaped-library.obj:2:8: warning: "
+                                          "material library `missing.mtl` "
+                                          "not read"), 1);
+    rt_scene_free(scene);
+}
+END_TEST
+
 START_TEST(an_obj_from_memory_without_a_path_reads_no_library)
 {
     rt_scene *scene = obj("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
@@ -438,12 +457,31 @@ START_TEST(a_face_index_out_of_range_or_zero_is_refused_at_its_column)
     refused(text, RT_ERR_RANGE, 4, 5, "found `0`");
     snprintf(text, sizeof text, "%sf 1 2 -4\n", tri);
     refused(text, RT_ERR_RANGE, 4, 7, "found `-4`");
-    snprintf(text, sizeof text, "%sf 1/2 2/1 3/1\n", tri);
-    refused(text, RT_ERR_RANGE, 4, 5, "texture coordinate index, found `2` "
-                                      "before any");
-    snprintf(text, sizeof text, "%svn 0 0 1\nf 1//1 2//1 3//2\n", tri);
+    snprintf(text, sizeof text, "%svt 0 0\nf 1/1 2/0 3/1\n", tri);
+    refused(text, RT_ERR_RANGE, 5, 9, "a texture coordinate index in 1..1");
+    snprintf(text, sizeof text, "%svn 0 0 1\nf 1//1 2//1 3//0\n", tri);
     refused(text, RT_ERR_RANGE, 5, 16, "a normal index in 1..1");
     refused("f 1 2 3\n", RT_ERR_RANGE, 1, 3, "before any vertex");
+}
+END_TEST
+
+START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
+{
+    /* Exporters leave vt and vn out and keep the references (the reader
+     * uses neither): the mesh renders, with one warning for each kind. */
+    rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
+                          "f 1/2/1 2/9/1 3/-2/4\nf 3/1 2/5 1/1\n");
+    ck_assert_int_eq(facet_count(scene), 2);
+    ck_assert_int_eq(warnings_with(scene, "<memory>:5:5: warning: `2` "
+                                          "refers to no texture coordinate"),
+                     1);
+    ck_assert_int_eq(warnings_with(scene, "<memory>:5:7: warning: `1` "
+                                          "refers to no normal"),
+                     1);
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.warning_count, 2);
+    rt_scene_free(scene);
 }
 END_TEST
 
@@ -737,12 +775,14 @@ static Suite *obj_suite(void)
     tcase_add_test(c, materials_map_kd_ks_with_illum_d_tr_and_ni);
     tcase_add_test(
         c, a_missing_material_library_is_a_warning_and_the_mesh_is_grey);
+    tcase_add_test(c, library_names_with_spaces_are_read_whole_or_escaped);
     tcase_add_test(c, an_obj_from_memory_without_a_path_reads_no_library);
     suite_add_tcase(s, c);
 
     c = tcase_create("refusals");
     tcase_add_test(c,
                    a_face_index_out_of_range_or_zero_is_refused_at_its_column);
+    tcase_add_test(c, texture_and_normal_indices_out_of_range_warn_once_each);
     tcase_add_test(c, a_face_with_fewer_than_three_vertices_is_refused);
     tcase_add_test(
         c, malformed_face_vertices_and_numbers_are_refused_with_the_token);

@@ -640,9 +640,71 @@ static int has_argument(reader *r, const char *consequence)
     return 0;
 }
 
-/* `mtllib` names one or more files, relative to the OBJ's folder.  Files
- * that cannot be read are warnings; only regular files are read (a FIFO or
- * a terminal would block). */
+/* The path of a library named by text[0..length), relative to the OBJ's
+ * folder unless absolute; "\ " stands for a space. */
+static char *library_path(const reader *r, const char *text, size_t length)
+{
+    const char *slash = strrchr(r->path, '/');
+    size_t prefix = text[0] == '/' || slash == NULL
+                        ? 0
+                        : (size_t)(slash - r->path) + 1;
+    char *path = malloc(prefix + length + 1);
+    if (path == NULL)
+        return NULL;
+    memcpy(path, r->path, prefix);
+    size_t n = prefix;
+    for (size_t i = 0; i < length; i++)
+        if (!(text[i] == '\\' && i + 1 < length && text[i + 1] == ' '))
+            path[n++] = text[i];
+    path[n] = '\0';
+    return path;
+}
+
+static int regular_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Reads the library at `path` (named by `where` in the OBJ) once; what
+ * goes wrong is a warning.  Only regular files are read (a FIFO or a
+ * terminal would block).  Takes `path`. */
+static rt_status read_library(reader *r, char *path, const token *where)
+{
+    name_entry *seen = name_put(&r->libraries, path, strlen(path));
+    if (seen == NULL || seen->value++ >= 0) {       /* read already */
+        free(path);
+        return seen == NULL ? RT_ERR_NOMEM : RT_OK;
+    }
+    char *text = NULL;
+    size_t length = 0;
+    rt_error why;
+    memset(&why, 0, sizeof why);
+    struct stat st;
+    if (stat(path, &st) != 0)
+        snprintf(why.message, sizeof why.message, "%s", strerror(errno));
+    else if (!S_ISREG(st.st_mode))
+        snprintf(why.message, sizeof why.message, "not a regular file");
+    else if (rt__read_text_file(path, &text, &length, &why) == RT_OK &&
+             rt__text_check(text, length, path, &why) == RT_OK)
+        why.message[0] = '\0';
+    rt_status status = why.status == RT_ERR_NOMEM ? RT_ERR_NOMEM : RT_OK;
+    if (status == RT_OK && why.message[0] != '\0') {
+        char buffer[MAX_TOKEN_SHOWN + 4];
+        warn(r, r->name, where->line, where->column,
+             "material library `%s` not read (%s); its materials get the "
+             "default grey", shown(where, buffer), why.message);
+    } else if (status == RT_OK) {
+        status = mtl_parse(r, text, length, path);
+    }
+    free(text);
+    free(path);
+    return status;
+}
+
+/* `mtllib` names one or more files, relative to the OBJ's folder: the
+ * whole rest of the line when that is a file (exporters write names with
+ * spaces as they are), else each name (with "\ " for a space). */
 static rt_status read_libraries(reader *r)
 {
     lexer *x = &r->lex;
@@ -655,60 +717,28 @@ static rt_status read_libraries(reader *r)
              "path; facets get the default material");
         return RT_OK;
     }
-    const char *slash = strrchr(r->path, '/');
-    size_t folder = slash ? (size_t)(slash - r->path) + 1 : 0;
-    for (int i = 1; i < x->count; i++) {
-        const token *t = &x->tokens[i];
-        char buffer[MAX_TOKEN_SHOWN + 4];
-        size_t prefix = t->text[0] == '/' ? 0 : folder;
-        char *path = malloc(prefix + t->length + 1);
+    if (x->count > 2 && x->tokens[1].line == x->tokens[x->count - 1].line) {
+        token whole = x->tokens[1];
+        rest_of_statement(x, &whole.text, &whole.length);
+        char *path = library_path(r, whole.text, whole.length);
         if (path == NULL)
             return RT_ERR_NOMEM;
-        memcpy(path, r->path, prefix);
-        memcpy(path + prefix, t->text, t->length);
-        path[prefix + t->length] = '\0';
-        name_entry *seen = name_put(&r->libraries, path, prefix + t->length);
-        if (seen == NULL) {
-            free(path);
-            return RT_ERR_NOMEM;
-        }
-        if (seen->value++ >= 0) {       /* read already */
-            free(path);
-            continue;
-        }
-        struct stat st;
-        char *text = NULL;
-        size_t length = 0;
-        rt_error why;
-        memset(&why, 0, sizeof why);
-        if (memchr(t->text, '\0', t->length) != NULL)
-            snprintf(why.message, sizeof why.message, "a bad name");
-        else if (stat(path, &st) != 0)
-            snprintf(why.message, sizeof why.message, "%s", strerror(errno));
-        else if (!S_ISREG(st.st_mode))
-            snprintf(why.message, sizeof why.message, "not a regular file");
-        else if (rt__read_text_file(path, &text, &length, &why) == RT_OK &&
-                 rt__text_check(text, length, path, &why) == RT_OK)
-            why.message[0] = '\0';
-        else if (why.status == RT_ERR_NOMEM) {
-            free(text);
-            free(path);
-            return RT_ERR_NOMEM;
-        }
-        if (why.message[0] != '\0') {
-            warn(r, r->name, t->line, t->column,
-                 "material library `%s` not read (%s); its materials get "
-                 "the default grey", shown(t, buffer), why.message);
-        } else {
-            rt_status status = mtl_parse(r, text, length, path);
-            if (status != RT_OK) {
-                free(text);
-                free(path);
-                return status;
-            }
-        }
-        free(text);
+        if (regular_file(path))
+            return read_library(r, path, &whole);
         free(path);
+    }
+    for (int i = 1; i < x->count; i++) {
+        token name = x->tokens[i];
+        while (name.text[name.length - 1] == '\\' && i + 1 < x->count &&
+               x->tokens[i + 1].text == name.text + name.length + 1 &&
+               name.text[name.length] == ' ')
+            name.length += 1 + x->tokens[++i].length;
+        char *path = library_path(r, name.text, name.length);
+        if (path == NULL)
+            return RT_ERR_NOMEM;
+        rt_status status = read_library(r, path, &name);
+        if (status != RT_OK)
+            return status;
     }
     return RT_OK;
 }
@@ -823,7 +853,9 @@ static rt_status attribute(reader *r, int *count, int least, int most)
 
 /*
  * Reads one index of a face reference at t->text[*at...] into a 0-based
- * index among `count` ("vertex", "texture coordinate", "normal").
+ * index among `count` ("vertex", "texture coordinate", "normal").  With
+ * `out` NULL (texture coordinates and normals, which are not used) an
+ * index out of range is a warning, not a refusal; 0 is refused always.
  */
 static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                           const char *what, int *out)
@@ -848,6 +880,17 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
     if (value == 0 || resolved < 0 || resolved >= count) {
         char buffer[MAX_TOKEN_SHOWN + 4];
         token part = {t->text + *at, i - *at, t->line, t->column + column};
+        if (out == NULL && value != 0) {
+            /* Texture coordinates and normals are not used: exporters
+             * that leave them out but keep the references still render. */
+            if (first_time(r, what, strlen(what)) > 0)
+                warn(r, r->name, part.line, part.column,
+                     "`%s` refers to no %s read so far; %s indices are not "
+                     "used, this one is ignored (said once)",
+                     shown(&part, buffer), what, what);
+            *at = i;
+            return RT_OK;
+        }
         if (count == 0)
             return rt__error_set(r->error, RT_ERR_RANGE, r->name, part.line,
                                  part.column,
@@ -861,7 +904,8 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                              what, count, count, count, shown(&part, buffer));
     }
     *at = i;
-    *out = (int)resolved;
+    if (out != NULL)
+        *out = (int)resolved;
     return RT_OK;
 }
 
@@ -869,21 +913,20 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
 static rt_status face_vertex(reader *r, const token *t, int *out)
 {
     size_t at = 0;
-    int ignored;
     rt_status status = index_at(r, t, &at, r->vertex_count, "vertex", out);
     if (status != RT_OK || at == t->length)
         return status;
     at++;                                       /* the first '/' */
     if (at < t->length && t->text[at] != '/') {
         status = index_at(r, t, &at, r->texture_count, "texture coordinate",
-                          &ignored);
+                          NULL);
         if (status != RT_OK || at == t->length)
             return status;
     }
     if (at == t->length || t->text[at] != '/' || ++at == t->length)
         return refuse(r, RT_ERR_SYNTAX, t, 0,
                       "a face vertex `v`, `v/vt`, `v//vn` or `v/vt/vn`");
-    status = index_at(r, t, &at, r->normal_count, "normal", &ignored);
+    status = index_at(r, t, &at, r->normal_count, "normal", NULL);
     if (status == RT_OK && at != t->length)
         return refuse(r, RT_ERR_SYNTAX, t, 0,
                       "a face vertex `v`, `v/vt`, `v//vn` or `v/vt/vn`");
