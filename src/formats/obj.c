@@ -1185,12 +1185,20 @@ static rt_status face(reader *r)
 
 #define PI 3.14159265358979323846
 
+/* The i-th vertex the camera frames: those of the facets, or all vertices
+ * when there is no facet. */
+static rt_vec3 framed(const reader *r, int i)
+{
+    return r->vertices[r->facet_count > 0 ? r->facets[i / 3].vertex[i % 3]
+                                          : i];
+}
+
 /*
- * The automatic camera and light (docs/formats.md): the bounding sphere of
- * the vertices faces drawn use (of all vertices when no face is drawn),
- * seen from the direction (0.5, 0.5, 1) at the distance where it fits the
- * field of view with a 5% margin, the screen through its centre; a white
- * light above and to the left of the camera.
+ * The automatic camera and light (docs/formats.md): seen from the
+ * direction (0.5, 0.5, 1), at the nearest distance where every vertex
+ * drawn (every vertex when no face is drawn) is inside the image with a
+ * 5% margin, the picture centred; a white light above and to the left of
+ * the camera.
  */
 static rt_status auto_view(reader *r, const rt_load_options *o,
                            rt_scene_desc *d)
@@ -1203,38 +1211,54 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
                              "expected an image size in 1..%d, found %dx%d",
                              RT_MAX_IMAGE_SIDE, o->width, o->height);
-    rt_vec3 lo = v3(0, 0, 0), hi = v3(0, 0, 0);
-    int seen = 0;
-    for (int pass = 0; pass < 2 && !seen; pass++) {
-        int n = pass == 0 ? 3 * r->facet_count : r->vertex_count;
-        for (int i = 0; i < n; i++) {
-            int index = pass == 0 ? r->facets[i / 3].vertex[i % 3] : i;
-            rt_vec3 p = r->vertices[index];
-            if (!seen++) {
-                lo = hi = p;
-                continue;
-            }
-            lo = v3(fmin(lo.x, p.x), fmin(lo.y, p.y), fmin(lo.z, p.z));
-            hi = v3(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
-        }
+    int n = r->facet_count > 0 ? 3 * r->facet_count : r->vertex_count;
+    rt_vec3 lo = n > 0 ? framed(r, 0) : v3(0, 0, 0), hi = lo;
+    for (int i = 1; i < n; i++) {
+        rt_vec3 p = framed(r, i);
+        lo = v3(fmin(lo.x, p.x), fmin(lo.y, p.y), fmin(lo.z, p.z));
+        hi = v3(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
     }
     rt_vec3 center = v3_add(v3_scale(lo, 0.5), v3_scale(hi, 0.5));
     double radius = v3_length(v3_sub(v3_scale(hi, 0.5), v3_scale(lo, 0.5)));
     if (!(radius > 0.0))
         radius = fmax(1.0, v3_max_abs(center) * 1e-3);
-    double half = VIEW_FOV_DEGREES * PI / 360.0;
-    /* The narrower half-angle of the image must hold the sphere. */
-    double tan_half = tan(half) * (d->height < d->width
-                                       ? (double)d->height / d->width
-                                       : 1.0);
-    double distance = VIEW_MARGIN * radius / sin(atan(tan_half));
     rt_vec3 view = v3_normalize(v3(VIEW_X, VIEW_Y, VIEW_Z));
-    rt_vec3 up = v3(0, 1, 0);
-    rt_vec3 right = v3_normalize(v3_cross(up, view));
+    rt_vec3 right = v3_normalize(v3_cross(v3(0, 1, 0), view));
     rt_vec3 image_up = v3_cross(view, right);
+    /* A vertex at (x, y) across the view and z towards the camera is
+     * inside the image when |x| <= (D - z) tan_x and |y| <= (D - z) tan_y,
+     * D the camera's distance from the point it looks at.  The first fit
+     * looks at the box's centre; the second at the point that centres the
+     * first picture, and its fit is again exact. */
+    double half = VIEW_FOV_DEGREES * PI / 360.0;
+    double tan_x = tan(half), tan_y = tan_x * d->height / d->width;
+    double distance = 0.0;
+    for (int pass = 0; pass < 2; pass++) {
+        double low_x = 0, high_x = 0, low_y = 0, high_y = 0;
+        distance = 0.05 * radius;
+        for (int i = 0; i < n; i++) {
+            rt_vec3 q = v3_sub(framed(r, i), center);
+            double x = v3_dot(q, right), y = v3_dot(q, image_up);
+            double z = v3_dot(q, view);
+            distance = fmax(distance, z + 0.05 * radius);
+            distance = fmax(distance, z + VIEW_MARGIN *
+                                              fmax(fabs(x) / tan_x,
+                                                   fabs(y) / tan_y));
+        }
+        for (int i = 0; i < n && pass == 0; i++) {
+            rt_vec3 q = v3_sub(framed(r, i), center);
+            double depth = distance - v3_dot(q, view);
+            double x = v3_dot(q, right) / depth, y = v3_dot(q, image_up) / depth;
+            low_x = fmin(low_x, x), high_x = fmax(high_x, x);
+            low_y = fmin(low_y, y), high_y = fmax(high_y, y);
+        }
+        center = v3_add(center, v3_add(
+            v3_scale(right, distance * (low_x + high_x) / 2),
+            v3_scale(image_up, distance * (low_y + high_y) / 2)));
+    }
     d->observer = v3_add(center, v3_scale(view, distance));
     d->screen_center = center;
-    d->screen_right = v3_add(center, v3_scale(right, distance * tan(half)));
+    d->screen_right = v3_add(center, v3_scale(right, distance * tan_x));
     if (!(v3_max_abs(d->observer) <= RT_MAX_COORDINATE) ||
         !(v3_max_abs(d->screen_right) <= RT_MAX_COORDINATE))
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
