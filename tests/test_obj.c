@@ -444,6 +444,19 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
 }
 END_TEST
 
+START_TEST(a_file_without_faces_loads_with_a_warning)
+{
+    rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nl 1 2\n");
+    ck_assert_int_eq(facet_count(scene), 0);
+    ck_assert_int_eq(warnings_with(scene, "<memory>: warning: the file has "
+                                          "no face to draw"), 1);
+    rt_scene_free(scene);
+    scene = obj("");
+    ck_assert_int_eq(warnings_with(scene, "no face to draw"), 1);
+    rt_scene_free(scene);
+}
+END_TEST
+
 /* ------------------------------------------------------------------ */
 /* Refusals                                                             */
 
@@ -698,6 +711,51 @@ START_TEST(a_cube_renders_framed_with_its_red_top_lit)
 }
 END_TEST
 
+typedef struct buffer {
+    char *data;
+    size_t length;
+} buffer;
+
+static int append(void *context, const void *data, size_t size)
+{
+    buffer *b = context;
+    char *grown = realloc(b->data, b->length + size + 1);
+    if (grown == NULL)
+        return 0;
+    memcpy(grown + b->length, data, size);
+    b->data = grown;
+    b->length += size;
+    return 1;
+}
+
+START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
+{
+    static const char *const files[] = {"tests/data/obj/cube.obj",
+                                        "tests/data/obj/materials.obj"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        rt_scene *scene = obj_file(files[i]);
+        buffer b = {NULL, 0};
+        rt_error error;
+        unsigned dropped = 0;
+        ck_assert_int_eq(rt_scene_write_scn(scene, 1, append, &b, &dropped,
+                                            &error),
+                         RT_OK);
+        rt_scene *again = NULL;
+        ck_assert_msg(rt_scene_parse(b.data, b.length, "converted.scn",
+                                     &again, &error) == RT_OK,
+                      "%s", error.message);
+        rt_image direct = rt_test_render(scene, 5, 2);
+        rt_image converted = rt_test_render(again, 5, 2);
+        ck_assert_int_eq(rt_test_image_diff(&direct, &converted, NULL), 0);
+        rt_image_destroy(&direct);
+        rt_image_destroy(&converted);
+        rt_scene_free(again);
+        rt_scene_free(scene);
+        free(b.data);
+    }
+}
+END_TEST
+
 /* ------------------------------------------------------------------ */
 /* Models from elsewhere                                                */
 
@@ -759,6 +817,7 @@ static Suite *obj_suite(void)
     tcase_add_test(
         c, a_statement_continues_after_a_backslash_and_comments_end_lines);
     tcase_add_test(c, unknown_statements_lines_points_and_normals_warn_once_each);
+    tcase_add_test(c, a_file_without_faces_loads_with_a_warning);
     suite_add_tcase(s, c);
 
     c = tcase_create("triangulation");
@@ -796,6 +855,7 @@ static Suite *obj_suite(void)
     tcase_add_test(c, the_automatic_camera_sees_every_vertex_at_any_image_shape);
     tcase_add_test(c, the_view_and_light_options_replace_the_automatic_ones);
     tcase_add_test(c, a_cube_renders_framed_with_its_red_top_lit);
+    tcase_add_test(c, an_obj_written_as_scn_renders_the_same_bytes);
     tcase_add_test(c, real_models_in_raytrace_obj_models_load_and_render);
     suite_add_tcase(s, c);
     return s;

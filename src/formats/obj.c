@@ -292,7 +292,7 @@ static void warn(reader *r, const char *name, int line, int column,
 }
 
 /* Non-zero the first time `key` (a keyword, or "@something" for other
- * once-only remarks) is seen. */
+ * once-only remarks, which no keyword can be) is seen. */
 static int first_time(reader *r, const char *key, size_t length)
 {
     if (length >= sizeof r->keywords[0])
@@ -883,7 +883,8 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
         if (out == NULL && value != 0) {
             /* Texture coordinates and normals are not used: exporters
              * that leave them out but keep the references still render. */
-            if (first_time(r, what, strlen(what)) > 0)
+            const char *key = what[0] == 't' ? "@vt" : "@vn";
+            if (first_time(r, key, strlen(key)) > 0)
                 warn(r, r->name, part.line, part.column,
                      "`%s` refers to no %s read so far; %s indices are not "
                      "used, this one is ignored (said once)",
@@ -1333,6 +1334,9 @@ static rt_status read_obj(reader *r, const rt_load_options *options,
         warn(r, r->name, r->dropped_line, r->dropped_column,
              "this face has fewer than 3 distinct corners and is left out "
              "(%d face%s in all)", r->dropped, r->dropped == 1 ? "" : "s");
+    if (r->facet_count == 0)
+        warn(r, r->name, 0, 0,
+             "the file has no face to draw: the picture is the background");
     if (r->notes.failed)
         return out_of_memory(r);
     rt_scene_desc d;
