@@ -451,8 +451,8 @@ START_TEST(the_default_tolerance_follows_the_resolution)
     rt_scene_get_info(large, &b);
     ck_assert_int_lt(a.facet_count, b.facet_count);
     /* 512 pixels: the sphere's radius is 512/2 / (9 tan 22.5) = 68.7 px;
-     * facets 3 px across: tolerance 1 - cos(1.5 / 68.7) = 2.4e-4 */
-    double tol = 1 - cos(1.5 / (256 / (9 * tan(PI / 8))));
+     * facets 5 px across: tolerance 1 - cos(5 / (sqrt(2) 68.7)) = 1.3e-3 */
+    double tol = 1 - cos(5 / (sqrt(2.0) * (256 / (9 * tan(PI / 8)))));
     int bands = rt__tess_sphere_bands(tol);
     ck_assert_int_eq(b.facet_count, 4 * bands * (bands - 1));
     rt_scene_free(small);

@@ -35,7 +35,7 @@
  * true one at the file's resolution and facets about DEFAULT_FACET_PIXELS
  * across, within these bounds. */
 #define DEFAULT_PIXELS 0.25
-#define DEFAULT_FACET_PIXELS 3.0
+#define DEFAULT_FACET_PIXELS 5.0
 #define DEFAULT_TOLERANCE_MIN 5e-5
 #define DEFAULT_TOLERANCE_MAX 0.05
 
@@ -734,9 +734,10 @@ static double default_tolerance(const parser *p, rt_vec3 center, double r)
     double pixels_per_unit = 0.5 * p->width / half_width;
     double rho = pixels_per_unit * r;  /* the radius in pixels */
     double tol = DEFAULT_PIXELS / rho;
-    /* facets about DEFAULT_FACET_PIXELS across: flat shading then
-     * changes from pixel to pixel, not in visible bands */
-    double across = 1.0 - cos(0.5 * DEFAULT_FACET_PIXELS / rho);
+    /* facets about DEFAULT_FACET_PIXELS across where they face the eye
+     * (a band of angle pi / bands ~ sqrt(2) acos(1 - tol)): flat shading
+     * then changes in steps too small to be seen as bands */
+    double across = 1.0 - cos(DEFAULT_FACET_PIXELS / (sqrt(2.0) * rho));
     if (across < tol)
         tol = across;
     if (!(tol >= DEFAULT_TOLERANCE_MIN))
