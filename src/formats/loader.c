@@ -69,8 +69,10 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format)
 
 /*
  * The view of `options` applied to the camera of `d`: what is not given
- * keeps the file's value (observer O, look-at A, up AC, horizontal field of
- * view 2 atan(|AB| / |AO|)).  Returns NULL, or what is wrong.
+ * keeps the file's value (observer O, look-at A, horizontal field of view
+ * 2 atan(|AB| / |AO|); up: the file's AC, or, when the direction of view
+ * changes, the coordinate axis nearest to it).  Returns NULL, or what is
+ * wrong.
  */
 static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
 {
@@ -83,8 +85,24 @@ static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
         from = o->look_from;
     if (o->look_at_given)
         at = o->look_at;
-    if (o->up_given)
+    if (o->up_given) {
         up = o->up;
+    } else if (o->look_from_given || o->look_at_given) {
+        /* A new direction of view: the file's up leans with the file's
+         * view, so take the axis nearest to it (the scene's vertical,
+         * for a camera that looked down at it). */
+        rt_vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        rt_vec3 unit = v3_normalize(up), best = axes[2];
+        double best_dot = 0;
+        for (int i = 0; i < 3; i++) {
+            double along = v3_dot(unit, axes[i]);
+            if (fabs(along) > fabs(best_dot)) {
+                best_dot = along;
+                best = axes[i];
+            }
+        }
+        up = best_dot < 0 ? v3_scale(best, -1) : best;
+    }
     if (o->fov_given)
         fov = o->fov;
     if (!(fov > 0 && fov < 180))
