@@ -347,8 +347,9 @@ END_TEST
 
 START_TEST(a_file_without_light_gets_a_white_light_at_the_eye)
 {
+    /* and without `hither` (NFF before 2.7) */
     rt_scene *scene = load_nff("v from 1 2 3 at 0 0 0 up 0 0 1 angle 30 "
-                               "hither 0 resolution 8 8\n"
+                               "resolution 8 8\n"
                                "p 3 0 0 0 1 0 0 0 0 1\n",
                                0);
     rt_scene_info info;
@@ -519,7 +520,9 @@ START_TEST(every_refusal_names_its_line_column_and_cause)
          "resolution 8 8\n", 0, RT_ERR_RANGE, 5, 7,
          "expected an angle in (0, 180) degrees, found `180`"},
         {"v\nfrom 0 -1 0\nat 0 0 0\nup 0 0 1\nangle 45\nyon 1\n", 0,
-         RT_ERR_SYNTAX, 6, 1, "expected `hither`, found `yon`"},
+         RT_ERR_SYNTAX, 6, 1, "expected `hither` or `resolution`, found `yon`"},
+        {"v\nfrom 0 -1 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nres 1\n",
+         0, RT_ERR_SYNTAX, 7, 1, "expected `resolution`, found `res`"},
         {"v\nfrom 0 -1 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\n"
          "resolution 0 8\n", 0, RT_ERR_RANGE, 7, 12,
          "expected the image width (a whole number in 1..16384)"},

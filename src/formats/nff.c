@@ -439,13 +439,20 @@ static rt_status view(parser *p, const token *v)
     if (!(p->angle > 0 && p->angle < 180))
         return fail(p, RT_ERR_RANGE, &angle_t,
                     "an angle in (0, 180) degrees");
-    if ((status = keyword(p, "hither")) != RT_OK ||
-        (status = number(p, "`hither`", &hither, &t)) != RT_OK)
+    /* hither came with NFF 2.7: older files go on with the resolution */
+    if ((status = expect_token(p, &t, "`hither` or `resolution`")) != RT_OK)
         return status;
-    warn_once(p, ONCE_HITHER, &t,
-              "`hither` has no place in the rendering model (it sees from "
-              "the eye on): ignored");
-    if ((status = keyword(p, "resolution")) != RT_OK ||
+    if (is_word(&t, "hither")) {
+        if ((status = number(p, "`hither`", &hither, &t)) != RT_OK)
+            return status;
+        warn_once(p, ONCE_HITHER, &t,
+                  "`hither` has no place in the rendering model (it sees "
+                  "from the eye on): ignored");
+        status = keyword(p, "resolution");
+    } else if (!is_word(&t, "resolution")) {
+        status = fail(p, RT_ERR_SYNTAX, &t, "`hither` or `resolution`");
+    }
+    if (status != RT_OK ||
         (status = integer(p, "the image width", 1, RT_MAX_IMAGE_SIDE,
                           &p->width, &t)) != RT_OK ||
         (status = integer(p, "the image height", 1, RT_MAX_IMAGE_SIDE,
