@@ -11,6 +11,9 @@
  * with the exact square root (numerical error: what float and fastInvSqrt
  * cost).  Prints the table and writes a CSV and an SVG plot of error
  * against time with the Pareto front (docs/accuracy.md explains them).
+ * With --dof it measures depth of field instead: 1, 4, 16 and 64 rays per
+ * pixel (regular and stratified grids, which also sample the thin lens)
+ * against a reference of 1024 rays, on a scene whose camera has a lens.
  * Exit status: 0 success, 1 bad input, failed render or write, or a
  * comparison (--compare) that found different errors, 2 bad usage.
  */
@@ -41,6 +44,7 @@ static const char usage[] =
     "usage: rt-bench SCENE.scn [--out DIR] [--size WxH] [--threads N]\n"
     "                [--runs N] [--ref-samples N] [--max-samples N]\n"
     "                [--compare EARLIER.csv] [--quiet]\n"
+    "       rt-bench SCENE.scn --dof [--aperture A] [--focus F] [options]\n"
     "\n"
     "Measures what the accuracy knobs of the renderer cost and buy on one\n"
     "scene: prints a table and writes DIR/accuracy-NAME-WxH.csv (every\n"
@@ -54,12 +58,21 @@ static const char usage[] =
     "  --threads N        rendering threads; 0 = one per core (default 0)\n"
     "  --runs N           timed renders per setting, >= 5 (default 5)\n"
     "  --ref-samples N    rays per pixel of the reference, a square\n"
-    "                     (default 256; raised if its grid would nest a\n"
-    "                     tested one)\n"
+    "                     (default 256, 1024 with --dof; raised if its\n"
+    "                     grid would nest a tested one)\n"
     "  --max-samples N    leave out settings with more rays per pixel\n"
-    "                     (default 16)\n"
+    "                     (default 16; 64 with --dof)\n"
     "  --compare CSV      compare with the CSV of an earlier run: errors\n"
     "                     must be equal, times within the spread\n"
+    "  --dof              depth of field instead: double, depth 5, 1, 4,\n"
+    "                     16, 64 rays per pixel on regular and stratified\n"
+    "                     grids (they sample the lens too) against a\n"
+    "                     reference of 1024 (--ref-samples); writes\n"
+    "                     DIR/accuracy-dof-NAME-WxH.{csv,svg}; the camera\n"
+    "                     needs a lens (the scene's, or --aperture)\n"
+    "  --aperture A       lens radius a >= 0 in scene units instead of the\n"
+    "                     scene's (0: pinhole)\n"
+    "  --focus F          focal distance f > 0 instead of the scene's\n"
     "  -q, --quiet        no progress lines\n"
     "  -h, --help         this help\n"
     "\n"
@@ -79,6 +92,9 @@ typedef struct arguments {
     int ref_samples;
     int max_samples;
     int quiet;
+    int dof;                    /* the depth-of-field sweep */
+    double aperture;            /* < 0: the scene's */
+    double focus;               /* 0: the scene's */
 } arguments;
 
 /* The knobs of one render. */
@@ -100,14 +116,8 @@ typedef struct config {
 } config;
 
 /* What bounds the contribution of the bounces past a depth (see
- * docs/accuracy.md): every colour is at most `peak`; a path's weight after
- * n hits is at most pair^(n/2) k_max^(n%2), because two hits in a row are
- * never on the same plane. */
-typedef struct depth_bound {
-    double peak;                /* largest colour any ray can carry */
-    double k_max;               /* largest k of a facet that can be hit */
-    double pair;                /* largest k_i k_j, facets not coplanar */
-} depth_bound;
+ * docs/accuracy.md and bench_depth_bound in bench/metrics.h). */
+typedef bench_depth_bound depth_bound;
 
 static int usage_error(const char *fmt, const char *value)
 {
@@ -139,8 +149,8 @@ static int square_root(int n)
 /* Returns -1 to go on, or an exit status. */
 static int parse_arguments(int argc, char **argv, arguments *a)
 {
-    *a = (arguments){.out = ".", .runs = 5, .ref_samples = 256,
-                     .max_samples = 16};
+    *a = (arguments){.out = ".", .runs = 5, .ref_samples = 0,
+                     .max_samples = 0, .aperture = -1.0};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
@@ -149,7 +159,9 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--runs") ||
                           !strcmp(arg, "--ref-samples") ||
                           !strcmp(arg, "--max-samples") ||
-                          !strcmp(arg, "--compare");
+                          !strcmp(arg, "--compare") ||
+                          !strcmp(arg, "--aperture") ||
+                          !strcmp(arg, "--focus");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -185,6 +197,25 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             if (!parse_int(value, 1, 1024, &a->max_samples))
                 return usage_error("expected a sample count in 1..1024, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--aperture") || !strcmp(arg, "--focus")) {
+            int aperture = !strcmp(arg, "--aperture");
+            char *end;
+            errno = 0;
+            double v = strtod(value, &end);
+            if (errno != 0 || end == value || *end != '\0' || !isfinite(v) ||
+                (aperture ? v < 0.0 : v <= 0.0))
+                return usage_error(aperture ? "expected an aperture a >= 0 "
+                                              "after --aperture, found '%s'"
+                                            : "expected a focal distance "
+                                              "f > 0 after --focus, found "
+                                              "'%s'",
+                                   value);
+            if (aperture)
+                a->aperture = v;
+            else
+                a->focus = v;
+        } else if (!strcmp(arg, "--dof")) {
+            a->dof = 1;
         } else if (!strcmp(arg, "-q") || !strcmp(arg, "--quiet")) {
             a->quiet = 1;
         } else if (arg[0] == '-' && arg[1] != '\0') {
@@ -199,15 +230,25 @@ static int parse_arguments(int argc, char **argv, arguments *a)
     }
     if (a->scene == NULL)
         return usage_error("%s", "expected a scene file");
+    if (a->ref_samples == 0)
+        a->ref_samples = a->dof ? 1024 : 256;
+    if (a->max_samples == 0)
+        a->max_samples = a->dof ? 64 : 16;
     return -1;
 }
 
-/* The scene at `path`, rebuilt at width x height when they are not 0. */
+/*
+ * The scene at `path`, rebuilt at width x height when they are not 0, and
+ * with the lens `aperture` (when >= 0) and `focus` (when > 0).  The copy
+ * keeps everything the scene holds: every facet's t, n and d (d given
+ * explicitly, so that a format's own d survives), every light, the lens.
+ */
 static rt_status load_scene(const char *path, int width, int height,
-                            rt_scene **scene, rt_error *error)
+                            double aperture, double focus, rt_scene **scene,
+                            rt_error *error)
 {
     rt_status status = rt_scene_load(path, scene, error);
-    if (status != RT_OK || width == 0)
+    if (status != RT_OK || (width == 0 && aperture < 0.0 && focus <= 0.0))
         return status;
     rt_scene_info info;
     rt_scene_get_info(*scene, &info);
@@ -215,35 +256,44 @@ static rt_status load_scene(const char *path, int width, int height,
                                sizeof *vertices);
     rt_facet_desc *facets = malloc((size_t)(info.facet_count + 1) *
                                    sizeof *facets);
+    rt_light *lights = malloc((size_t)info.light_count * sizeof *lights);
     status = RT_ERR_NOMEM;
-    if (vertices != NULL && facets != NULL) {
+    if (vertices != NULL && facets != NULL && lights != NULL) {
         for (int i = 0; i < info.vertex_count; i++)
             vertices[i] = rt_scene_vertex(*scene, i);
         for (int i = 0; i < info.facet_count; i++) {
             rt_facet_info f;
             rt_scene_facet(*scene, i, &f);
             facets[i] = (rt_facet_desc){{f.vertex[0], f.vertex[1],
-                                         f.vertex[2]}, f.k, f.color};
+                                         f.vertex[2]}, f.k, f.color, f.t,
+                                        f.n, f.d, 1};
         }
+        for (int i = 1; i < info.light_count; i++)
+            rt_scene_light(*scene, i, &lights[i - 1]);
         const rt_camera *c = &info.camera;
         rt_vec3 b = {c->screen_center.x + c->right.x,
                      c->screen_center.y + c->right.y,
                      c->screen_center.z + c->right.z};
-        rt_scene_desc desc = {c->observer, c->screen_center, b, width,
-                              height, vertices, info.vertex_count, facets,
-                              info.facet_count, info.background,
-                              info.light_position, info.light_color};
-        rt_scene *resized;
-        status = rt_scene_create(&desc, &resized, error);
+        rt_scene_desc desc = {
+            c->observer, c->screen_center, b,
+            width ? width : info.width, width ? height : info.height,
+            vertices, info.vertex_count, facets, info.facet_count,
+            info.background, info.light_position, info.light_color,
+            info.light_count > 1 ? lights : NULL, info.light_count - 1,
+            aperture >= 0.0 ? aperture : c->aperture,
+            focus > 0.0 ? focus : c->focal_distance};
+        rt_scene *rebuilt;
+        status = rt_scene_create(&desc, &rebuilt, error);
         if (status == RT_OK) {
             rt_scene_free(*scene);
-            *scene = resized;
+            *scene = rebuilt;
         }
     } else if (error != NULL) {
         *error = (rt_error){RT_ERR_NOMEM, 0, 0, "out of memory"};
     }
     free(vertices);
     free(facets);
+    free(lights);
     if (status != RT_OK) {
         rt_scene_free(*scene);
         *scene = NULL;
@@ -287,15 +337,26 @@ static double max3(double a, double b, double c)
     return fmax(a, fmax(b, c));
 }
 
-/* The constants of the truncation bound of the scene's facets. */
+/*
+ * The constants of the truncation bound of the scene's facets.  A hit's
+ * colour is (k + t) times what its two rays carry (at most peak) plus
+ * d times its local term (at most the sum over the lights of C_S C_F / 255
+ * per channel), so peak >= local d / (1 - k - t) keeps every colour within
+ * peak; a facet with k + t = 1 and d > 0 bounds nothing (peak infinite, so
+ * the bound is the 255 levels of the format).
+ */
 static depth_bound find_depth_bound(const rt_scene *scene)
 {
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     depth_bound b = {max3(info.background.r, info.background.g,
                           info.background.b), 0.0, 0.0};
-    double light = max3(info.light_color.r, info.light_color.g,
-                        info.light_color.b);
+    double light[3] = {0.0, 0.0, 0.0};
+    for (int l = 0; l < info.light_count; l++) {
+        rt_light s;
+        rt_scene_light(scene, l, &s);
+        light[0] += s.color.r, light[1] += s.color.g, light[2] += s.color.b;
+    }
     double extent = 0.0;
     for (int i = 0; i < info.vertex_count; i++) {
         rt_vec3 v = rt_scene_vertex(scene, i);
@@ -307,17 +368,20 @@ static depth_bound find_depth_bound(const rt_scene *scene)
         rt_scene_facet(scene, i, &f);
         if (f.degenerate)
             continue;
-        b.peak = fmax(b.peak, light * max3(f.color.r, f.color.g,
-                                           f.color.b) / 255.0);
-        if (top < 0 || f.k > b.k_max) {
+        double carried = f.k + f.t;
+        double local = f.d * max3(light[0] * f.color.r, light[1] * f.color.g,
+                                  light[2] * f.color.b) / 255.0;
+        b.peak = fmax(b.peak, bench_peak_needed(local, carried));
+        if (top < 0 || carried > b.k_max) {
             top = i;
-            b.k_max = f.k;
+            b.k_max = carried;
         }
     }
     if (top < 0)
         return b;
-    /* The best pair holds a facet of largest k: any facet coplanar with
-     * the other member of a better pair would be coplanar with it too. */
+    /* The best pair holds a facet of largest k + t: any facet coplanar
+     * with the other member of a better pair would be coplanar with it
+     * too. */
     rt_scene_facet(scene, top, &f);
     rt_vec3 a = rt_scene_vertex(scene, f.vertex[0]);
     double tolerance = 1e-9 * fmax(extent, 1e-300);
@@ -330,7 +394,7 @@ static depth_bound find_depth_bound(const rt_scene *scene)
             coplanar &= distance_to_plane(rt_scene_vertex(scene, g.vertex[v]),
                                           a, f.normal) <= tolerance;
         if (!coplanar)
-            b.pair = fmax(b.pair, f.k * g.k);
+            b.pair = fmax(b.pair, (f.k + f.t) * (g.k + g.t));
     }
     return b;
 }
@@ -338,9 +402,7 @@ static depth_bound find_depth_bound(const rt_scene *scene)
 /* Largest colour error of stopping after `depth` reflections, in levels. */
 static double truncation_bound(const depth_bound *b, int depth)
 {
-    int hits = depth + 1;
-    double weight = pow(b->pair, hits / 2) * (hits % 2 ? b->k_max : 1.0);
-    return fmin(b->peak * weight, 255.0);
+    return bench_truncation_bound(b, depth);
 }
 
 /* The smallest regular grid side >= `grid` that contains none of the
@@ -463,6 +525,29 @@ static int build_configs(config *configs, int max_samples, int ref_depth)
                 configs[i].base = j;
         }
     }
+    return count;
+}
+
+/*
+ * The depth-of-field settings: 1, 4, 16 and 64 rays per pixel on regular
+ * and stratified grids (each ray also takes its own point of the lens, on
+ * the same kind of grid), double, exact square root, the default depth:
+ * the only knob is the number of rays.
+ */
+static int build_dof_configs(config *configs, int max_samples)
+{
+    int count = 0;
+    const int grids[] = {1, 2, 4, 8};
+    for (int g = 0; g < 4; g++)
+        for (int st = 0; st < 2; st++)
+            add_config(configs, &count,
+                       (settings){RT_PRECISION_DOUBLE, 0, grids[g],
+                                  st ? RT_SAMPLING_STRATIFIED
+                                     : RT_SAMPLING_REGULAR,
+                                  RT_DEFAULT_DEPTH},
+                       max_samples);
+    for (int i = 0; i < count; i++)
+        configs[i].base = i;
     return count;
 }
 
@@ -623,7 +708,8 @@ static int by_time(const void *a, const void *b)
 }
 
 static int write_plot(const char *path, const char *title,
-                      const char *subtitle, const bench_row *rows, int count)
+                      const char *subtitle, const bench_row *rows, int count,
+                      int dof)
 {
     static const char *const colours[] = {
         "double, exact sqrt (reference arithmetic)", "double, fastInvSqrt",
@@ -631,6 +717,11 @@ static int write_plot(const char *path, const char *title,
     static const char *const shapes[] = {
         "1 ray through the pixel centre", "regular n x n grid",
         "stratified n x n grid"};
+    static const char *const dof_colours[] = {
+        "double, exact sqrt, depth 5"};
+    static const char *const dof_shapes[] = {
+        "1 ray: lens centre (pinhole)", "regular n x n, pixel + lens",
+        "stratified n x n, pixel + lens"};
     bench_plot_point points[MAX_CONFIGS];
     char tooltips[MAX_CONFIGS][256];
     for (int i = 0; i < count; i++) {
@@ -652,7 +743,8 @@ static int write_plot(const char *path, const char *title,
     bench_plot plot = {title, subtitle, "median render time (s), log scale",
                        "RMSE against the converged reference (levels of "
                        "255), log scale",
-                       colours, 4, shapes, 3, points, count};
+                       dof ? dof_colours : colours, dof ? 1 : 4,
+                       dof ? dof_shapes : shapes, 3, points, count};
     output_file out;
     int ok = output_file_open(&out, path);
     ok = output_file_close(&out, ok && bench_plot_write_svg(out.file, &plot));
@@ -708,12 +800,20 @@ int main(int argc, char **argv)
         return code;
     rt_scene *scene;
     rt_error error;
-    if (load_scene(a.scene, a.width, a.height, &scene, &error) != RT_OK) {
+    if (load_scene(a.scene, a.width, a.height, a.aperture, a.focus, &scene,
+                   &error) != RT_OK) {
         fprintf(stderr, "rt-bench: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
+    if (a.dof && !(info.camera.aperture > 0.0)) {
+        fprintf(stderr, "rt-bench: %s: the camera has no lens (aperture "
+                        "0): give --aperture A (and --focus F) to measure "
+                        "depth of field\n", a.scene);
+        rt_scene_free(scene);
+        return EXIT_BAD_INPUT;
+    }
 
     depth_bound bound = find_depth_bound(scene);
     int ref_depth = 0;
@@ -721,14 +821,15 @@ int main(int argc, char **argv)
            ref_depth < DEPTH_CAP)
         ref_depth++;
     static config configs[MAX_CONFIGS];
-    int count = build_configs(configs, a.max_samples, ref_depth);
+    int count = a.dof ? build_dof_configs(configs, a.max_samples)
+                      : build_configs(configs, a.max_samples, ref_depth);
     int ref_grid = non_nesting_grid(square_root(a.ref_samples), configs,
                                     count);
 
     char name[256], base[4096], path[4200];
     scene_name(a.scene, name, sizeof name);
-    snprintf(base, sizeof base, "%s/accuracy-%s-%dx%d", a.out, name,
-             info.width, info.height);
+    snprintf(base, sizeof base, "%s/accuracy-%s%s-%dx%d", a.out,
+             a.dof ? "dof-" : "", name, info.width, info.height);
     if (mkdir(a.out, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "rt-bench: %s: cannot create: %s\n", a.out,
                 strerror(errno));
@@ -741,12 +842,16 @@ int main(int argc, char **argv)
            rt_version_string(), a.scene, info.width, info.height,
            info.facet_count, a.runs, a.threads ? a.threads : (int)cores,
            (a.threads ? a.threads : cores) == 1 ? "" : "s");
-    printf("depth bound: every colour <= %g, largest k %g, largest k_i k_j "
-           "of facets not coplanar %g\n",
+    if (info.camera.aperture > 0.0)
+        printf("lens: aperture radius a = %g, focal distance f = %g (scene "
+               "units)\n", info.camera.aperture, info.camera.focal_distance);
+    printf("depth bound: every colour <= %g, largest k + t %g, largest "
+           "(k+t)_i (k+t)_j of facets not coplanar %g\n",
            bound.peak, bound.k_max, bound.pair);
     if (truncation_bound(&bound, ref_depth) >= DEPTH_TOLERANCE)
         printf("warning: the bound does not reach %g levels by depth %d "
-               "(mirrors facing each other); the reference stops there\n",
+               "(reflective or transparent facets facing each other); the "
+               "reference stops there\n",
                DEPTH_TOLERANCE, DEPTH_CAP);
 
     images im = {0};
@@ -799,6 +904,23 @@ int main(int argc, char **argv)
            bench_percent(floor.differing, floor.pixels),
            bench_percent(floor.differing_much, floor.pixels),
            BENCH_MUCH_LEVELS);
+    if (a.dof && ref_grid % 2 == 0) {
+        /* Its convergence: half the grid side, a quarter of the rays. */
+        settings quarter = {RT_PRECISION_DOUBLE, 0, ref_grid / 2,
+                            RT_SAMPLING_STRATIFIED, ref_depth};
+        if (!render_or_complain(scene, &quarter, a.threads, &im.scratch,
+                                &check_seconds))
+            goto done;
+        bench_compare(&im.scratch, &im.reference, &floor);
+        printf("its convergence, %d x %d stratified = %d rays (%.2f s) "
+               "against it: RMSE %.4f, max %d, %.3f%% of pixels differ, "
+               "%.3f%% by > %d\n",
+               ref_grid / 2, ref_grid / 2, ref_grid * ref_grid / 4,
+               check_seconds, floor.rmse, floor.max_error,
+               bench_percent(floor.differing, floor.pixels),
+               bench_percent(floor.differing_much, floor.pixels),
+               BENCH_MUCH_LEVELS);
+    }
 
     if (!measure(scene, &a, configs, count, &im))
         goto done;
@@ -819,8 +941,14 @@ int main(int argc, char **argv)
     bench_print_table(stdout, rows, count);
 
     char title[512], subtitle[512];
-    snprintf(title, sizeof title, "%s at %d x %d: error against render time",
-             name, info.width, info.height);
+    if (a.dof)
+        snprintf(title, sizeof title, "%s at %d x %d, depth of field (a = "
+                 "%g, f = %g): error against render time", name, info.width,
+                 info.height, info.camera.aperture,
+                 info.camera.focal_distance);
+    else
+        snprintf(title, sizeof title, "%s at %d x %d: error against render "
+                 "time", name, info.width, info.height);
     snprintf(subtitle, sizeof subtitle,
              "reference: double, exact sqrt, depth %d, %d x %d stratified; "
              "median of %d runs on %d threads; libraytrace %s",
@@ -831,7 +959,7 @@ int main(int argc, char **argv)
         goto done;
     printf("\nwrote %s\n", path);
     snprintf(path, sizeof path, "%s.svg", base);
-    if (!write_plot(path, title, subtitle, rows, count))
+    if (!write_plot(path, title, subtitle, rows, count, a.dof))
         goto done;
     printf("wrote %s\nwrote %s-depth.csv\n", path, base);
     code = EXIT_SUCCESS;

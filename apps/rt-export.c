@@ -20,6 +20,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli_values.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -29,13 +30,15 @@ static const char usage[] =
     "usage: rt-export SCENE.scn [-o OUT] [--format p3|p6|png] [--depth N]\n"
     "                 [--threads N] [--precision double|float] [--fast-sqrt]\n"
     "                 [--samples N] [--sampling regular|stratified]\n"
-    "                 [--aperture A] [--focus F]\n"
+    "                 [--aperture A] [--focus F] [--input-format F]\n"
+    "                 [--tessellate T] [--look-from X,Y,Z] [--look-at X,Y,Z]\n"
+    "                 [--up X,Y,Z] [--fov DEGREES] [--light X,Y,Z[,R,G,B]]...\n"
     "                 [--kernel auto|scalar] [--accel auto|none|octree]\n"
     "                 [--check] [--stats] [--quiet]\n"
     "\n"
-    "Renders SCENE.scn (a scene of triangles lit by point lights) to an\n"
-    "image and prints the path it wrote.  SCENE.scn `-' reads the scene from\n"
-    "standard input (then -o is needed).\n"
+    "Renders SCENE (a .scn scene, an NFF file or a Wavefront OBJ model, by\n"
+    "its extension) to an image and prints the path it wrote.  SCENE `-'\n"
+    "reads the scene from standard input (then -o is needed).\n"
     "\n"
     "  -o, --output OUT  where to write the image (default: the scene's name\n"
     "                    with .ppm, or .png with --format png, in the\n"
@@ -66,6 +69,17 @@ static const char usage[] =
     "  --accel A         auto (default: an octree from 300 facets on), none\n"
     "                    (every ray tests every facet) or octree; the\n"
     "                    image is the same\n"
+    "  --input-format F  scn, nff or obj, whatever the scene's extension says\n"
+    "  --tessellate T    NFF spheres and cones: the largest distance between\n"
+    "                    the surface and its facets, relative to the radius\n"
+    "  --look-from P     the observer, X,Y,Z (each view option on its own\n"
+    "                    replaces that part of the scene's camera)\n"
+    "  --look-at P       the point the screen is centred on, X,Y,Z\n"
+    "  --up V            up in the image, X,Y,Z\n"
+    "  --fov D           the horizontal field of view in degrees\n"
+    "  --light L         a point light X,Y,Z or X,Y,Z,R,G,B (0..255; white\n"
+    "                    by default); repeat for several; they replace the\n"
+    "                    scene's lights (an OBJ's default light included)\n"
     "  --check           validate the scene and print what it holds; do not\n"
     "                    render\n"
     "  --stats           print the work done (rays, tests, time) on stderr\n"
@@ -94,7 +108,11 @@ typedef struct arguments {
     int check;
     int stats;
     int quiet;
+    rt_load_options load;   /* format, tessellation, view, lights */
+    rt_light lights[16];    /* --light, in order */
 } arguments;
+
+#define MAX_LIGHTS 16
 
 static int usage_error(const char *fmt, const char *value)
 {
@@ -112,19 +130,6 @@ static int parse_int(const char *text, int min, int max, int *value)
     if (errno != 0 || end == text || *end != '\0' || v < min || v > max)
         return 0;
     *value = (int)v;
-    return 1;
-}
-
-/* A finite length in scene units: > 0 when `positive`, else >= 0. */
-static int parse_length(const char *text, int positive, double *value)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (errno != 0 || end == text || *end != '\0' || !isfinite(v) ||
-        (positive ? !(v > 0.0) : !(v >= 0.0)))
-        return 0;
-    *value = v;
     return 1;
 }
 
@@ -157,7 +162,13 @@ static int parse_arguments(int argc, char **argv, arguments *a)
                           !strcmp(arg, "--kernel") ||
                           !strcmp(arg, "--accel") ||
                           !strcmp(arg, "--aperture") ||
-                          !strcmp(arg, "--focus");
+                          !strcmp(arg, "--focus") ||
+                          !strcmp(arg, "--input-format") ||
+                          !strcmp(arg, "--tessellate") ||
+                          !strcmp(arg, "--look-from") ||
+                          !strcmp(arg, "--look-at") ||
+                          !strcmp(arg, "--up") || !strcmp(arg, "--fov") ||
+                          !strcmp(arg, "--light");
         if (takes_value && value == NULL)
             return usage_error("option '%s' needs a value", arg);
         if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
@@ -223,12 +234,52 @@ static int parse_arguments(int argc, char **argv, arguments *a)
             else
                 return usage_error("expected auto or scalar after --kernel, "
                                    "found '%s'", value);
+        } else if (!strcmp(arg, "--input-format")) {
+            if (!cli_parse_scene_format(value, &a->load.format))
+                return usage_error("expected scn, nff or obj after "
+                                   "--input-format, found '%s'", value);
+        } else if (!strcmp(arg, "--tessellate")) {
+            if (!cli_parse_length(value, 1, &a->load.tessellation) ||
+                !(a->load.tessellation < 1))
+                return usage_error("expected a tolerance in (0, 1) after "
+                                   "--tessellate, found '%s'", value);
+        } else if (!strcmp(arg, "--look-from")) {
+            if (!cli_parse_point(value, &a->load.look_from))
+                return usage_error("expected x,y,z after --look-from, "
+                                   "found '%s'", value);
+            a->load.look_from_given = 1;
+        } else if (!strcmp(arg, "--look-at")) {
+            if (!cli_parse_point(value, &a->load.look_at))
+                return usage_error("expected x,y,z after --look-at, found "
+                                   "'%s'", value);
+            a->load.look_at_given = 1;
+        } else if (!strcmp(arg, "--up")) {
+            if (!cli_parse_point(value, &a->load.up))
+                return usage_error("expected x,y,z after --up, found '%s'",
+                                   value);
+            a->load.up_given = 1;
+        } else if (!strcmp(arg, "--fov")) {
+            if (!cli_parse_length(value, 1, &a->load.fov) ||
+                !(a->load.fov < 180))
+                return usage_error("expected a field of view in (0, 180) "
+                                   "degrees after --fov, found '%s'", value);
+            a->load.fov_given = 1;
+        } else if (!strcmp(arg, "--light")) {
+            if (a->load.light_count == MAX_LIGHTS)
+                return usage_error("expected at most 16 --light options, "
+                                   "found another: '%s'", value);
+            if (!cli_parse_light(value, &a->lights[a->load.light_count]))
+                return usage_error("expected x,y,z or x,y,z,r,g,b (colour "
+                                   "0..255) after --light, found '%s'",
+                                   value);
+            a->load.light_count++;
+            a->load.lights = a->lights;
         } else if (!strcmp(arg, "--aperture")) {
-            if (!parse_length(value, 0, &a->aperture))
+            if (!cli_parse_length(value, 0, &a->aperture))
                 return usage_error("expected a lens radius >= 0 after "
                                    "--aperture, found '%s'", value);
         } else if (!strcmp(arg, "--focus")) {
-            if (!parse_length(value, 1, &a->focal_distance))
+            if (!cli_parse_length(value, 1, &a->focal_distance))
                 return usage_error("expected a distance > 0 after --focus, "
                                    "found '%s'", value);
         } else if (!strcmp(arg, "--accel")) {
@@ -288,13 +339,18 @@ static char *default_output(const char *scene, rt_image_format format)
 }
 
 /* Reads the whole scene from standard input and parses it as "<stdin>". */
-static rt_status load_standard_input(rt_scene **scene, rt_error *error)
+static rt_status load_standard_input(const rt_load_options *options,
+                                     rt_scene **scene, rt_error *error)
 {
     size_t capacity = 1 << 16, used = 0;
     char *text = malloc(capacity);
     while (text != NULL) {
-        used += fread(text + used, 1, capacity - used, stdin);
+        size_t got = fread(text + used, 1, capacity - used, stdin);
+        used += got;
         if (used < capacity)
+            break;
+        /* /dev/zero or a huge binary: the loader's check names it */
+        if (used > RT_MAX_SCENE_BYTES || memchr(text + used - got, 0, got))
             break;
         char *bigger = capacity <= SIZE_MAX / 2 ? realloc(text, capacity * 2)
                                                 : NULL;
@@ -316,7 +372,8 @@ static rt_status load_standard_input(rt_scene **scene, rt_error *error)
                  "<stdin>: cannot read: %s", strerror(errno));
         return RT_ERR_IO;
     }
-    rt_status status = rt_scene_parse(text, used, "<stdin>", scene, error);
+    rt_status status = rt_scene_parse_with(text, used, "<stdin>", options,
+                                           scene, error);
     free(text);
     return status;
 }
@@ -484,8 +541,10 @@ int main(int argc, char **argv)
     rt_error error;
     struct timespec load_start;
     clock_gettime(CLOCK_MONOTONIC, &load_start);
-    rt_status loaded = from_stdin ? load_standard_input(&scene, &error)
-                                  : rt_scene_load(a.scene, &scene, &error);
+    rt_status loaded = from_stdin
+                           ? load_standard_input(&a.load, &scene, &error)
+                           : rt_scene_load_with(a.scene, &a.load, &scene,
+                                                &error);
     if (loaded != RT_OK) {
         fprintf(stderr, "rt-export: %s\n", error.message);
         return EXIT_BAD_INPUT;
@@ -512,6 +571,10 @@ int main(int argc, char **argv)
     if (!from_stdin && !to_stdout && same_file(path, a.scene)) {
         fprintf(stderr, "rt-export: %s: refusing to write the image over "
                         "the scene it was rendered from\n", path);
+        goto done;
+    }
+    if (rt_scene_check_precision(scene, a.precision, &error) != RT_OK) {
+        fprintf(stderr, "rt-export: %s\n", error.message);
         goto done;
     }
     /* A bad output fails now, not after the render. */

@@ -21,6 +21,7 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
+#include "cli_values.h"
 #include "raytrace/raytrace.h"
 #include "view_scene.h"
 #include "view_session.h"
@@ -50,6 +51,11 @@ static const char usage_text[] =
     "                a pinhole); depth of field needs several samples\n"
     "  --focus F     distance in focus, in scene units along the view axis\n"
     "                (default: the scene's, else the screen's distance)\n"
+    "  --input-format F, --tessellate T, --look-from X,Y,Z, --look-at X,Y,Z,\n"
+    "  --up X,Y,Z, --fov DEGREES, --light X,Y,Z[,R,G,B] (repeatable)\n"
+    "                as in rt-export: the scene's format, the tolerance of\n"
+    "                NFF's curved shapes, a view and lights that replace the\n"
+    "                scene's\n"
     "  --help        show this help and exit\n"
     "  --version     show the version and exit\n"
     "\n"
@@ -75,6 +81,8 @@ typedef struct viewer {
     int samples;
     double aperture;            /* negative: the scene's */
     double focal_distance;      /* 0: the scene's */
+    rt_load_options load;       /* format, tessellation, view, lights */
+    rt_light lights[16];        /* --light, in order */
     char *scene_path;           /* of the session; NULL when none */
     view_session *session;
     view_window *window;
@@ -165,7 +173,8 @@ static void open_scene(viewer *v, const char *path)
 {
     rt_scene *scene;
     rt_error error;
-    if (view_scene_load(path, v->scale, &scene, &error) != RT_OK) {
+    if (view_scene_load_with(path, v->scale, &v->load, &scene, &error) !=
+        RT_OK) {
         show_message(v, error.message);
         return;
     }
@@ -413,17 +422,45 @@ static int parse_scale(const char *text, double *value)
     return 1;
 }
 
-/* A finite length in scene units: > 0 when `positive`, else >= 0. */
-static int parse_length(const char *text, int positive, double *value)
+/* One of the loader's options (shared with rt-export); returns NULL, or
+ * what was expected. */
+static const char *load_option(viewer *v, const char *arg, const char *text)
 {
-    char *end;
-    errno = 0;
-    double number = strtod(text, &end);
-    if (errno || end == text || *end || !isfinite(number) ||
-        (positive ? !(number > 0.0) : !(number >= 0.0)))
-        return 0;
-    *value = number;
-    return 1;
+    rt_load_options *o = &v->load;
+    if (strcmp(arg, "--input-format") == 0)
+        return cli_parse_scene_format(text, &o->format)
+                   ? NULL
+                   : "--input-format expects scn, nff or obj, not";
+    if (strcmp(arg, "--tessellate") == 0)
+        return cli_parse_length(text, 1, &o->tessellation) &&
+                       o->tessellation < 1
+                   ? NULL
+                   : "--tessellate expects a tolerance in (0, 1), not";
+    if (strcmp(arg, "--fov") == 0) {
+        if (!cli_parse_length(text, 1, &o->fov) || !(o->fov < 180))
+            return "--fov expects degrees in (0, 180), not";
+        o->fov_given = 1;
+        return NULL;
+    }
+    if (strcmp(arg, "--light") == 0) {
+        if (o->light_count == 16)
+            return "at most 16 --light options; one more:";
+        if (!cli_parse_light(text, &v->lights[o->light_count]))
+            return "--light expects x,y,z or x,y,z,r,g,b (0..255), not";
+        o->lights = v->lights;
+        o->light_count++;
+        return NULL;
+    }
+    int *given = strcmp(arg, "--look-from") == 0 ? &o->look_from_given
+                 : strcmp(arg, "--look-at") == 0 ? &o->look_at_given
+                                                  : &o->up_given;
+    rt_vec3 *point = strcmp(arg, "--look-from") == 0 ? &o->look_from
+                     : strcmp(arg, "--look-at") == 0 ? &o->look_at
+                                                      : &o->up;
+    if (!cli_parse_point(text, point))
+        return "expected x,y,z after the option, not";
+    *given = 1;
+    return NULL;
 }
 
 static int usage_error(const char *message, const char *argument)
@@ -447,6 +484,18 @@ static int parse_arguments(int argc, char **argv, viewer *v,
         } else if (strcmp(arg, "--version") == 0) {
             printf(PROGRAM " (libraytrace) %s\n", rt_version_string());
             return 0;
+        } else if (strcmp(arg, "--input-format") == 0 ||
+                   strcmp(arg, "--tessellate") == 0 ||
+                   strcmp(arg, "--look-from") == 0 ||
+                   strcmp(arg, "--look-at") == 0 ||
+                   strcmp(arg, "--up") == 0 || strcmp(arg, "--fov") == 0 ||
+                   strcmp(arg, "--light") == 0) {
+            if (next == NULL)
+                return usage_error("missing value after", arg);
+            i++;
+            const char *wrong = load_option(v, arg, next);
+            if (wrong != NULL)
+                return usage_error(wrong, next);
         } else if (strcmp(arg, "--samples") == 0 ||
                    strcmp(arg, "--aperture") == 0 ||
                    strcmp(arg, "--focus") == 0) {
@@ -463,7 +512,7 @@ static int parse_arguments(int argc, char **argv, viewer *v,
                 if (root * root != v->samples)
                     return usage_error("--samples expects a square (1, 4, "
                                        "9, 16, ...), not", next);
-            } else if (!parse_length(next, strcmp(arg, "--focus") == 0,
+            } else if (!cli_parse_length(next, strcmp(arg, "--focus") == 0,
                                      strcmp(arg, "--focus") == 0
                                          ? &v->focal_distance
                                          : &v->aperture)) {
@@ -511,6 +560,7 @@ int main(int argc, char **argv)
     v.max_depth = RT_DEFAULT_DEPTH;
     v.samples = 1;
     v.aperture = -1.0;
+    rt_load_options_init(&v.load);
     const char *scene;
     int code = parse_arguments(argc, argv, &v, &scene);
     if (code >= 0)

@@ -72,7 +72,7 @@ if(RAYTRACE_VIEWER_ENABLED)
   raytrace_set_warnings(raytrace_viewer)
 
   add_executable(rt-view rt-view.c)
-  target_link_libraries(rt-view PRIVATE raytrace_viewer)
+  target_link_libraries(rt-view PRIVATE raytrace_viewer raytrace_cli)
   target_compile_definitions(rt-view PRIVATE _POSIX_C_SOURCE=200809L)
   raytrace_set_warnings(rt-view)
   install(TARGETS rt-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -17,6 +17,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "error.h"
 #include "raytrace/render.h"
 #include "kernel/kernel.h"
 #include "scene_internal.h"
@@ -396,21 +397,43 @@ static int prepare_octree(job *j, const rt_scene *scene)
     return 1;
 }
 
-/* Non-zero when every coordinate of the scene is within float's range (a
- * float render of a scene beyond it is refused rather than producing
- * infinities). */
-static int fits_float(const rt_scene *scene)
+rt_status rt_scene_check_precision(const rt_scene *scene,
+                                   rt_precision precision, rt_error *error)
 {
+    if (precision != RT_PRECISION_FLOAT)
+        return RT_OK;
     const rt_camera *c = &scene->camera;
     double largest = fmax(v3_max_abs(c->observer),
                           v3_max_abs(v3_add(c->screen_center,
                                             v3_add(v3_abs(c->right),
                                                    v3_abs(c->up)))));
+    double lights = 0;
     for (int i = 0; i < scene->light_count; i++)
-        largest = fmax(largest, v3_max_abs(scene->lights[i].position));
-    for (int i = 0; i < scene->vertex_count; i++)
-        largest = fmax(largest, v3_max_abs(scene->vertices[i]));
-    return largest < FLT_MAX;
+        lights = fmax(lights, v3_max_abs(scene->lights[i].position));
+    rt_vec3 low = {INFINITY, INFINITY, INFINITY}, high = v3_scale(low, -1);
+    for (int i = 0; i < scene->vertex_count; i++) {
+        rt_vec3 v = scene->vertices[i];
+        largest = fmax(largest, v3_max_abs(v));
+        low = v3(fmin(low.x, v.x), fmin(low.y, v.y), fmin(low.z, v.z));
+        high = v3(fmax(high.x, v.x), fmax(high.y, v.y), fmax(high.z, v.z));
+    }
+    if (!(fmax(largest, lights) < FLT_MAX))
+        return rt__error_set(error, RT_ERR_RANGE, scene->name, 0, 0,
+                             "a float render cannot hold coordinates of "
+                             "%g (float ends at %g): render in double",
+                             fmax(largest, lights), (double)FLT_MAX);
+    double extent = scene->vertex_count > 1 ? v3_max_abs(v3_sub(high, low))
+                                            : 0;
+    if (extent > 0 && largest > RT_FLOAT_SPREAD_MAX * extent)
+        return rt__error_set(error, RT_ERR_RANGE, scene->name, 0, 0,
+                             "a float render cannot resolve this scene: its "
+                             "coordinates reach %g while its vertices span "
+                             "%g, more than %d times less (float keeps 24 "
+                             "bits: its steps at %g are %g, too coarse for "
+                             "the scene): render in double",
+                             largest, extent, (int)RT_FLOAT_SPREAD_MAX,
+                             largest, largest * FLT_EPSILON);
+    return RT_OK;
 }
 
 rt_status rt_render_rows(const rt_scene *scene,
@@ -456,7 +479,8 @@ rt_status rt_render_rows(const rt_scene *scene,
     /* The float kernel is built by the first float render and kept with
      * the scene: a double-only user never pays for float data. */
     if (options->precision == RT_PRECISION_FLOAT) {
-        if (!fits_float(scene))
+        if (rt_scene_check_precision(scene, RT_PRECISION_FLOAT, NULL) !=
+            RT_OK)
             return RT_ERR_RANGE;
         j.kernel.f = rt__scene_kernel_f(scene);
         if (j.kernel.f == NULL)

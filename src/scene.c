@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "formats/reader.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -137,6 +138,17 @@ static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
     if (what != NULL)
         return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
                              "expected finite coordinates for %s", what);
+    double largest = fmax(v3_max_abs(d->observer),
+                          fmax(v3_max_abs(d->screen_center),
+                               v3_max_abs(d->screen_right)));
+    for (int i = 0; i < d->vertex_count; i++)
+        largest = fmax(largest, v3_max_abs(d->vertices[i]));
+    if (largest > RT_MAX_COORDINATE)
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected coordinates of magnitude at most %g, "
+                             "found %g: the arithmetic of the renderer "
+                             "cannot hold such a scene", RT_MAX_COORDINATE,
+                             largest);
     for (int i = 0; i < d->facet_count; i++) {
         const rt_facet_desc *f = &d->facets[i];
         for (int j = 0; j < 3; j++)
@@ -193,8 +205,8 @@ static void add_degenerate_warning(rt_scene *s, int facet, int line)
 }
 
 rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
-                          const int *facet_lines, rt_scene **out,
-                          rt_error *error)
+                          const int *facet_lines, const rt_notes *notes,
+                          rt_scene **out, rt_error *error)
 {
     *out = NULL;
     rt_status status = check_desc(d, error);
@@ -217,7 +229,8 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
-    s->warnings = malloc((nf ? nf : 1) * sizeof *s->warnings);
+    size_t noted = notes ? (size_t)notes->count : 0;
+    s->warnings = malloc((nf + noted ? nf + noted : 1) * sizeof *s->warnings);
     s->light_count = 1 + d->more_light_count;
     s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
     if ((name && !s->name) || !s->vertices || !s->facets ||
@@ -229,6 +242,9 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
         memcpy(s->vertices, d->vertices, nv * sizeof *s->vertices);
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
+    if (noted > 0)
+        memcpy(s->warnings, notes->items, noted * sizeof *s->warnings);
+    s->warning_count = (int)noted;
     s->background = d->background;
     s->lights[0] = (rt_light){d->light_position, d->light_color};
     for (int i = 0; i < d->more_light_count; i++)
@@ -280,7 +296,7 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
     if (desc == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a scene description");
-    return rt__scene_build(desc, NULL, NULL, scene, error);
+    return rt__scene_build(desc, NULL, NULL, NULL, scene, error);
 }
 
 void rt_scene_free(rt_scene *scene)

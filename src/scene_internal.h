@@ -37,13 +37,17 @@ struct rt_scene {
     int transparent_count;  /* live facets with t > 0 */
 };
 
+struct rt_notes;
+
 /*
  * Builds a scene from a validated description.  `name` (may be NULL) and
- * `facet_lines` (may be NULL) only serve warnings.  On failure returns a
- * status with *error filled and *scene NULL.
+ * `facet_lines` (may be NULL) only serve warnings; `notes` (may be NULL)
+ * are the reader's own warnings, listed before the builder's.  On failure
+ * returns a status with *error filled and *scene NULL.
  */
 rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
-                          const int *facet_lines, rt_scene **scene,
+                          const int *facet_lines,
+                          const struct rt_notes *notes, rt_scene **scene,
                           rt_error *error);
 
 /*

@@ -8,7 +8,9 @@ foreach(suite
     test_shade
     test_reflect
     test_ppm
-    test_render)
+    test_render
+    test_extension
+    test_readers)
   raytrace_add_suite(${suite})
 endforeach()
 

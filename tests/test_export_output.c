@@ -3,7 +3,8 @@
  * standard output (`-o -`, `-o /dev/stdout`), a scene read from standard
  * input (`-`), the format chosen from the extension, PNG whose pixels are
  * the PPM's, a FIFO, an output refused before rendering, and a save
- * interrupted by a signal.  Each case runs the real program.
+ * interrupted by a signal, and scenes converted by rt-convert.  Each case
+ * runs the real programs.
  */
 #include <check.h>
 #include <dirent.h>
@@ -132,8 +133,8 @@ static void run_free(run *r)
  * action (a test runner may ignore SIGINT), and standard output and error to
  * files in `dir`.  Returns the pid; finish with wait_export.
  */
-static pid_t start_export(const char *dir, const char *const *args,
-                          const char *input)
+static pid_t start_program(const char *program, const char *dir,
+                           const char *const *args, const char *input)
 {
     static char out_path[4096], err_path[4096];
     snprintf(out_path, sizeof out_path, "%s/..out", dir);
@@ -158,7 +159,7 @@ static pid_t start_export(const char *dir, const char *const *args,
 
     char *argv[24];
     int argc = 0;
-    argv[argc++] = (char *)RT_EXPORT_PATH;
+    argv[argc++] = (char *)program;
     for (int i = 0; args[i] != NULL && argc < 23; i++)
         argv[argc++] = (char *)args[i];
     argv[argc] = NULL;
@@ -167,14 +168,20 @@ static pid_t start_export(const char *dir, const char *const *args,
     ck_assert_int_eq(chdir(dir), 0);
     pid_t pid;
     extern char **environ;
-    int failed = posix_spawn(&pid, RT_EXPORT_PATH, &actions, &attributes,
+    int failed = posix_spawn(&pid, program, &actions, &attributes,
                              argv, environ);
     ck_assert_int_eq(chdir(cwd), 0);
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
-    ck_assert_msg(failed == 0, "cannot start rt-export: %s",
+    ck_assert_msg(failed == 0, "cannot start %s: %s", program,
                   strerror(failed));
     return pid;
+}
+
+static pid_t start_export(const char *dir, const char *const *args,
+                          const char *input)
+{
+    return start_program(RT_EXPORT_PATH, dir, args, input);
 }
 
 static run wait_export(const char *dir, pid_t pid)
@@ -557,6 +564,67 @@ START_TEST(signal_during_the_save_keeps_the_previous_file)
 }
 END_TEST
 
+/* rt-convert --extended then rt-export gives the bytes of the direct
+ * render, for a scene of each format (and the lens, glass and lights of
+ * the extension); without --extended what .scn cannot hold is dropped
+ * with a warning. */
+START_TEST(converted_scenes_render_as_the_originals)
+{
+    static const struct {
+        const char *path, *samples;
+    } scenes[] = {
+        {"scenes/cubes.scn", "1"},      {"scenes/glass.scn", "1"},
+        {"scenes/focus.scn", "4"},      {"scenes/nff-sphere.nff", "1"},
+        {"tests/data/obj/cube.obj", "1"},
+    };
+    char *dir = fresh_dir();
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        char source[4096];
+        snprintf(source, sizeof source, "%s",
+                 rt_test_source_path(scenes[i].path));
+        const char *convert[] = {source, "converted.scn", "--extended",
+                                 NULL};
+        run r = wait_export(dir, start_program(RT_CONVERT_PATH, dir,
+                                               convert, NULL));
+        ck_assert_msg(r.code == 0, "%s: rt-convert exit %d: %s",
+                      scenes[i].path, r.code, r.err);
+        run_free(&r);
+        const char *direct[] = {source, "-o", "direct.ppm", "-q",
+                                "--samples", scenes[i].samples, NULL};
+        const char *again[] = {"converted.scn", "-o", "again.ppm", "-q",
+                               "--samples", scenes[i].samples, NULL};
+        r = export_in(dir, direct, NULL);
+        ck_assert_msg(r.code == 0, "%s: %s", scenes[i].path, r.err);
+        run_free(&r);
+        r = export_in(dir, again, NULL);
+        ck_assert_msg(r.code == 0, "%s converted: %s", scenes[i].path, r.err);
+        run_free(&r);
+        char a[4096], b[4096];
+        snprintf(a, sizeof a, "%s/direct.ppm", dir);
+        snprintf(b, sizeof b, "%s/again.ppm", dir);
+        size_t na, nb;
+        char *da = slurp(a, &na), *db = slurp(b, &nb);
+        ck_assert_msg(da && db && na == nb && memcmp(da, db, na) == 0,
+                      "%s: the converted scene renders differently",
+                      scenes[i].path);
+        free(da);
+        free(db);
+    }
+    /* plain .scn: the second light and the glass are dropped, said so */
+    char glass[4096];
+    snprintf(glass, sizeof glass, "%s", rt_test_source_path("scenes/glass.scn"));
+    const char *plain[] = {glass, "plain.scn", NULL};
+    run r = wait_export(dir, start_program(RT_CONVERT_PATH, dir, plain,
+                                           NULL));
+    ck_assert_int_eq(r.code, 0);
+    ck_assert_msg(strstr(r.err, "dropped the lights after the first") &&
+                      strstr(r.err, "dropped the facets' transparency"),
+                  "warnings: %s", r.err);
+    run_free(&r);
+    remove_tree(dir);
+}
+END_TEST
+
 static Suite *export_output_suite(void)
 {
     Suite *s = suite_create("export_output");
@@ -574,6 +642,7 @@ static Suite *export_output_suite(void)
     tcase_add_test(c, unknown_extension_is_a_usage_error_listing_the_formats);
     tcase_add_test(c, png_holds_the_pixels_of_the_ppm);
     tcase_add_test(c, bad_output_fails_before_rendering);
+    tcase_add_test(c, converted_scenes_render_as_the_originals);
     suite_add_tcase(s, c);
     c = tcase_create("signals");
     tcase_set_timeout(c, 240);

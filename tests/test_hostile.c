@@ -400,11 +400,14 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
         ck_assert_msg(error.message[0] != '\0', "prefix %zu: no message", n);
     }
     free(exact);
+    /* a NUL byte: no scene file holds one; the message says the file is
+     * binary, at the byte's position */
     static const char nul_inside[] = "0 0 1\0" "0\n";
     ck_assert_int_eq(parse_refused(nul_inside, sizeof nul_inside - 1, &error),
-                     RT_ERR_SYNTAX);
+                     RT_ERR_FORMAT);
     ck_assert_str_eq(error.message,
-                     "hostile.scn:1:5: expected a number, found `1?0`");
+                     "hostile.scn:1:6: expected text, found a NUL byte: the "
+                     "file is binary, not a scene");
 }
 END_TEST
 

@@ -233,6 +233,40 @@ START_TEST(parse_prints_the_loaders_message_and_returns_nonzero)
 }
 END_TEST
 
+/* The course's struct has one light, no transparency and a pinhole: a
+ * file that uses more is refused with a message that says so, and the
+ * same file without the extension is read. */
+START_TEST(parse_refuses_a_file_that_uses_the_extensions)
+{
+    static const struct {
+        const char *screen, *facet, *more_light, *word;
+    } cases[] = {
+        {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30", "5 5 5 255 255 255",
+         "several lights"},
+        {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30 0.5 1.5", "",
+         "transparent facets"},
+        {"0 0 5 1 0 5 8 6 0.2 5", "1 2 3 0 10 20 30", "", "aperture"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char text[512];
+        snprintf(text, sizeof text,
+                 "0 0 10\n%s\n3\n-1 -1 0\n1 -1 0\n0 1 0\n1\n%s\n1 2 3\n"
+                 "0 0 10 255 255 255\n%s\n",
+                 cases[i].screen, cases[i].facet, cases[i].more_light);
+        write_file("in104_extended.scn", text);
+        scene s;
+        capture_begin();
+        int status = parse("in104_extended.scn", &s);
+        const char *printed = capture_end();
+        ck_assert_int_eq(status, RT_ERR_FORMAT);
+        ck_assert(scene_is_zeroed(&s));
+        ck_assert_msg(strstr(printed, "beyond the handout") != NULL &&
+                          strstr(printed, cases[i].word) != NULL,
+                      "case %zu: %s", i, printed);
+    }
+}
+END_TEST
+
 START_TEST(parse_reports_a_missing_record_and_a_missing_file)
 {
     write_file("in104_short.scn", "0 0 10\n0 0 5 1 0 5 8 6\n0\n0\n1 2 3\n");
@@ -466,6 +500,7 @@ static Suite *in104_scene_suite(void)
     tcase_add_test(parsing, parse_reads_what_the_core_reads_crlf_bom_and_separators);
     tcase_add_test(parsing, parse_prints_the_loaders_message_and_returns_nonzero);
     tcase_add_test(parsing, parse_reports_a_missing_record_and_a_missing_file);
+    tcase_add_test(parsing, parse_refuses_a_file_that_uses_the_extensions);
     tcase_add_test(parsing, parse_of_an_empty_scene_gives_null_arrays);
     tcase_add_test(parsing, parse_keeps_a_zero_area_facet_with_a_warning);
     tcase_add_test(parsing, parse_refuses_null_arguments);

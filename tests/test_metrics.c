@@ -139,6 +139,64 @@ START_TEST(pareto_front_keeps_only_points_nothing_beats)
 }
 END_TEST
 
+/* cubes.scn (docs/accuracy.md): peak 255, k_max 0.5 (the floor), pair
+ * 0.5 x 0.3 = 0.15.  B(0) = 255 x 0.5 = 127.5; B(1) = 255 x 0.15 = 38.25;
+ * B(5) = 255 x 0.15^3 = 0.860625; B(13) = 255 x 0.15^7 = 4.35691e-4. */
+START_TEST(truncation_bound_of_the_cube_scene)
+{
+    bench_depth_bound b = {255.0, 0.5, 0.15};
+    ck_assert_double_eq_tol(bench_truncation_bound(&b, 0), 127.5, 1e-12);
+    ck_assert_double_eq_tol(bench_truncation_bound(&b, 1), 38.25, 1e-12);
+    ck_assert_double_eq_tol(bench_truncation_bound(&b, 2), 19.125, 1e-12);
+    ck_assert_double_eq_tol(bench_truncation_bound(&b, 5), 0.860625, 1e-12);
+    ck_assert_double_eq_tol(bench_truncation_bound(&b, 13), 4.3569140625e-4,
+                            1e-15);
+}
+END_TEST
+
+/* A mirror (k = 1) facing a floor (k = 0.5): pair 0.5, and the bound is
+ * capped at 255 where peak x k_max would be 255 already: B(0) = 255,
+ * B(1) = B(2) = 127.5, B(35) = 255 / 2^18 = 9.72748e-4.  A peak that no
+ * finite colour bounds (a facet with k + t = 1 and a local term) gives the
+ * format's 255 levels while the weight is positive, and 0, not NaN, once
+ * it is 0 (no facet passes anything on). */
+START_TEST(truncation_bound_caps_and_zero_weights)
+{
+    bench_depth_bound mirror = {255.0, 1.0, 0.5};
+    ck_assert_double_eq(bench_truncation_bound(&mirror, 0), 255.0);
+    ck_assert_double_eq(bench_truncation_bound(&mirror, 1), 127.5);
+    ck_assert_double_eq(bench_truncation_bound(&mirror, 2), 127.5);
+    ck_assert_double_eq_tol(bench_truncation_bound(&mirror, 35),
+                            255.0 / 262144.0, 1e-15);
+    bench_depth_bound unbounded = {INFINITY, 0.6, 0.36};
+    ck_assert_double_eq(bench_truncation_bound(&unbounded, 7), 255.0);
+    bench_depth_bound matte = {INFINITY, 0.0, 0.0};
+    ck_assert_double_eq(bench_truncation_bound(&matte, 0), 0.0);
+    bench_depth_bound one_mirror = {200.0, 0.8, 0.0};  /* sees matte only */
+    ck_assert_double_eq_tol(bench_truncation_bound(&one_mirror, 0), 160.0,
+                            1e-12);
+    ck_assert_double_eq(bench_truncation_bound(&one_mirror, 1), 0.0);
+    ck_assert_double_eq(bench_truncation_bound(&one_mirror, 2), 0.0);
+}
+END_TEST
+
+/* C = (k + t) C_rays + local with C_rays <= P and local <= 100: P = 100 /
+ * (1 - k - t) is the least peak with C <= P.  k + t = 0.5 -> 200; 0 (a
+ * matte facet, .scn's d = 1) -> the local term itself; 0.75 -> 400; k + t
+ * = 1 with a local term (a format that gives d on its own) -> no finite
+ * peak; no local term (d = 0: a perfect mirror or clear glass) -> 0, the
+ * facet adds nothing of its own. */
+START_TEST(peak_needed_by_a_facet)
+{
+    ck_assert_double_eq_tol(bench_peak_needed(100.0, 0.5), 200.0, 1e-12);
+    ck_assert_double_eq(bench_peak_needed(100.0, 0.0), 100.0);
+    ck_assert_double_eq_tol(bench_peak_needed(100.0, 0.75), 400.0, 1e-12);
+    ck_assert(isinf(bench_peak_needed(100.0, 1.0)));
+    ck_assert_double_eq(bench_peak_needed(0.0, 1.0), 0.0);
+    ck_assert_double_eq(bench_peak_needed(0.0, 0.3), 0.0);
+}
+END_TEST
+
 static Suite *metrics_suite(void)
 {
     Suite *suite = suite_create("metrics");
@@ -149,6 +207,9 @@ static Suite *metrics_suite(void)
     tcase_add_test(tc, padding_is_ignored_and_order_does_not_matter);
     tcase_add_test(tc, summary_gives_median_and_spread);
     tcase_add_test(tc, pareto_front_keeps_only_points_nothing_beats);
+    tcase_add_test(tc, truncation_bound_of_the_cube_scene);
+    tcase_add_test(tc, truncation_bound_caps_and_zero_weights);
+    tcase_add_test(tc, peak_needed_by_a_facet);
     suite_add_tcase(suite, tc);
     return suite;
 }

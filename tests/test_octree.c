@@ -53,6 +53,10 @@ static void check_scene(const rt_scene *scene, const char *name)
 {
     for (int p = 0; p < 2; p++) {
         rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
+        /* a scene float cannot resolve is refused alike with or without
+         * the octree (rt_scene_check_precision) */
+        if (rt_scene_check_precision(scene, precision, NULL) != RT_OK)
+            continue;
         for (int samples = 1; samples <= 4; samples += 3) {
             rt_render_stats s_ref, s_oct;
             rt_image ref = render(scene, precision, RT_ACCEL_NONE, 1, samples,

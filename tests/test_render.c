@@ -1,7 +1,8 @@
 /*
  * test_render.c - whole renders: every scene of scenes/ against its expected
  * image in tests/expected/ (made by the independent Python renderer of
- * tests/reference/), exactly; the same image whatever the thread count, the
+ * tests/reference/), exactly, and at N samples a pixel where
+ * tests/expected/<scene>-s<N>.ppm exists; the same image whatever the thread count, the
  * kernel or the split into bands; progress callbacks and cancellation;
  * argument checks; and the handout's seed scenes of ../shared when present.
  * A mismatching image is written as <scene>.actual.ppm in the test's
@@ -66,15 +67,22 @@ static rt_image render_with(const rt_scene *scene, rt_render_options *options)
     return image;
 }
 
-START_TEST(project_scenes_render_exactly_their_expected_images)
+/* Renders scenes/<name>.scn with `samples` rays per pixel and compares it
+ * with tests/expected/<expected_name>.ppm, exactly; on a mismatch says
+ * where and writes the actual image beside the test. */
+static void check_expected_image(const char *name, int samples,
+                                 const char *expected_name)
 {
-    const char *name = scene_names[_i];
     char relative[256];
     snprintf(relative, sizeof relative, "scenes/%s.scn", name);
     rt_scene *scene = load_scene(rt_test_source_path(relative));
-    rt_image actual = render_with(scene, NULL);
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.samples = samples;
+    rt_image actual = render_with(scene, &options);
 
-    snprintf(relative, sizeof relative, "tests/expected/%s.ppm", name);
+    snprintf(relative, sizeof relative, "tests/expected/%s.ppm",
+             expected_name);
     rt_image expected;
     rt_error error;
     rt_status status = rt_ppm_load(rt_test_source_path(relative), &expected,
@@ -111,18 +119,61 @@ START_TEST(project_scenes_render_exactly_their_expected_images)
                 }
             }
         char out[300];
-        snprintf(out, sizeof out, "%s.actual.ppm", name);
+        snprintf(out, sizeof out, "%s.actual.ppm", expected_name);
         rt_status saved = rt_ppm_save(out, &actual, RT_PPM_P6, &error);
         ck_abort_msg("%s: %ld of %d pixels differ from tests/expected/%s.ppm, "
                      "max channel difference %d, in x %d..%d y %d..%d; "
                      "actual vs expected:%s actual image %s %s",
-                     name, differing, actual.width * actual.height, name,
-                     worst, x0, x1, y0, y1, where,
+                     name, differing, actual.width * actual.height,
+                     expected_name, worst, x0, x1, y0, y1, where,
                      saved == RT_OK ? "written to" : "NOT written to", out);
     }
     rt_image_destroy(&expected);
     rt_image_destroy(&actual);
     rt_scene_free(scene);
+}
+
+START_TEST(project_scenes_render_exactly_their_expected_images)
+{
+    check_expected_image(scene_names[_i], 1, scene_names[_i]);
+}
+END_TEST
+
+/* tests/expected/<name>-s<N>.ppm: scenes/<name>.scn at N samples a pixel
+ * (depth of field needs several). */
+static char sampled_names[MAX_SCENES][128];
+static int sampled_samples[MAX_SCENES];
+static int sampled_count;
+
+static void find_sampled_images(void)
+{
+    DIR *dir = opendir(rt_test_source_path("tests/expected"));
+    if (!dir)
+        return;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL && sampled_count < MAX_SCENES) {
+        char name[128];
+        int samples, end = 0;
+        const char *dash = strrchr(entry->d_name, '-');
+        if (dash == NULL || dash - entry->d_name >= (long)sizeof name ||
+            sscanf(dash, "-s%d.ppm%n", &samples, &end) != 1 ||
+            dash[end] != '\0' || samples < 1)
+            continue;
+        memcpy(name, entry->d_name, (size_t)(dash - entry->d_name));
+        name[dash - entry->d_name] = '\0';
+        snprintf(sampled_names[sampled_count], sizeof sampled_names[0], "%s",
+                 name);
+        sampled_samples[sampled_count++] = samples;
+    }
+    closedir(dir);
+}
+
+START_TEST(sampled_images_render_exactly)
+{
+    char expected[160];
+    snprintf(expected, sizeof expected, "%s-s%d", sampled_names[_i],
+             sampled_samples[_i]);
+    check_expected_image(sampled_names[_i], sampled_samples[_i], expected);
 }
 END_TEST
 
@@ -466,12 +517,16 @@ Suite *render_suite(void)
 {
     Suite *suite = suite_create("render");
     find_scenes();
+    find_sampled_images();
     TCase *regression = tcase_create("regression");
-    tcase_set_timeout(regression, 60);
+    tcase_set_timeout(regression, 120);
     if (scene_count > 0)
         tcase_add_loop_test(regression,
                             project_scenes_render_exactly_their_expected_images,
                             0, scene_count);
+    if (sampled_count > 0)
+        tcase_add_loop_test(regression, sampled_images_render_exactly, 0,
+                            sampled_count);
     else
         tcase_add_test(regression, project_scenes_are_present);
     suite_add_tcase(suite, regression);

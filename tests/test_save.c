@@ -68,7 +68,8 @@ typedef struct path_t {
 static path_t at(const char *dir, const char *name)
 {
     path_t p;
-    snprintf(p.s, sizeof p.s, "%s/%s", dir, name);
+    int n = snprintf(p.s, sizeof p.s, "%s/%s", dir, name);
+    ck_assert(n > 0 && (size_t)n < sizeof p.s);
     return p;
 }
 

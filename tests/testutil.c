@@ -44,18 +44,24 @@ rt_scene *rt_test_scene_from_string(const char *text)
     return scene;
 }
 
-rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads)
+rt_image rt_test_render_with(const rt_scene *scene,
+                             const rt_render_options *options)
 {
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     rt_image image;
     ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    ck_assert_int_eq(rt_render(scene, options, &image), RT_OK);
+    return image;
+}
+
+rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads)
+{
     rt_render_options options;
     rt_render_options_init(&options);
     options.max_depth = max_depth;
     options.threads = threads;
-    ck_assert_int_eq(rt_render(scene, &options, &image), RT_OK);
-    return image;
+    return rt_test_render_with(scene, &options);
 }
 
 long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff)

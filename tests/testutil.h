@@ -26,6 +26,11 @@ const char *rt_test_shared_path(const char *relative);
  * message if it does not load. */
 rt_scene *rt_test_scene_from_string(const char *text);
 
+/* Renders `scene` with `options` into a new image; fails the test if the
+ * render does not succeed. */
+rt_image rt_test_render_with(const rt_scene *scene,
+                             const rt_render_options *options);
+
 /* Renders `scene` with the given depth and thread count into a new image. */
 rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads);
 

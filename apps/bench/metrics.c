@@ -80,6 +80,21 @@ int bench_pareto_front(const double *x, const double *y, int count,
     return front;
 }
 
+double bench_peak_needed(double local, double carried)
+{
+    if (!(local > 0.0))
+        return 0.0;
+    return carried < 1.0 ? local / (1.0 - carried) : INFINITY;
+}
+
+double bench_truncation_bound(const bench_depth_bound *bound, int depth)
+{
+    int hits = depth + 1;
+    double weight = pow(bound->pair, hits / 2) *
+                    (hits % 2 ? bound->k_max : 1.0);
+    return weight == 0.0 ? 0.0 : fmin(bound->peak * weight, 255.0);
+}
+
 unsigned long long bench_image_hash(const rt_image *image)
 {
     unsigned long long h = 14695981039346656037ull;

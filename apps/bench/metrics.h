@@ -55,6 +55,30 @@ void bench_summarize(double *values, int count, double *median,
 int bench_pareto_front(const double *x, const double *y, int count,
                        int *on_front);
 
+/*
+ * The truncation bound of the reflection depth (docs/accuracy.md): every
+ * colour a ray carries is at most `peak`; a hit passes on k + t of what its
+ * reflected and refracted rays carry; two hits in a row are never on the
+ * same plane, so the rays n hits deep weigh at most
+ * pair^(n/2) k_max^(n%2).
+ */
+typedef struct bench_depth_bound {
+    double peak;        /* largest colour any ray can carry (may be inf) */
+    double k_max;       /* largest k + t of a facet that can be hit */
+    double pair;        /* largest (k+t)_i (k+t)_j, facets not coplanar */
+} bench_depth_bound;
+
+/* The peak a facet needs so that its colour, (k + t) times what its rays
+ * carry plus a local term of at most `local`, stays within the peak:
+ * local / (1 - carried), with carried = k + t; 0 when local is 0, INFINITY
+ * when carried >= 1 and local > 0 (no finite peak). */
+double bench_peak_needed(double local, double carried);
+
+/* B(depth) = peak * pair^((depth+1)/2) * k_max^((depth+1)%2) levels,
+ * capped at 255 (the format's range); exactly 0 when the weight is 0, even
+ * for an infinite peak. */
+double bench_truncation_bound(const bench_depth_bound *bound, int depth);
+
 /* A 64-bit FNV-1a hash of the pixels (not the padding), to check that
  * repeated renders gave the same image without keeping every one. */
 unsigned long long bench_image_hash(const rt_image *image);

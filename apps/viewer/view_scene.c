@@ -137,11 +137,18 @@ rt_status view_scene_rescale(const rt_scene *scene, const char *name,
 rt_status view_scene_load(const char *path, double scale, rt_scene **scene,
                           rt_error *error)
 {
+    return view_scene_load_with(path, scale, NULL, scene, error);
+}
+
+rt_status view_scene_load_with(const char *path, double scale,
+                               const rt_load_options *options,
+                               rt_scene **scene, rt_error *error)
+{
     *scene = NULL;
     if (!(scale >= VIEW_MIN_SCALE && scale <= VIEW_MAX_SCALE))
         return fail(error, RT_ERR_ARGUMENT, path, "scale out of range");
     rt_scene *loaded = NULL;
-    rt_status status = rt_scene_load(path, &loaded, error);
+    rt_status status = rt_scene_load_with(path, options, &loaded, error);
     if (status != RT_OK || scale == 1.0) {
         *scene = loaded;
         return status;

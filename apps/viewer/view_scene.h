@@ -28,6 +28,12 @@
 rt_status view_scene_load(const char *path, double scale, rt_scene **scene,
                           rt_error *error);
 
+/* The same with the loader's options (format, tessellation, view, lights;
+ * NULL: the defaults). */
+rt_status view_scene_load_with(const char *path, double scale,
+                               const rt_load_options *options,
+                               rt_scene **scene, rt_error *error);
+
 /* The same scene at `scale` times its size, as a new scene. */
 rt_status view_scene_rescale(const rt_scene *scene, const char *name,
                              double scale, rt_scene **scaled,

@@ -174,13 +174,31 @@ void rt_render_options_init(rt_render_options *options);
  * Renders the whole image into `image`, which must be width x height of the
  * scene (see rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image
  * size, negative depth, samples not a square in 1..1024), RT_ERR_RANGE (a
- * float render of a scene with coordinates beyond float's range), RT_ERR_NOMEM
+ * float render of a scene float cannot hold or resolve: see
+ * rt_scene_check_precision), RT_ERR_NOMEM
  * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the
  * others hold whatever they held before).  Thread-safe as long as no two calls write the
  * same rows of the same image.
  */
 rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
                     rt_image *image);
+
+/* A float render refuses a scene whose vertices and camera points reach
+ * more than this many times the extent of its vertices (the largest side
+ * of their bounding box): float's 24 bits then leave steps coarser than
+ * 1/2^12 of the scene - a tenth of a pixel in a 400-pixel image of it
+ * (docs/accuracy.md, "Float's rule"). */
+#define RT_FLOAT_SPREAD_MAX 4096.0
+
+/*
+ * RT_OK when a render in `precision` can hold and resolve `scene`; else
+ * RT_ERR_RANGE with the reason in *error (may be NULL): in float, a
+ * coordinate beyond FLT_MAX (lights included), or vertices and camera
+ * points reaching beyond RT_FLOAT_SPREAD_MAX times the vertices' extent.
+ * Double holds every scene the loader accepts.  Thread-safe.
+ */
+rt_status rt_scene_check_precision(const rt_scene *scene,
+                                   rt_precision precision, rt_error *error);
 
 /*
  * Renders rows [row_begin, row_end) of the scene's image into the same rows

@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 
+#include "raytrace/image.h"
 #include "raytrace/status.h"
 #include "raytrace/vec3.h"
 
@@ -145,9 +146,84 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
 rt_status rt_scene_parse(const char *text, size_t length, const char *name,
                          rt_scene **scene, rt_error *error);
 
-/* Reads the file at `path` and parses it; messages name `path`.
- * Thread-safe. */
+/* Reads the file at `path` and parses it in the format its extension
+ * names (see rt_scene_format_from_path; .scn when it names none);
+ * messages name `path`.  Thread-safe. */
 rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error);
+
+/* The scene file formats the loader reads. */
+typedef enum rt_scene_format {
+    RT_SCENE_FORMAT_AUTO = 0,   /* from the name's extension */
+    RT_SCENE_FORMAT_SCN = 1,    /* the course's .scn (docs/scene-format.md) */
+    RT_SCENE_FORMAT_NFF = 2,    /* Eric Haines' Neutral File Format (.nff) */
+    RT_SCENE_FORMAT_OBJ = 3     /* Wavefront OBJ (.obj) with its .mtl */
+} rt_scene_format;
+
+/* Largest input a loader reads, in bytes (1 GiB): line and column numbers
+ * stay far from int's range, and a stream with no end (/dev/zero) is
+ * refused instead of filling the memory. */
+#define RT_MAX_SCENE_BYTES ((size_t)1 << 30)
+
+/* Largest magnitude of a vertex, observer or screen coordinate: the
+ * intersection test multiplies differences of coordinates, which overflow
+ * from about 6.7e153 (the square root of DBL_MAX over 2); this leaves a
+ * factor of 60 for its error bounds.  Lights may be farther: a light's
+ * position only gives a direction and the end of a shadow ray. */
+#define RT_MAX_COORDINATE 1e152
+
+/* How to read a scene, for the formats that leave room. */
+typedef struct rt_load_options {
+    rt_scene_format format;     /* default RT_SCENE_FORMAT_AUTO */
+    double tessellation;        /* NFF spheres, cylinders and cones: the
+                                   largest distance between the surface and
+                                   its facets, relative to the radius, in
+                                   (0, 1); 0: the default (docs/formats.md) */
+    int width, height;          /* the image size for formats that give none
+                                   (OBJ); 0: the default */
+    /* A view that overrides or completes the file's camera, each part on
+     * its own (the others keep the file's values): */
+    int look_from_given, look_at_given, up_given, fov_given;
+    rt_vec3 look_from;          /* the observer O */
+    rt_vec3 look_at;            /* the screen centre A lies on O -> look_at,
+                                   at its distance (the default focus) */
+    rt_vec3 up;                 /* up in the image (need not be unit) */
+    double fov;                 /* horizontal field of view in degrees,
+                                   in (0, 180) */
+    const rt_light *lights;     /* when light_count > 0: the lights, in place
+                                   of the file's (copied) */
+    int light_count;
+} rt_load_options;
+
+/* Sets the defaults above.  Thread-safe. */
+void rt_load_options_init(rt_load_options *options);
+
+/* The format a path's extension names, case-insensitively (.scn, .nff,
+ * .obj); RT_ERR_FORMAT for another or none (*format untouched).
+ * Thread-safe. */
+rt_status rt_scene_format_from_path(const char *path,
+                                    rt_scene_format *format);
+
+/* The lower-case name of a format ("scn", "nff", "obj"; "auto").
+ * Thread-safe. */
+const char *rt_scene_format_name(rt_scene_format format);
+
+/*
+ * Parses a scene in any format from memory, as rt_scene_parse does for
+ * .scn.  `name` names the input in messages and, for OBJ, locates the
+ * material libraries it asks for (relative to the folder of `name`); with
+ * RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension (.scn when
+ * it has none).  `options` may be NULL (the defaults).  Thread-safe.
+ */
+rt_status rt_scene_parse_with(const char *text, size_t length,
+                              const char *name,
+                              const rt_load_options *options,
+                              rt_scene **scene, rt_error *error);
+
+/* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
+ * the first NUL byte, which no scene file holds) and parses it with
+ * rt_scene_parse_with.  Thread-safe. */
+rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
+                             rt_scene **scene, rt_error *error);
 
 /* Frees a scene.  rt_scene_free(NULL) does nothing.  Not thread-safe on the
  * same scene (no other call may be using it). */
@@ -198,6 +274,33 @@ int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
  */
 int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
                       int skip_facet);
+
+/* What a handout .scn file cannot hold (rt_scene_write_scn's *dropped,
+ * bits): lights beyond the first, transparency and refractive indices, a
+ * lens, diffuse weights other than 1 - k - t (as NFF's Kd). */
+#define RT_SCN_DROPPED_LIGHTS 1u
+#define RT_SCN_DROPPED_TRANSPARENCY 2u
+#define RT_SCN_DROPPED_LENS 4u
+#define RT_SCN_DROPPED_DIFFUSE 8u
+
+/*
+ * Writes `scene` as a .scn file to the sink: the handout's records only,
+ * or with `extended` also the optional lens, transparency and further-light
+ * records (docs/scene-format.md).  Numbers are written with 17 significant
+ * digits, so reading the file back gives the same doubles and the same
+ * picture.  *dropped (may be NULL) receives the RT_SCN_DROPPED_ bits of
+ * what the file could not hold.  Returns RT_OK, RT_ERR_IO (the sink
+ * refused) or RT_ERR_ARGUMENT.  Thread-safe.
+ */
+rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
+                             rt_write_func write, void *context,
+                             unsigned *dropped, rt_error *error);
+
+/* The same saved at `path` by the rule of raytrace/image.h (atomic
+ * replacement, streams written directly).  Thread-safe on distinct
+ * paths. */
+rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
+                            int extended, unsigned *dropped, rt_error *error);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 /*
- * save.c - the one routine that writes an image file at a path, for every
- * format (rt_image_save, rt_image_save_check).
+ * save.c - the one routine that writes a file at a path, for every image
+ * format and the scene writer (rt__save; rt_image_save,
+ * rt_image_save_check).
  *
  * The rule is stated in raytrace/image.h: what the path names decides how it
  * is written.  Regular files (and names not taken yet) are replaced
@@ -357,11 +358,13 @@ static void keep_attributes(int fd, const struct stat *old)
     (void)fchmod(fd, old->st_mode & 07777);
 }
 
-/* Encodes into `s`, flushing the tail; the status says why it stopped. */
-static rt_status encode(fd_sink *s, const rt_image *image,
-                        rt_image_format format, rt_error *error)
+/* Produces the bytes into `s`, flushing the tail; the status says why it
+ * stopped. */
+static rt_status encode(fd_sink *s, const rt_producer *producer,
+                        rt_error *error)
 {
-    rt_status status = rt_image_write_to(sink_write, s, image, format, error);
+    rt_status status = producer->produce(sink_write, s, producer->what,
+                                         error);
     if (status == RT_OK && s->used > 0 && !sink_flush(s))
         status = RT_ERR_IO;
     return status;
@@ -433,8 +436,7 @@ static void sync_folder(const char *target)
 /* Nothing there or a regular file: through a temporary file. */
 static rt_status save_through_temporary(const char *path,
                                         const destination *d,
-                                        const rt_image *image,
-                                        rt_image_format format,
+                                        const rt_producer *producer,
                                         rt_error *error)
 {
     fd_sink *s = malloc(sizeof *s);
@@ -462,7 +464,7 @@ static rt_status save_through_temporary(const char *path,
     *s = (fd_sink){.fd = fd, .watch_signals = 1};
     if (d->kind == KIND_REGULAR)
         keep_attributes(fd, &d->st);
-    status = encode(s, image, format, error);
+    status = encode(s, producer, error);
     if (status == RT_OK && fsync(fd) != 0)
         status = RT_ERR_IO, s->error = errno;
     if (status == RT_OK && (s->interrupted = pending_termination()) != 0)
@@ -511,8 +513,7 @@ static int connect_socket(const char *path)
 
 /* A device, FIFO, socket or open descriptor: written as a stream. */
 static rt_status save_to_stream(const char *path, const destination *d,
-                                const rt_image *image, rt_image_format format,
-                                rt_error *error)
+                                const rt_producer *producer, rt_error *error)
 {
     /* A regular file behind /proc/.../fd/N is rewritten from its start. */
     int truncate = d->kind == KIND_STREAM && S_ISREG(d->st.st_mode);
@@ -529,7 +530,7 @@ static rt_status save_to_stream(const char *path, const destination *d,
                              "out of memory");
     }
     *s = (fd_sink){.fd = fd};
-    rt_status status = encode(s, image, format, error);
+    rt_status status = encode(s, producer, error);
     if (close(fd) != 0 && status == RT_OK)
         status = RT_ERR_IO, s->error = errno;
     if (status != RT_OK)
@@ -544,6 +545,35 @@ static int valid_image(const rt_image *image)
            image->height > 0 && image->stride >= (size_t)image->width * 3;
 }
 
+rt_status rt__save(const char *path, const rt_producer *producer,
+                   rt_error *error)
+{
+    if (path == NULL || path[0] == '\0' || producer == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected a path");
+    destination d;
+    rt_status status = resolve(path, &d, error);
+    if (status == RT_OK)
+        status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
+                     ? save_to_stream(path, &d, producer, error)
+                     : save_through_temporary(path, &d, producer, error);
+    free(d.path);
+    return status;
+}
+
+/* What rt_image_save hands the save: an image and its format. */
+typedef struct image_bytes {
+    const rt_image *image;
+    rt_image_format format;
+} image_bytes;
+
+static rt_status produce_image(rt_write_func write, void *context,
+                               const void *what, rt_error *error)
+{
+    const image_bytes *b = what;
+    return rt_image_write_to(write, context, b->image, b->format, error);
+}
+
 rt_status rt_image_save(const char *path, const rt_image *image,
                         rt_image_format format, rt_error *error)
 {
@@ -552,15 +582,9 @@ rt_status rt_image_save(const char *path, const rt_image *image,
                              "expected a path and an image");
     if (!rt_image_format_supported(format))
         return rt__image_format_refusal(format, error);
-    destination d;
-    rt_status status = resolve(path, &d, error);
-    if (status == RT_OK)
-        status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
-                     ? save_to_stream(path, &d, image, format, error)
-                     : save_through_temporary(path, &d, image, format,
-                                              error);
-    free(d.path);
-    return status;
+    image_bytes bytes = {image, format};
+    rt_producer producer = {produce_image, &bytes};
+    return rt__save(path, &producer, error);
 }
 
 rt_status rt_image_save_check(const char *path, rt_error *error)

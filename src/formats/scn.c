@@ -19,7 +19,8 @@
 #include <string.h>
 
 #include "error.h"
-#include "file.h"
+#include "formats/formats.h"
+#include "formats/reader.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -302,16 +303,29 @@ static rt_status integer(parser *p, int i, long min, long max,
     return RT_OK;
 }
 
-static rt_status point(parser *p, int first, rt_vec3 *out)
+/* A point; `bounded`: a vertex or a camera point, whose coordinates must
+ * stay within RT_MAX_COORDINATE (a light's need not). */
+static rt_status point_within(parser *p, int first, int bounded,
+                              rt_vec3 *out)
 {
     double c[3];
     for (int i = 0; i < 3; i++) {
         rt_status status = number(p, first + i, &c[i]);
         if (status != RT_OK)
             return status;
+        if (bounded && fabs(c[i]) > RT_MAX_COORDINATE)
+            return fail_at(p, RT_ERR_RANGE, p->values[first + i].column,
+                           "a coordinate of magnitude at most 1e152 (the "
+                           "renderer's arithmetic overflows beyond)",
+                           &p->values[first + i]);
     }
     *out = v3(c[0], c[1], c[2]);
     return RT_OK;
+}
+
+static rt_status point(parser *p, int first, rt_vec3 *out)
+{
+    return point_within(p, first, 1, out);
 }
 
 static rt_status color(parser *p, int first, rt_rgb8 *out)
@@ -402,7 +416,8 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
             goto done;                                                       \
     } while (0)
 
-static rt_status parse(parser *p, const char *text, rt_scene **scene)
+static rt_status parse(parser *p, const char *text,
+                       const rt_load_options *options, rt_scene **scene)
 {
     rt_status status;
     rt_scene_desc d;
@@ -476,7 +491,7 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
     TRY(expect_record(p, text, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
     TRY(expect_record(p, text, 6, "the light source `x, y, z, R, G, B`"));
-    TRY(point(p, 0, &d.light_position));
+    TRY(point_within(p, 0, 0, &d.light_position));
     TRY(color(p, 3, &d.light_color));
 
     /* Further lights, one a line, to the end of the file. */
@@ -503,12 +518,13 @@ static rt_status parse(parser *p, const char *text, rt_scene **scene)
                                    what, p->value_count);
             goto done;
         }
-        TRY(point(p, 0, &light->position));
+        TRY(point_within(p, 0, 0, &light->position));
         TRY(color(p, 3, &light->color));
         d.more_light_count++;
     }
     d.more_lights = lights;
-    status = rt__scene_build(&d, p->name, facet_lines, scene, p->error);
+    status = rt__reader_finish(&d, p->name, facet_lines, NULL, options, scene,
+                               p->error);
     goto done;
 nomem:
     status = rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
@@ -521,8 +537,9 @@ done:
     return status;
 }
 
-rt_status rt_scene_parse(const char *text, size_t length, const char *name,
-                         rt_scene **scene, rt_error *error)
+rt_status rt__scn_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options, rt_scene **scene,
+                        rt_error *error)
 {
     if (scene == NULL)
         return RT_ERR_ARGUMENT;
@@ -532,6 +549,10 @@ rt_status rt_scene_parse(const char *text, size_t length, const char *name,
                              "expected scene text");
     if (text == NULL)
         text = "";
+    rt_status checked = rt__text_check(text, length, name ? name : "<memory>",
+                                       error);
+    if (checked != RT_OK)
+        return checked;
     parser p;
     memset(&p, 0, sizeof p);
     p.at = text;
@@ -546,25 +567,13 @@ rt_status rt_scene_parse(const char *text, size_t length, const char *name,
     if (p.c_locale == (locale_t)0)
         return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,
                              "cannot create the C locale");
-    rt_status status = parse(&p, text, scene);
+    rt_status status = parse(&p, text, options, scene);
     freelocale(p.c_locale);
     return status;
 }
 
-rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error)
+rt_status rt_scene_parse(const char *text, size_t length, const char *name,
+                         rt_scene **scene, rt_error *error)
 {
-    if (scene == NULL)
-        return RT_ERR_ARGUMENT;
-    *scene = NULL;
-    if (path == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "expected a path");
-    char *data;
-    size_t length;
-    rt_status status = rt__read_file(path, &data, &length, error);
-    if (status != RT_OK)
-        return status;
-    status = rt_scene_parse(data, length, path, scene, error);
-    free(data);
-    return status;
+    return rt__scn_parse(text, length, name, NULL, scene, error);
 }

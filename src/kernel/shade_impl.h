@@ -12,6 +12,14 @@
  * skipped, which is exact (a flat facet cannot be met twice).
  */
 
+/* The steps of every hit, inlined into both traces (the opaque one is the
+ * hot loop of every handout scene). */
+#if defined(__GNUC__)
+#define HOT_INLINE static inline __attribute__((always_inline))
+#else
+#define HOT_INLINE static inline
+#endif
+
 /*
  * The hit point and its rounding-error bound per component.  Normally the
  * point is the barycentric combination of the vertices (pbrt-v4's choice:
@@ -50,7 +58,7 @@ static vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
 
 /* The origin of a ray leaving `point` towards `direction`: beyond the
  * point's error bound along the normal, rounded away from the surface. */
-static vec offset_origin(vec point, vec error_bound, vec normal,
+HOT_INLINE vec offset_origin(vec point, vec error_bound, vec normal,
                          vec direction)
 {
     vec offset = scale(normal, dot(vabs(normal), error_bound));
@@ -74,7 +82,7 @@ static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
 /* Adds the direct light, weighted, to color: for each light l,
  * E_l (N.S_l) d C_S,l C_F / 255.  No shadow ray where it cannot matter:
  * d = 0 (k = 1 on a handout facet) or N.S_l <= 0. */
-static void add_direct_light(const KERNEL_T *k, const octree *tree,
+HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                              const tri *f, int index, vec point,
                              vec error_bound, vec normal, REAL weight,
                              int fast, int simd, REAL color[3],

@@ -1,42 +1,86 @@
 #!/usr/bin/env python3
 """rtref.py - an independent reference renderer for libraytrace scenes.
 
-Implements SPEC.md sections 1-4 from the text alone, in pure Python 3
-(standard library only), so that the C renderer's images can be checked
-against something that shares none of its code.  It is meant to be correct
-for the project's own, well-conditioned scenes, not robust in general.
+Implements the rendering model (sections 1-4, and the extension of section 7:
+several lights, transparency and refraction, depth of field) from the text
+alone, in pure Python 3 (standard library only), so that the C renderer's
+images can be checked against something that shares none of its code.  It
+is meant to be correct for the project's own, well-conditioned scenes, not
+robust in general.
 
 Usage:
-    python3 tests/reference/rtref.py SCENE.scn OUT.ppm [--depth N] [--p3]
+    python3 tests/reference/rtref.py SCENE.scn OUT.ppm [--depth N]
+                                     [--samples N] [--p3]
 
 Choices, where they differ on purpose from the C library:
 
 * Parsing: tokens are separated by commas and/or white space, '#' starts a
   comment, a UTF-8 BOM and CRLF are accepted; records are read in the order
-  of SPEC section 1.  Only light validation (enough for valid files): counts,
-  record lengths, indices in 1..n.
-* Camera (SPEC 2): B is replaced by its orthogonal projection on the plane
-  through A perpendicular to AO; AC = (AO x AB) |AB| / |AO x AB|; pixel
-  (i, j) is seen through P = A + (2(i+1/2)/w - 1) AB
-  + (1 - 2(j+1/2)/h) (h/w) AC, and the primary ray starts at O with the
-  unit direction of P - O (a facet between O and the screen is visible).
+  of section 1, with the extended records of section 7:
+      screen  xA,yA,zA, xB,yB,zB, w,h [, a, f]   (a = 0, f = |AO| by default)
+      facet   a,b,c, k, R,G,B [, t [, n]]        (t = 0, n = 1 by default)
+      light   x,y,z, R,G,B, then zero or more further lights, one a line,
+              until the end of the file.
+  Validation is light (enough for valid files, with line and column):
+  counts, record lengths, integral values, indices in 1..n, colours in
+  0..255, k >= 0, t >= 0, k + t <= 1, n > 0, a >= 0, f > 0.
+* Camera (section 2): B is replaced by its orthogonal projection on the
+  plane through A perpendicular to AO (AB' below); AC' = (AO x AB')|AB'| /
+  |AO x AB'|.  A point at pixel coordinates (x, y) (x from the left edge,
+  y from the top edge, in pixels) is P = A + s AB' + t AC' with
+  s = (2x - w)/w and t = (h - 2y)/w; pixel (i, j)'s centre is
+  (i + 1/2, j + 1/2).  The primary ray starts at O with the unit direction
+  of P - O (a facet between O and the screen is visible).
+* Samples and depth of field (section 7), the project's decisions:
+  --samples N (N = n*n a square, default 1) takes n x n samples per pixel.
+  Sample (sx, sy), sx the column and sy the row of the pixel's n x n
+  sub-grid, sy the outer loop and sx the inner one, looks through the
+  screen point at pixel coordinates (i + (sx+1/2)/n, j + (sy+1/2)/n).
+  With aperture a = 0 its ray is O -> P (no lens arithmetic at all).
+  With a > 0 the lens point uses the TRANSPOSED stratum:
+      (xl, yl) = ((sy+1/2)/n, (sx+1/2)/n),  p = 2 xl - 1,  q = 2 yl - 1,
+  mapped to the unit disk by Shirley and Chiu's concentric mapping:
+      p = q = 0      -> (u, v) = (0, 0)
+      |p| > |q|      -> r = p, phi = (pi/4)(q/p)
+      otherwise      -> r = q, phi = pi/2 - (pi/4)(p/q)
+      (u, v) = (r cos phi, r sin phi);
+  L = O + a (u AB'/|AB'| + v AC'/|AC'|), w^ = (A - O)/|A - O|,
+  F = O + (P - O) f / ((P - O).w^), and the ray starts at L with the unit
+  direction of F - L.  The pixel is the mean of its samples: their sum in
+  that loop order, times 1/(n n), then clamped and rounded once.  With
+  --samples 1 the single sample is the pixel centre and the lens centre.
 * Intersection: Moller-Trumbore in double, two-sided (no culling), the
   triangle's border counts as inside (u >= 0, v >= 0, u + v <= 1).  The C
   code uses Woop et al.'s watertight test instead.  A facet whose edge cross
   product is zero (collinear vertices) is dropped at load time: never hit.
-* Secondary rays (shadow and reflection) start exactly at the hit point,
-  ignore the facet they leave, and only accept hits with t > EPS_REL * scale,
-  where scale is the largest absolute coordinate in the scene (vertices, O,
-  A, B, light) and EPS_REL = 1e-9.  (The C code instead offsets the origin
-  along the normal by a bound relative to the coordinates' magnitude.)
-  A shadow ray is blocked by a hit with EPS < t < d (1 - 1e-9), d the
-  distance to the light: "strictly between".
-* Shading (SPEC 3), per channel:
-      C = k C_R + E (1 - k) (N.S) C_S C_F / 255
-  N faces the incoming ray, E = 1 when N.S > 0 and the shadow ray is free.
-  C_R is traced only when k > 0 (k C_R = 0 otherwise).  Reflection level:
-  the primary ray is level 0; a hit on a ray of level L traces its
-  reflection only if L < depth, otherwise C_R = 0 (black).
+* Secondary rays (shadow, reflection, refraction) start exactly at the hit
+  point, ignore the facet they leave, and only accept hits with
+  t > EPS_REL * scale, where scale is the largest absolute coordinate in
+  the scene (vertices, O, A, B, every light) and EPS_REL = 1e-9.  (The C
+  code instead offsets the origin along the normal by a bound relative to
+  the coordinates' magnitude.)  A shadow ray is blocked by a hit on any
+  facet, transparent or not, with EPS < t < d (1 - 1e-9), d the distance
+  to the light: "strictly between" (shadows stay hard).
+* Shading (sections 3 and 7), per channel, d = 1 - k - t:
+      C = k C_R + t C_T + d sum_l E_l (N.S_l) C_S,l C_F / 255
+  N faces the incoming ray, E_l = 1 when N.S_l > 0 and the shadow ray to
+  light l is free.  Evaluation order: the light terms first, light by
+  light in file order, each (d (N.S_l) / 255) C_S,l C_F, then + k C_R,
+  then + t C_T (with t = 0 and one light this is exactly the handout
+  renderer's arithmetic).  The direct term is skipped when d <= 0 (d is
+  computed in double, so k + t = 1 may leave a d of about 1e-17 either
+  side of 0).  C_R is traced only when k > 0 and C_T only when t > 0 (a
+  term with zero weight is not traced).
+* Refraction (section 7): n_w the unit winding normal (b-a) x (c-a); with
+  I the unit incoming direction, I.n_w < 0 enters (eta = 1/n, N_t = n_w),
+  otherwise the ray leaves (eta = n, N_t = -n_w); c = -I.N_t,
+  q = 1 - eta^2 (1 - c^2).  q < 0: total internal reflection, C_T is the
+  colour of the mirror ray R = I - 2 (I.N) N (the same ray as C_R, traced
+  once when both are needed); otherwise C_T is the colour of the ray of
+  unit direction T = eta I + (eta c - sqrt(q)) N_t.
+* Depth: the primary ray is level 0; every reflected or refracted ray is
+  one level more.  A hit on a ray of level L traces its reflected and
+  refracted rays only if L < depth, otherwise C_R = C_T = 0 (black).
 * Colours are Python floats through the recursion; each channel is clamped
   to [0, 255] and rounded half away from zero (floor(x + 0.5)) once.
 * Output: PPM P6 (default) or P3 (--p3, lines of at most 70 characters),
@@ -86,22 +130,51 @@ class SceneError(Exception):
     pass
 
 
+TOKEN = re.compile(r'[^,\s]+')
+
+
 def read_records(text):
-    """Yields (line_number, [float, ...]) for every non-empty line."""
+    """Yields (line_number, [float, ...], [column, ...]) for every non-empty
+    line (columns 1-based, in characters, the BOM not counted)."""
     if text.startswith('\ufeff'):
         text = text[1:]
     for number, line in enumerate(text.splitlines(), 1):
         line = line.split('#', 1)[0]
-        tokens = [t for t in re.split(r'[,\s]+', line) if t]
-        if tokens:
-            yield number, [float(t) for t in tokens]
+        values, columns = [], []
+        for m in TOKEN.finditer(line):
+            try:
+                values.append(float(m.group()))
+            except ValueError:
+                raise SceneError('line %d, column %d: expected a number, '
+                                 'found %r' % (number, m.start() + 1,
+                                               m.group()))
+            columns.append(m.start() + 1)
+        if values:
+            yield number, values, columns
 
 
-def integral(x, what, line):
+def integral(x, what, line, column=None):
     if x != math.floor(x):
-        raise SceneError('line %d: %s must be integral, found %r'
-                         % (line, what, x))
+        raise SceneError('%s: %s must be integral, found %r'
+                         % (where(line, column), what, x))
     return int(x)
+
+
+def where(line, column=None):
+    if column is None:
+        return 'line %d' % line
+    return 'line %d, column %d' % (line, column)
+
+
+def colour_of(values, columns, line):
+    out = []
+    for v, col in zip(values, columns):
+        c = integral(v, 'a colour component', line, col)
+        if not 0 <= c <= 255:
+            raise SceneError('%s: colour component %d not in 0..255'
+                             % (where(line, col), c))
+        out.append(float(c))
+    return tuple(out)
 
 
 class Scene:
@@ -111,78 +184,117 @@ class Scene:
 def parse_scene(text):
     records = read_records(text)
 
-    def take(count, what):
+    def take(counts, what):
         try:
-            line, values = next(records)
+            line, values, columns = next(records)
         except StopIteration:
             raise SceneError('unexpected end of file: expected ' + what)
-        if len(values) != count:
-            raise SceneError('line %d: expected %d values for %s, found %d'
-                             % (line, count, what, len(values)))
-        for v in values:
+        if len(values) not in counts:
+            raise SceneError('line %d: expected %s values for %s, found %d'
+                             % (line, ' or '.join(str(c) for c in counts),
+                                what, len(values)))
+        for v, col in zip(values, columns):
             if not math.isfinite(v):
-                raise SceneError('line %d: non-finite number' % line)
-        return line, values
+                raise SceneError('%s: non-finite number' % where(line, col))
+        return line, values, columns
 
     s = Scene()
-    _, s.obs = take(3, 'the observer')
-    _, screen = take(8, 'the screen')
+    _, obs, _ = take((3,), 'the observer')
+    s.obs = tuple(obs)
+    line, screen, cols = take((8, 10), 'the screen')
     s.a, s.b = tuple(screen[0:3]), tuple(screen[3:6])
-    line, _ = 0, None
-    s.width = integral(screen[6], 'w', 0)
-    s.height = integral(screen[7], 'h', 0)
-    line, (n,) = take(1, 'the vertex count')
-    n = integral(n, 'n', line)
-    s.vertices = [tuple(take(3, 'a vertex')[1]) for _ in range(n)]
-    line, (m,) = take(1, 'the facet count')
-    m = integral(m, 'm', line)
+    s.width = integral(screen[6], 'w', line, cols[6])
+    s.height = integral(screen[7], 'h', line, cols[7])
+    for v, col in ((s.width, cols[6]), (s.height, cols[7])):
+        if not 1 <= v <= 16384:
+            raise SceneError('%s: w and h must be in 1..16384, found %d'
+                             % (where(line, col), v))
+    if len(screen) == 10:
+        s.aperture, s.focus = screen[8], screen[9]
+        if not s.aperture >= 0.0:
+            raise SceneError('%s: the aperture a must be >= 0, found %r'
+                             % (where(line, cols[8]), s.aperture))
+        if not s.focus > 0.0:
+            raise SceneError('%s: the focal distance f must be > 0, found %r'
+                             % (where(line, cols[9]), s.focus))
+    else:
+        s.aperture, s.focus = 0.0, norm(sub(s.obs, s.a))
+    line, (n,), cols = take((1,), 'the vertex count')
+    n = integral(n, 'n', line, cols[0])
+    s.vertices = [tuple(take((3,), 'a vertex')[1]) for _ in range(n)]
+    line, (m,), cols = take((1,), 'the facet count')
+    m = integral(m, 'm', line, cols[0])
     s.facets = []
     for _ in range(m):
-        line, v = take(7, 'a facet')
-        idx = [integral(x, 'index', line) for x in v[0:3]]
-        for i in idx:
+        line, v, cols = take((7, 8, 9), 'a facet')
+        idx = [integral(x, 'index', line, col)
+               for x, col in zip(v[0:3], cols[0:3])]
+        for i, col in zip(idx, cols):
             if not 1 <= i <= n:
-                raise SceneError('line %d: index %d not in 1..%d'
-                                 % (line, i, n))
+                raise SceneError('%s: index %d not in 1..%d'
+                                 % (where(line, col), i, n))
         k = v[3]
-        if not 0.0 <= k <= 1.0:
-            raise SceneError('line %d: k not in [0, 1]' % line)
-        colour = tuple(float(integral(c, 'colour', line)) for c in v[4:7])
-        s.facets.append((tuple(s.vertices[i - 1] for i in idx), k, colour))
-    _, bg = take(3, 'the background colour')
-    s.background = tuple(bg)
-    _, light = take(6, 'the light source')
-    s.light, s.light_colour = tuple(light[0:3]), tuple(light[3:6])
-    extra = next(records, None)
-    if extra is not None:
-        raise SceneError('line %d: unexpected data after the light source'
-                         % extra[0])
+        if not k >= 0.0:
+            raise SceneError('%s: k must be >= 0, found %r'
+                             % (where(line, cols[3]), k))
+        colour = colour_of(v[4:7], cols[4:7], line)
+        t = v[7] if len(v) >= 8 else 0.0
+        ior = v[8] if len(v) >= 9 else 1.0
+        if not t >= 0.0:
+            raise SceneError('%s: t must be >= 0, found %r'
+                             % (where(line, cols[7]), t))
+        if not k + t <= 1.0:
+            raise SceneError('%s: k + t must be <= 1, found %r + %r'
+                             % (where(line, cols[7] if len(v) >= 8
+                                      else cols[3]), k, t))
+        if not ior > 0.0:
+            raise SceneError('%s: the refractive index n must be > 0, '
+                             'found %r' % (where(line, cols[8]), ior))
+        s.facets.append((tuple(s.vertices[i - 1] for i in idx), k, colour,
+                         t, ior))
+    line, bg, cols = take((3,), 'the background colour')
+    s.background = colour_of(bg, cols, line)
+    line, light, cols = take((6,), 'the light source `x, y, z, R, G, B`')
+    s.lights = [(tuple(light[0:3]), colour_of(light[3:6], cols[3:6], line))]
+    while True:
+        try:
+            line, light, cols = take((6,), 'a light')
+        except SceneError as e:
+            if str(e).startswith('unexpected end of file'):
+                break
+            raise SceneError('%s (after the light source only further '
+                             'lights `x, y, z, R, G, B` may follow)' % e)
+        s.lights.append((tuple(light[0:3]),
+                         colour_of(light[3:6], cols[3:6], line)))
     return s
 
 
 # ---------------------------------------------------------------- geometry
 class Facet:
-    __slots__ = ('p0', 'e1', 'e2', 'normal', 'k', 'colour')
+    __slots__ = ('p0', 'e1', 'e2', 'normal', 'k', 'colour', 't', 'ior', 'd')
 
-    def __init__(self, vertices, k, colour):
+    def __init__(self, vertices, k, colour, t, ior):
         a, b, c = vertices
         self.p0 = a
         self.e1 = sub(b, a)
         self.e2 = sub(c, a)
-        self.normal = unit(cross(self.e1, self.e2))
+        self.normal = unit(cross(self.e1, self.e2))   # the winding normal
         self.k = k
         self.colour = colour
+        self.t = t
+        self.ior = ior
+        self.d = 1.0 - k - t
 
 
 def make_facets(scene):
     facets = []
-    for vertices, k, colour in scene.facets:
+    for vertices, k, colour, t, ior in scene.facets:
         a, b, c = vertices
         e1, e2 = sub(b, a), sub(c, a)
         if norm(cross(e1, e2)) <= 1e-14 * norm(e1) * norm(e2):
             sys.stderr.write('rtref: warning: degenerate facet ignored\n')
             continue
-        facets.append(Facet(vertices, k, colour))
+        facets.append(Facet(vertices, k, colour, t, ior))
     return facets
 
 
@@ -205,16 +317,43 @@ def intersect(facet, origin, direction):
     return dot(e2, q) * inv
 
 
+def refract(direction, winding_normal, ior):
+    """Section 7: the unit refracted direction, or None for total internal
+    reflection.  direction is the unit incoming direction I."""
+    if dot(direction, winding_normal) < 0.0:
+        eta, nt = 1.0 / ior, winding_normal          # entering
+    else:
+        eta, nt = ior, mul(winding_normal, -1.0)     # leaving
+    c = -dot(direction, nt)
+    q = 1.0 - eta * eta * (1.0 - c * c)
+    if q < 0.0:
+        return None
+    return unit(add(mul(direction, eta), mul(nt, eta * c - math.sqrt(q))))
+
+
+def concentric_disk(p, q):
+    """Shirley and Chiu's concentric map of (p, q) in [-1, 1]^2 to the
+    unit disk."""
+    if p == 0.0 and q == 0.0:
+        return 0.0, 0.0
+    if abs(p) > abs(q):
+        r, phi = p, (math.pi / 4.0) * (q / p)
+    else:
+        r, phi = q, math.pi / 2.0 - (math.pi / 4.0) * (p / q)
+    return r * math.cos(phi), r * math.sin(phi)
+
+
 class Renderer:
-    def __init__(self, scene, depth):
+    def __init__(self, scene, depth, samples=1):
         self.scene = scene
         self.depth = depth
+        self.samples = samples
         self.facets = make_facets(scene)
-        points = [scene.obs, scene.a, scene.b, scene.light] + scene.vertices
+        points = [scene.obs, scene.a, scene.b] + \
+            [p for p, _ in scene.lights] + scene.vertices
         scale = max(1e-300, max(abs(c) for p in points for c in p))
         self.eps = EPS_REL * scale
-        self.light = scene.light
-        self.light_colour = scene.light_colour
+        self.lights = scene.lights
         self.background = scene.background
 
     def nearest(self, origin, direction, skip, tmin):
@@ -245,22 +384,40 @@ class Renderer:
         n = f.normal
         if dot(n, direction) > 0.0:
             n = mul(n, -1.0)
-        k = f.k
+        k, tr, d = f.k, f.t, f.d
         colour = [0.0, 0.0, 0.0]
-        to_light = sub(self.light, hit)
-        distance = norm(to_light)
-        if distance > 0.0 and k < 1.0:
-            s = mul(to_light, 1.0 / distance)
-            ns = dot(n, s)
-            if ns > 0.0 and not self.blocked(hit, s, distance, f):
-                w = (1.0 - k) * ns / 255.0
+        if d > 0.0:
+            for light, light_colour in self.lights:
+                to_light = sub(light, hit)
+                distance = norm(to_light)
+                if distance == 0.0:
+                    continue
+                s = mul(to_light, 1.0 / distance)
+                ns = dot(n, s)
+                if ns > 0.0 and not self.blocked(hit, s, distance, f):
+                    w = d * ns / 255.0
+                    for c in range(3):
+                        colour[c] += w * light_colour[c] * f.colour[c]
+        if level < self.depth and (k > 0.0 or tr > 0.0):
+            mirror = None
+            if k > 0.0:
+                r = sub(direction, mul(n, 2.0 * dot(direction, n)))
+                mirror = self.trace(hit, unit(r), level + 1, f, self.eps)
                 for c in range(3):
-                    colour[c] = w * self.light_colour[c] * f.colour[c]
-        if k > 0.0 and level < self.depth:
-            r = sub(direction, mul(n, 2.0 * dot(direction, n)))
-            reflected = self.trace(hit, unit(r), level + 1, f, self.eps)
-            for c in range(3):
-                colour[c] += k * reflected[c]
+                    colour[c] += k * mirror[c]
+            if tr > 0.0:
+                refracted = refract(direction, f.normal, f.ior)
+                if refracted is not None:
+                    through = self.trace(hit, refracted, level + 1, f,
+                                         self.eps)
+                else:                                   # total internal
+                    if mirror is None:                  # reflection
+                        r = sub(direction, mul(n, 2.0 * dot(direction, n)))
+                        mirror = self.trace(hit, unit(r), level + 1, f,
+                                            self.eps)
+                    through = mirror
+                for c in range(3):
+                    colour[c] += tr * through[c]
         return colour
 
     def render(self):
@@ -274,16 +431,46 @@ class Renderer:
             raise SceneError('degenerate camera')
         ac = mul(aob, norm(ab) / norm(aob))
         w, h = s.width, s.height
+        n = math.isqrt(self.samples)
+        inv = 1.0 / (n * n)
+        aperture, focus = s.aperture, s.focus
+        ab_hat = tuple(c / norm(ab) for c in ab)
+        ac_hat = tuple(c / norm(ac) for c in ac)
+        lens = []                      # (x, y) offsets in the pixel, L
+        for sy in range(n):
+            for sx in range(n):
+                dx, dy = (sx + 0.5) / n, (sy + 0.5) / n
+                if aperture > 0.0:
+                    u, v = concentric_disk(2.0 * ((sy + 0.5) / n) - 1.0,
+                                           2.0 * ((sx + 0.5) / n) - 1.0)
+                    offset = mul(add(mul(ab_hat, u), mul(ac_hat, v)),
+                                 aperture)
+                    lens.append((dx, dy, add(o, offset)))
+                else:
+                    lens.append((dx, dy, None))
+        w_hat = tuple(c / norm(sub(a, o)) for c in sub(a, o))
         rows = []
         for j in range(h):
-            y = (1.0 - 2.0 * (j + 0.5) / h) * (h / w)
             row = bytearray()
             for i in range(w):
-                x = 2.0 * (i + 0.5) / w - 1.0
-                p = add(a, add(mul(ab, x), mul(ac, y)))
-                c = self.trace(o, unit(sub(p, o)), 0, None, 0.0)
-                for v in c:
-                    v = min(255.0, max(0.0, v))
+                total = [0.0, 0.0, 0.0]
+                for dx, dy, lens_point in lens:
+                    x, y = i + dx, j + dy
+                    p = add(a, add(mul(ab, (2.0 * x - w) / w),
+                                   mul(ac, (h - 2.0 * y) / w)))
+                    po = sub(p, o)
+                    if lens_point is None:
+                        c = self.trace(o, unit(po), 0, None, 0.0)
+                    else:
+                        along = dot(po, w_hat)
+                        focal = add(o, tuple(c * focus / along for c in po))
+                        c = self.trace(lens_point,
+                                       unit(sub(focal, lens_point)),
+                                       0, None, 0.0)
+                    for ch in range(3):
+                        total[ch] += c[ch]
+                for v in total:
+                    v = min(255.0, max(0.0, v * inv))
                     row.append(int(math.floor(v + 0.5)))
             rows.append(bytes(row))
         return rows
@@ -313,26 +500,32 @@ def write_ppm(path, w, h, rows, ascii_format):
 
 
 def main(argv):
-    args, depth, ascii_format = [], 5, False
+    args, depth, samples, ascii_format = [], 5, 1, False
     it = iter(argv[1:])
     for arg in it:
         if arg == '--depth':
             depth = int(next(it))
         elif arg.startswith('--depth='):
             depth = int(arg.split('=', 1)[1])
+        elif arg == '--samples':
+            samples = int(next(it))
+        elif arg.startswith('--samples='):
+            samples = int(arg.split('=', 1)[1])
         elif arg == '--p3':
             ascii_format = True
         else:
             args.append(arg)
-    if len(args) != 2 or depth < 0:
+    if len(args) != 2 or depth < 0 or samples < 1 \
+            or math.isqrt(samples) ** 2 != samples:
         sys.stderr.write('usage: rtref.py SCENE.scn OUT.ppm [--depth N] '
-                         '[--p3]\n')
+                         '[--samples N] [--p3]\n'
+                         '  (--samples: a square, 1, 4, 9, 16, ...)\n')
         return 2
     with open(args[0], encoding='utf-8') as f:
         text = f.read()
     try:
         scene = parse_scene(text)
-        rows = Renderer(scene, depth).render()
+        rows = Renderer(scene, depth, samples).render()
     except SceneError as e:
         sys.stderr.write('rtref: %s: %s\n' % (args[0], e))
         return 1

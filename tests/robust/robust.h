@@ -94,6 +94,21 @@ void rb_mesh_box(rb_mesh *mesh, rt_vec3 lo, rt_vec3 hi, double k,
                  rt_rgb8 color);
 /* p * scale + shift for every vertex. */
 void rb_mesh_transform(rb_mesh *mesh, double scale, rt_vec3 shift);
+/* An existing vertex with exactly these coordinates, or a new one. */
+int rb_mesh_vertex_shared(rb_mesh *mesh, rt_vec3 p);
+/* Appends the quad p0 p1 p2 p3 as two facets sharing the diagonal p0-p2;
+ * a corner equal to an existing vertex reuses it (quads that meet share
+ * vertices); returns the first facet. */
+int rb_mesh_quad(rb_mesh *mesh, rt_vec3 p0, rt_vec3 p1, rt_vec3 p2,
+                 rt_vec3 p3, double k, rt_rgb8 color);
+/* Reverses the winding of facets [first, mesh->facet_count) whose winding
+ * normal (b - a) x (c - a) points towards `inside` (a point inside a
+ * convex mesh): afterwards they wind counter-clockwise seen from outside,
+ * as SPEC.md section 7 asks of transparent facets. */
+void rb_mesh_orient_outward(rb_mesh *mesh, int first, rt_vec3 inside);
+/* Makes facets [first, mesh->facet_count) glass: k = 0, transparency t,
+ * index n, diffuse weight 0 (given). */
+void rb_mesh_glass(rb_mesh *mesh, int first, double t, double n);
 
 /* Everything else a scene needs around a mesh. */
 typedef struct rb_view {
@@ -108,6 +123,9 @@ void rb_view_transform(rb_view *view, double scale, rt_vec3 shift);
 /* rt_scene_create over mesh and view; NULL (with the message on stderr)
  * when it is refused. */
 rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view);
+/* The same with further lights (SPEC.md section 7), already placed. */
+rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
+                          const rt_light *more_lights, int more_light_count);
 
 /* ------------------------------------------------------------------ */
 /* Helpers                                                             */

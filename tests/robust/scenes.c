@@ -232,7 +232,58 @@ void rb_view_transform(rb_view *view, double scale, rt_vec3 shift)
     view->light = rb_transform_point(view->light, scale, shift);
 }
 
+int rb_mesh_vertex_shared(rb_mesh *m, rt_vec3 p)
+{
+    for (int i = 0; i < m->vertex_count; i++)
+        if (m->vertices[i].x == p.x && m->vertices[i].y == p.y &&
+            m->vertices[i].z == p.z)
+            return i;
+    return rb_mesh_vertex(m, p);
+}
+
+int rb_mesh_quad(rb_mesh *m, rt_vec3 p0, rt_vec3 p1, rt_vec3 p2, rt_vec3 p3,
+                 double k, rt_rgb8 color)
+{
+    int a = rb_mesh_vertex_shared(m, p0), b = rb_mesh_vertex_shared(m, p1),
+        c = rb_mesh_vertex_shared(m, p2), d = rb_mesh_vertex_shared(m, p3);
+    int first = rb_mesh_facet(m, a, b, c, k, color);
+    rb_mesh_facet(m, a, c, d, k, color);
+    return first;
+}
+
+void rb_mesh_orient_outward(rb_mesh *m, int first, rt_vec3 inside)
+{
+    for (int i = first; i < m->facet_count; i++) {
+        int *v = m->facets[i].vertex;
+        rt_vec3 a = m->vertices[v[0]], b = m->vertices[v[1]],
+                c = m->vertices[v[2]];
+        rt_vec3 n = rb_cross(rb_sub(b, a), rb_sub(c, a));
+        if (rb_dot(n, rb_sub(a, inside)) < 0) {
+            int swap = v[1];
+            v[1] = v[2];
+            v[2] = swap;
+        }
+    }
+}
+
+void rb_mesh_glass(rb_mesh *m, int first, double t, double n)
+{
+    for (int i = first; i < m->facet_count; i++) {
+        m->facets[i].k = 0;
+        m->facets[i].t = t;
+        m->facets[i].n = n;
+        m->facets[i].d = 0;
+        m->facets[i].d_given = 1;
+    }
+}
+
 rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view)
+{
+    return rb_scene_lights(mesh, view, NULL, 0);
+}
+
+rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
+                          const rt_light *more_lights, int more_light_count)
 {
     rt_scene_desc desc = {
         .observer = view->observer,
@@ -246,7 +297,9 @@ rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view)
         .facet_count = mesh->facet_count,
         .background = view->background,
         .light_position = view->light,
-        .light_color = view->light_color};
+        .light_color = view->light_color,
+        .more_lights = more_lights,
+        .more_light_count = more_light_count};
     rt_scene *scene = NULL;
     rt_error error;
     if (rt_scene_create(&desc, &scene, &error) != RT_OK) {

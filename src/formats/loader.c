@@ -1,0 +1,202 @@
+/*
+ * loader.c - one loader for every scene format: the format from the name's
+ * extension or the caller's choice, the file read with the limits every
+ * reader shares, and the dispatch to the format's own module (scn.c,
+ * nff.c, obj.c).  Each reader is a client of the scene builder.
+ */
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "file.h"
+#include "formats/formats.h"
+#include "formats/reader.h"
+#include "raytrace/scene.h"
+#include "scene_internal.h"
+#include "vecmath.h"
+
+void rt_load_options_init(rt_load_options *options)
+{
+    memset(options, 0, sizeof *options);
+    options->format = RT_SCENE_FORMAT_AUTO;
+}
+
+const char *rt_scene_format_name(rt_scene_format format)
+{
+    switch (format) {
+    case RT_SCENE_FORMAT_SCN:
+        return "scn";
+    case RT_SCENE_FORMAT_NFF:
+        return "nff";
+    case RT_SCENE_FORMAT_OBJ:
+        return "obj";
+    case RT_SCENE_FORMAT_AUTO:
+        break;
+    }
+    return "auto";
+}
+
+rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format)
+{
+    if (path == NULL)
+        return RT_ERR_ARGUMENT;
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    if (dot == NULL || dot == base || strlen(dot) != 4)
+        return RT_ERR_FORMAT;
+    char extension[4];
+    for (int i = 0; i < 3; i++)
+        extension[i] = (char)tolower((unsigned char)dot[1 + i]);
+    extension[3] = '\0';
+    static const struct {
+        const char *extension;
+        rt_scene_format format;
+    } known[] = {{"scn", RT_SCENE_FORMAT_SCN},
+                 {"nff", RT_SCENE_FORMAT_NFF},
+                 {"obj", RT_SCENE_FORMAT_OBJ}};
+    for (size_t i = 0; i < sizeof known / sizeof known[0]; i++)
+        if (strcmp(extension, known[i].extension) == 0) {
+            *format = known[i].format;
+            return RT_OK;
+        }
+    return RT_ERR_FORMAT;
+}
+
+#define PI 3.14159265358979323846
+
+/*
+ * The view of `options` applied to the camera of `d`: what is not given
+ * keeps the file's value (observer O, look-at A, horizontal field of view
+ * 2 atan(|AB| / |AO|); up: the file's AC, or, when the direction of view
+ * changes, the coordinate axis nearest to it).  Returns NULL, or what is
+ * wrong.
+ */
+static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
+{
+    rt_vec3 from = d->observer, at = d->screen_center;
+    rt_vec3 ao = v3_sub(d->observer, d->screen_center);
+    rt_vec3 ab = v3_sub(d->screen_right, d->screen_center);
+    rt_vec3 up = v3_cross(ao, ab);
+    double fov = 2 * atan(v3_length(ab) / v3_length(ao)) * 180 / PI;
+    if (o->look_from_given)
+        from = o->look_from;
+    if (o->look_at_given)
+        at = o->look_at;
+    if (o->up_given) {
+        up = o->up;
+    } else if (o->look_from_given || o->look_at_given) {
+        /* A new direction of view: the file's up leans with the file's
+         * view, so take the axis nearest to it (the scene's vertical,
+         * for a camera that looked down at it). */
+        rt_vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        rt_vec3 unit = v3_normalize(up), best = axes[2];
+        double best_dot = 0;
+        for (int i = 0; i < 3; i++) {
+            double along = v3_dot(unit, axes[i]);
+            if (fabs(along) > fabs(best_dot)) {
+                best_dot = along;
+                best = axes[i];
+            }
+        }
+        up = best_dot < 0 ? v3_scale(best, -1) : best;
+    }
+    if (o->fov_given)
+        fov = o->fov;
+    if (!(fov > 0 && fov < 180))
+        return "the field of view is not in (0, 180) degrees";
+    rt_vec3 view = v3_sub(at, from);
+    double distance = v3_length(view);
+    if (!(distance > 0) || !isfinite(distance))
+        return "the look-from point is the look-at point";
+    rt_vec3 right = v3_cross(view, up);
+    if (!(v3_length(right) > 0))
+        return "the up direction is along the view";
+    d->observer = from;
+    d->screen_center = at;
+    d->screen_right = v3_add(at, v3_scale(v3_normalize(right),
+                                          distance * tan(fov * PI / 360)));
+    return NULL;
+}
+
+rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
+                            const int *facet_lines, const rt_notes *notes,
+                            const rt_load_options *options, rt_scene **scene,
+                            rt_error *error)
+{
+    if (options != NULL && (options->look_from_given ||
+                            options->look_at_given || options->up_given ||
+                            options->fov_given)) {
+        const char *wrong = apply_view(desc, options);
+        if (wrong != NULL)
+            return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
+                                 "expected a view, found that %s", wrong);
+    }
+    if (options != NULL && options->light_count > 0) {
+        if (options->lights == NULL)
+            return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                                 "expected an array of lights");
+        desc->light_position = options->lights[0].position;
+        desc->light_color = options->lights[0].color;
+        desc->more_lights = options->lights + 1;
+        desc->more_light_count = options->light_count - 1;
+    }
+    return rt__scene_build(desc, name, facet_lines, notes, scene, error);
+}
+
+rt_status rt_scene_parse_with(const char *text, size_t length,
+                              const char *name,
+                              const rt_load_options *options,
+                              rt_scene **scene, rt_error *error)
+{
+    if (scene == NULL)
+        return RT_ERR_ARGUMENT;
+    *scene = NULL;
+    rt_load_options defaults;
+    if (options == NULL) {
+        rt_load_options_init(&defaults);
+        options = &defaults;
+    }
+    rt_scene_format format = options->format;
+    if (format == RT_SCENE_FORMAT_AUTO &&
+        (name == NULL || rt_scene_format_from_path(name, &format) != RT_OK))
+        format = RT_SCENE_FORMAT_SCN;
+    switch (format) {
+    case RT_SCENE_FORMAT_SCN:
+        return rt__scn_parse(text, length, name, options, scene, error);
+    case RT_SCENE_FORMAT_OBJ:
+        return rt__obj_parse(text, length, name, options, scene, error);
+    case RT_SCENE_FORMAT_NFF:
+        return rt__nff_parse(text, length, name, options, scene, error);
+    case RT_SCENE_FORMAT_AUTO:
+        break;
+    }
+    return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                         "expected a scene format, found %d", (int)format);
+}
+
+rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
+                             rt_scene **scene, rt_error *error)
+{
+    if (scene == NULL)
+        return RT_ERR_ARGUMENT;
+    *scene = NULL;
+    if (path == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a path");
+    char *data;
+    size_t length;
+    rt_status status = rt__read_text_file(path, &data, &length, error);
+    if (status != RT_OK)
+        return status;
+    status = rt_scene_parse_with(data, length, path, options, scene, error);
+    free(data);
+    return status;
+}
+
+rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error)
+{
+    return rt_scene_load_with(path, NULL, scene, error);
+}

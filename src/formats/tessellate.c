@@ -1,0 +1,446 @@
+/*
+ * tessellate.c - spheres, open cones and planar polygons cut into facets
+ * (see tessellate.h and docs/formats.md).
+ *
+ * A sphere is a latitude-longitude mesh: `bands` bands between the poles
+ * and 2 * bands meridians, quads split along a diagonal, one triangle per
+ * meridian at each pole.  Its deviation (the largest distance between a
+ * facet and the sphere, along the radius) is that of its worst facet: all
+ * vertices lie on the sphere, so a facet's farthest point from the sphere is
+ * its point nearest the centre, which rt__tess_sphere_deviation finds
+ * exactly for one facet of each shape (the bands are symmetric).  The band
+ * count for a tolerance is the fewest whose deviation is within it.
+ *
+ * A cone or cylinder is two circles of `segments` points joined by
+ * planar trapezoids: its deviation is r (1 - cos(pi / segments)) at the wider
+ * end, so the segment count comes straight from the tolerance.
+ */
+#include "formats/tessellate.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "vecmath.h"
+
+#define PI 3.14159265358979323846
+
+void rt__tess_mesh_free(rt_tess_mesh *mesh)
+{
+    free(mesh->vertices);
+    free(mesh->facets);
+    free(mesh->facet_lines);
+    memset(mesh, 0, sizeof *mesh);
+}
+
+static int grow(void **array, int *capacity, double needed, size_t size,
+                double most)
+{
+    if (needed <= *capacity)
+        return 0;
+    if (needed > most)
+        return -1;
+    double bigger = *capacity > 0 ? 2.0 * *capacity : 64.0;
+    if (bigger < needed)
+        bigger = needed;
+    if (bigger > most)
+        bigger = most;
+    void *grown = realloc(*array, (size_t)bigger * size);
+    if (grown == NULL)
+        return -1;
+    *array = grown;
+    *capacity = (int)bigger;
+    return 0;
+}
+
+int rt__tess_reserve(rt_tess_mesh *mesh, double vertices, double facets)
+{
+    double nv = mesh->vertex_count + vertices;
+    double nf = mesh->facet_count + facets;
+    if (grow((void **)&mesh->vertices, &mesh->vertex_capacity, nv,
+             sizeof *mesh->vertices, (double)INT_MAX) != 0)
+        return -1;
+    int lines_capacity = mesh->facet_capacity;
+    if (grow((void **)&mesh->facets, &mesh->facet_capacity, nf,
+             sizeof *mesh->facets, (double)RT_TESS_MAX_FACETS) != 0)
+        return -1;
+    if (grow((void **)&mesh->facet_lines, &lines_capacity, nf,
+             sizeof *mesh->facet_lines, (double)RT_TESS_MAX_FACETS) != 0 ||
+        lines_capacity != mesh->facet_capacity) {
+        /* keep both arrays the same size */
+        int *lines = realloc(mesh->facet_lines,
+                             (size_t)mesh->facet_capacity *
+                                 sizeof *mesh->facet_lines);
+        if (lines == NULL)
+            return -1;
+        mesh->facet_lines = lines;
+    }
+    return 0;
+}
+
+static int add_vertex(rt_tess_mesh *mesh, rt_vec3 p)
+{
+    mesh->vertices[mesh->vertex_count] = p;
+    return mesh->vertex_count++;
+}
+
+static void add_facet(rt_tess_mesh *mesh, const rt_facet_desc *facet,
+                      int line, int a, int b, int c, int inward)
+{
+    rt_facet_desc *f = &mesh->facets[mesh->facet_count];
+    *f = *facet;
+    f->vertex[0] = a;
+    f->vertex[1] = inward ? c : b;
+    f->vertex[2] = inward ? b : c;
+    mesh->facet_lines[mesh->facet_count++] = line;
+}
+
+int rt__tess_circle_segments(double tolerance)
+{
+    if (!(tolerance > 0.0 && tolerance < 1.0))
+        return 0;
+    /* the fewest n with cos(pi / n) >= 1 - tolerance */
+    double half = acos(1.0 - tolerance);
+    double n = ceil(PI / half);
+    if (!(n <= (double)(1 << 24)))
+        return 0;
+    int segments = n < 3 ? 3 : (int)n;
+    while (segments > 3 && 1.0 - cos(PI / (segments - 1)) <= tolerance)
+        segments--;
+    while (1.0 - cos(PI / segments) > tolerance)
+        segments++;
+    return segments;
+}
+
+/* The point of triangle abc nearest the origin (Ericson, Real-Time
+ * Collision Detection, 5.1.5). */
+static rt_vec3 nearest_to_origin(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    rt_vec3 ab = v3_sub(b, a), ac = v3_sub(c, a);
+    rt_vec3 ap = v3_neg(a);
+    double d1 = v3_dot(ab, ap), d2 = v3_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0)
+        return a;
+    rt_vec3 bp = v3_neg(b);
+    double d3 = v3_dot(ab, bp), d4 = v3_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3)
+        return b;
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return v3_add(a, v3_scale(ab, d1 / (d1 - d3)));
+    rt_vec3 cp = v3_neg(c);
+    double d5 = v3_dot(ab, cp), d6 = v3_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6)
+        return c;
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return v3_add(a, v3_scale(ac, d2 / (d2 - d6)));
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return v3_add(b, v3_scale(v3_sub(c, b),
+                                  (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    double denom = 1.0 / (va + vb + vc);
+    return v3_add(a, v3_add(v3_scale(ab, vb * denom),
+                            v3_scale(ac, vc * denom)));
+}
+
+/* A point of the unit sphere: polar angle theta from +z, azimuth phi. */
+static rt_vec3 unit_point(int bands, int i, int j)
+{
+    if (i == 0)
+        return v3(0, 0, 1);
+    if (i == bands)
+        return v3(0, 0, -1);
+    double theta = PI * i / bands, phi = PI * j / bands;
+    return v3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
+}
+
+static double triangle_deviation(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    return 1.0 - v3_length(nearest_to_origin(a, b, c));
+}
+
+double rt__tess_sphere_deviation(int bands)
+{
+    double worst = 0.0;
+    for (int i = 0; i < bands; i++) {
+        if (i > bands - 1 - i)
+            break;          /* the southern half mirrors the northern */
+        rt_vec3 a = unit_point(bands, i, 0), b = unit_point(bands, i + 1, 0);
+        rt_vec3 c = unit_point(bands, i + 1, 1), d = unit_point(bands, i, 1);
+        double e = triangle_deviation(a, b, c);
+        if (i > 0 && i < bands - 1) {
+            double f = triangle_deviation(a, c, d);
+            if (f > e)
+                e = f;
+        } else if (i == bands - 1) {
+            e = triangle_deviation(a, b, d);
+        }
+        if (e > worst)
+            worst = e;
+    }
+    return worst;
+}
+
+double rt__tess_sphere_facet_count(int bands)
+{
+    return 4.0 * bands * (bands - 1.0);
+}
+
+double rt__tess_sphere_vertex_count(int bands)
+{
+    return 2.0 * bands * (bands - 1.0) + 2.0;
+}
+
+int rt__tess_sphere_bands(double tolerance)
+{
+    if (!(tolerance > 0.0 && tolerance < 1.0))
+        return 0;
+    /* A meridian's chords alone need pi / bands <= 2 acos(1 - tol). */
+    double low = ceil(PI / (2.0 * acos(1.0 - tolerance)));
+    if (low < 2)
+        low = 2;
+    if (rt__tess_sphere_facet_count((int)fmin(low, 1e6)) > RT_TESS_MAX_FACETS)
+        return 0;
+    int lo = (int)low - 1, hi = (int)low;
+    while (rt__tess_sphere_deviation(hi) > tolerance) {
+        lo = hi;
+        hi *= 2;
+        if (rt__tess_sphere_facet_count(hi) > 4.0 * RT_TESS_MAX_FACETS)
+            return 0;
+    }
+    /* deviation(lo) > tol or lo below 2; deviation(hi) <= tol */
+    while (hi - lo > 1) {
+        int mid = lo + (hi - lo) / 2;
+        if (mid >= 2 && rt__tess_sphere_deviation(mid) <= tolerance)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    if (rt__tess_sphere_facet_count(hi) > RT_TESS_MAX_FACETS)
+        return 0;
+    return hi;
+}
+
+int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
+                    int inward, int bands, const rt_facet_desc *facet,
+                    int line)
+{
+    if (rt__tess_reserve(mesh, rt__tess_sphere_vertex_count(bands),
+                         rt__tess_sphere_facet_count(bands)) != 0)
+        return -1;
+    int m = 2 * bands;
+    int north = add_vertex(mesh, v3_add(center, v3(0, 0, radius)));
+    int first = mesh->vertex_count;     /* ring i (1..bands-1), point j */
+    for (int i = 1; i < bands; i++)
+        for (int j = 0; j < m; j++)
+            add_vertex(mesh, v3_add(center, v3_scale(unit_point(bands, i, j),
+                                                     radius)));
+    int south = add_vertex(mesh, v3_add(center, v3(0, 0, -radius)));
+#define RING(i, j) (first + ((i) - 1) * m + ((j) % m))
+    for (int j = 0; j < m; j++)
+        add_facet(mesh, facet, line, north, RING(1, j), RING(1, j + 1),
+                  inward);
+    for (int i = 1; i < bands - 1; i++)
+        for (int j = 0; j < m; j++) {
+            add_facet(mesh, facet, line, RING(i, j), RING(i + 1, j),
+                      RING(i + 1, j + 1), inward);
+            add_facet(mesh, facet, line, RING(i, j), RING(i + 1, j + 1),
+                      RING(i, j + 1), inward);
+        }
+    for (int j = 0; j < m; j++)
+        add_facet(mesh, facet, line, RING(bands - 1, j), south,
+                  RING(bands - 1, j + 1), inward);
+#undef RING
+    return 0;
+}
+
+double rt__tess_cone_facet_count(int segments, double r0, double r1)
+{
+    return r0 > 0 && r1 > 0 ? 2.0 * segments : (double)segments;
+}
+
+int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
+                  double r1, int inward, int segments,
+                  const rt_facet_desc *facet, int line)
+{
+    int n = segments;
+    if (rt__tess_reserve(mesh, 2.0 * n,
+                         rt__tess_cone_facet_count(n, r0, r1)) != 0)
+        return -1;
+    rt_vec3 w = v3_normalize(v3_sub(apex, base));
+    /* u perpendicular to w, from the axis least aligned with it */
+    rt_vec3 e = fabs(w.x) <= fabs(w.y) && fabs(w.x) <= fabs(w.z) ? v3(1, 0, 0)
+                : fabs(w.y) <= fabs(w.z)                           ? v3(0, 1, 0)
+                                                                   : v3(0, 0, 1);
+    rt_vec3 u = v3_normalize(v3_cross(w, e));
+    rt_vec3 v = v3_cross(w, u);         /* (u, v, w) right-handed */
+    int b0 = mesh->vertex_count;
+    if (r0 > 0)
+        for (int j = 0; j < n; j++) {
+            double phi = 2.0 * PI * j / n;
+            add_vertex(mesh, v3_add(base, v3_add(v3_scale(u, r0 * cos(phi)),
+                                                 v3_scale(v, r0 * sin(phi)))));
+        }
+    else
+        add_vertex(mesh, base);
+    int a0 = mesh->vertex_count;
+    if (r1 > 0)
+        for (int j = 0; j < n; j++) {
+            double phi = 2.0 * PI * j / n;
+            add_vertex(mesh, v3_add(apex, v3_add(v3_scale(u, r1 * cos(phi)),
+                                                 v3_scale(v, r1 * sin(phi)))));
+        }
+    else
+        add_vertex(mesh, apex);
+    for (int j = 0; j < n; j++) {
+        int k = (j + 1) % n;
+        if (r0 > 0 && r1 > 0) {
+            add_facet(mesh, facet, line, b0 + j, b0 + k, a0 + k, inward);
+            add_facet(mesh, facet, line, b0 + j, a0 + k, a0 + j, inward);
+        } else if (r0 > 0) {
+            add_facet(mesh, facet, line, b0 + j, b0 + k, a0, inward);
+        } else {
+            add_facet(mesh, facet, line, b0, a0 + k, a0 + j, inward);
+        }
+    }
+    return 0;
+}
+
+/* The polygon in the plane of its Newell normal, counter-clockwise:
+ * xy[2i], xy[2i+1]. */
+static void project(const rt_vec3 *p, int n, double *xy)
+{
+    rt_vec3 normal = v3(0, 0, 0);
+    for (int i = 0; i < n; i++) {
+        rt_vec3 a = p[i], b = p[(i + 1) % n];
+        normal.x += (a.y - b.y) * (a.z + b.z);
+        normal.y += (a.z - b.z) * (a.x + b.x);
+        normal.z += (a.x - b.x) * (a.y + b.y);
+    }
+    int k = 2;
+    if (fabs(normal.x) >= fabs(normal.y) && fabs(normal.x) >= fabs(normal.z))
+        k = 0;
+    else if (fabs(normal.y) >= fabs(normal.z))
+        k = 1;
+    double sign = v3_get(normal, k) < 0 ? -1.0 : 1.0;
+    for (int i = 0; i < n; i++) {
+        xy[2 * i] = v3_get(p[i], (k + 1) % 3);
+        xy[2 * i + 1] = sign * v3_get(p[i], (k + 2) % 3);
+    }
+}
+
+static double turn(const double *xy, int a, int b, int c)
+{
+    double ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
+    double vx = xy[2 * c] - xy[2 * b], vy = xy[2 * c + 1] - xy[2 * b + 1];
+    return ux * vy - uy * vx;
+}
+
+static int convex_2d(const double *xy, int n)
+{
+    double winding = 0.0;
+    for (int i = 0; i < n; i++) {
+        int a = i, b = (i + 1) % n, c = (i + 2) % n;
+        double cross = turn(xy, a, b, c);
+        if (cross < 0)
+            return 0;
+        double ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
+        double vx = xy[2 * c] - xy[2 * b], vy = xy[2 * c + 1] - xy[2 * b + 1];
+        winding += atan2(cross, ux * vx + uy * vy);
+    }
+    /* all left turns adding up to one turn: not a star */
+    return fabs(winding - 2.0 * PI) < 1.0;
+}
+
+int rt__tess_polygon_convex(const rt_vec3 *points, int n)
+{
+    double *xy = malloc((size_t)n * 2 * sizeof *xy);
+    if (xy == NULL)
+        return 0;
+    project(points, n, xy);
+    int convex = convex_2d(xy, n);
+    free(xy);
+    return convex;
+}
+
+/* Whether p lies in triangle abc (counter-clockwise), its edges included. */
+static int inside(const double *xy, int p, int a, int b, int c)
+{
+    return turn(xy, a, b, p) >= 0 && turn(xy, b, c, p) >= 0 &&
+           turn(xy, c, a, p) >= 0;
+}
+
+static int same_point(const double *xy, int p, int q)
+{
+    return xy[2 * p] == xy[2 * q] && xy[2 * p + 1] == xy[2 * q + 1];
+}
+
+int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
+                     const rt_facet_desc *facet, int line, int *irregular)
+{
+    if (rt__tess_reserve(mesh, n, n - 2) != 0)
+        return -1;
+    double *xy = malloc((size_t)n * 2 * sizeof *xy);
+    int *next = calloc((size_t)n, sizeof *next);
+    int *prev = calloc((size_t)n, sizeof *prev);
+    if (xy == NULL || next == NULL || prev == NULL) {
+        free(xy), free(next), free(prev);
+        return -1;
+    }
+    int first = mesh->vertex_count;
+    for (int i = 0; i < n; i++)
+        add_vertex(mesh, points[i]);
+    project(points, n, xy);
+    if (n <= 3 || convex_2d(xy, n)) {
+        for (int i = 1; i + 1 < n; i++)
+            add_facet(mesh, facet, line, first, first + i, first + i + 1, 0);
+        free(xy), free(next), free(prev);
+        return 0;
+    }
+    for (int i = 0; i < n; i++) {
+        next[i] = (i + 1) % n;
+        prev[i] = (i + n - 1) % n;
+    }
+    int remaining = n, cur = 0, misses = 0;
+    while (remaining > 3) {
+        int a = prev[cur], b = cur, c = next[cur];
+        int ear = turn(xy, a, b, c) > 0;
+        for (int p = next[c]; ear && p != a; p = next[p])
+            if (!same_point(xy, p, a) && !same_point(xy, p, b) &&
+                !same_point(xy, p, c) && inside(xy, p, a, b, c))
+                ear = 0;
+        if (!ear && misses < remaining) {
+            cur = c;
+            misses++;
+            continue;
+        }
+        if (!ear) {
+            /* No ear left: a collinear vertex goes without a facet; else
+             * the polygon is not simple and the current corner is cut. */
+            int found = -1, q = cur;
+            for (int k = 0; k < remaining && found < 0; k++, q = next[q])
+                if (turn(xy, prev[q], q, next[q]) == 0)
+                    found = q;
+            if (found >= 0) {
+                b = found, a = prev[b], c = next[b];
+            } else {
+                *irregular = 1;
+                add_facet(mesh, facet, line, first + a, first + b, first + c,
+                          0);
+            }
+        } else {
+            add_facet(mesh, facet, line, first + a, first + b, first + c, 0);
+        }
+        next[a] = c;
+        prev[c] = a;
+        remaining--;
+        cur = c;
+        misses = 0;
+    }
+    add_facet(mesh, facet, line, first + prev[cur], first + cur,
+              first + next[cur], 0);
+    free(xy), free(next), free(prev);
+    return 0;
+}

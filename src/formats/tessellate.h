@@ -1,0 +1,83 @@
+/*
+ * tessellate.h - spheres, cones and polygons turned into triangles
+ * (internal), for the readers of formats that describe curved surfaces or
+ * polygons (NFF).  Every curved surface is cut so that no point of its
+ * facets is farther from the true surface than `tolerance` times its radius
+ * (measured along the radius), and every facet is wound counter-clockwise
+ * seen from outside (outward normal (b - a) x (c - a)) unless asked to face
+ * inward.
+ */
+#ifndef RAYTRACE_TESSELLATE_H
+#define RAYTRACE_TESSELLATE_H
+
+#include "raytrace/scene.h"
+
+/* The most facets a mesh may hold (16 Mi): about 1 GiB of descriptions. */
+#define RT_TESS_MAX_FACETS (1 << 24)
+
+/* A growing list of vertices and facets, with each facet's source line. */
+typedef struct rt_tess_mesh {
+    rt_vec3 *vertices;
+    int vertex_count, vertex_capacity;
+    rt_facet_desc *facets;
+    int *facet_lines;
+    int facet_count, facet_capacity;
+} rt_tess_mesh;
+
+void rt__tess_mesh_free(rt_tess_mesh *mesh);
+
+/* Room for `vertices` more vertices and `facets` more facets: 0, or -1
+ * when out of memory or past RT_TESS_MAX_FACETS / INT_MAX vertices. */
+int rt__tess_reserve(rt_tess_mesh *mesh, double vertices, double facets);
+
+/* The segments of a circle with r (1 - cos(pi / n)) <= tolerance r, the
+ * fewest (at least 3); 0 when tolerance is not in (0, 1) or more than
+ * 2^24 would be needed. */
+int rt__tess_circle_segments(double tolerance);
+
+/* The largest distance between the unit sphere and the facets of
+ * rt__tess_sphere with `bands` bands (computed exactly, facet by
+ * facet shape). */
+double rt__tess_sphere_deviation(int bands);
+
+/* The fewest bands (2 * bands meridians) whose deviation is at most
+ * `tolerance`; 0 when tolerance is not in (0, 1) or the sphere would need
+ * more than RT_TESS_MAX_FACETS facets. */
+int rt__tess_sphere_bands(double tolerance);
+
+/* Facets and vertices of a sphere of `bands` bands: 4 bands (bands - 1)
+ * and 2 bands (bands - 1) + 2. */
+double rt__tess_sphere_facet_count(int bands);
+double rt__tess_sphere_vertex_count(int bands);
+
+/* Facets of an open cone of `segments` segments (one radius 0: segments
+ * triangles; otherwise 2 segments). */
+double rt__tess_cone_facet_count(int segments, double r0, double r1);
+
+/* Appends a sphere (poles along z) with every facet a copy of `facet`
+ * (its vertex indices replaced) on `line`.  0, or -1 out of memory. */
+int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
+                    int inward, int bands, const rt_facet_desc *facet,
+                    int line);
+
+/* Appends the open surface between the circle of radius r0 around `base`
+ * and that of radius r1 around `apex`, perpendicular to the axis (no
+ * caps); r0, r1 >= 0, not both 0, base != apex. */
+int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
+                  double r1, int inward, int segments,
+                  const rt_facet_desc *facet, int line);
+
+/* Appends a planar polygon of n >= 3 vertices, counter-clockwise as seen
+ * from its front: convex ones as a fan from the first vertex, others by
+ * ear clipping in the plane of their (Newell) normal, keeping the winding.
+ * *irregular is set non-zero when no proper ear was found at some step (a
+ * self-intersecting or degenerate polygon; it is still cut into n - 2
+ * triangles).  0, or -1 out of memory. */
+int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
+                     const rt_facet_desc *facet, int line, int *irregular);
+
+/* Whether the polygon is convex in the plane of its normal (collinear
+ * vertices allowed). */
+int rt__tess_polygon_convex(const rt_vec3 *points, int n);
+
+#endif /* RAYTRACE_TESSELLATE_H */
