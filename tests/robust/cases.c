@@ -1531,7 +1531,7 @@ static int glass_expected(const glass *g, const floor_det *fl, rt_vec3 o,
                           double crit, int depth, double eps,
                           glass_expect *e)
 {
-    static const double background[3] = {SKY.r, SKY.g, SKY.b};
+    const double background[3] = {SKY.r, SKY.g, SKY.b};
     double w = 1, travel = 0, reach = rb_length(o), tan_max = 0, q_min = 1;
     double critical = asin(1 / GLASS_N);
     int levels = 0;
