@@ -157,6 +157,56 @@ static int collect(collector *c, const KERNEL_T *k, const ray *r,
     return 1;
 }
 
+/* The lanes of facets ids[0..n) worth the full test: all of them, or
+ * those the AVX2 filter cannot rule out. */
+static unsigned batch_candidates(const KERNEL_T *k, int simd, const ray *r,
+                                 const int *ids, int n)
+{
+#if HAVE_AVX2_KERNEL
+    if (simd)
+        return gathered_candidates(k, r, ids, n);
+#else
+    (void)k;
+    (void)simd;
+    (void)r;
+    (void)ids;
+#endif
+    return (1u << n) - 1;
+}
+
+/* collect() over a batch of a leaf's facets (n <= BLOCK_LANES); every
+ * facet counts as tested, filtered out or not, as in the brute-force
+ * loops.  0 when the hits do not fit any more. */
+static int collect_batch(collector *c, const KERNEL_T *k, int simd,
+                         const ray *r, REAL t_max, const int *ids, int n)
+{
+    unsigned candidates = batch_candidates(k, simd, r, ids, n);
+    for (int j = 0; j < n; j++) {
+        if (!(candidates >> j & 1))
+            c->made++;
+        else if (!collect(c, k, r, t_max, ids[j]))
+            return 0;
+    }
+    return 1;
+}
+
+/* Non-zero when one of the facets ids[0..n) blocks a shadow ray; counts
+ * in *made the facets up to the blocker, as the scalar loop does. */
+static int blocked_batch(const KERNEL_T *k, int simd, const ray *r,
+                         REAL t_max, const int *ids, int n, uint64_t *made)
+{
+    unsigned candidates = batch_candidates(k, simd, r, ids, n);
+    hit ignored;
+    for (int j = 0; j < n; j++) {
+        (*made)++;
+        if ((candidates >> j & 1) &&
+            intersect(r, &k->tris[ids[j]], t_max, &ignored) &&
+            blocks(&ignored, t_max))
+            return 1;
+    }
+    return 0;
+}
+
 /* The brute-force fold (nearest_scalar()) over the hits that are not
  * far_from() the reach, in index order; non-zero when there is one. */
 static int fold_near(const KERNEL_T *k, const collector *c, hit *h)
@@ -204,12 +254,20 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
     while ((leaf = walk_next(&w, cutoff(c.reach, c.n))) >= 0) {
         const onode *node = &tree->nodes[leaf];
         counters->accel_leaves++;
+        int batch[BLOCK_LANES], n = 0;
         for (int j = 0; j < node->count; j++) {
             int i = tree->refs[node->first + j];
-            if (i != skip && tested_add(&seen, i) &&
-                !collect(&c, k, r, t_max, i))
-                goto overflow;
+            if (i == skip || !tested_add(&seen, i))
+                continue;
+            batch[n++] = i;
+            if (n == BLOCK_LANES || j == node->count - 1) {
+                if (!collect_batch(&c, k, simd, r, t_max, batch, n))
+                    goto overflow;
+                n = 0;
+            }
         }
+        if (n > 0 && !collect_batch(&c, k, simd, r, t_max, batch, n))
+            goto overflow;
     }
     counters->tests += c.made;
     counters->accel_tests += c.made;
@@ -256,14 +314,19 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
     while (!found && (leaf = walk_next(&w, INFINITY)) >= 0) {
         const onode *node = &tree->nodes[leaf];
         counters->accel_leaves++;
+        int batch[BLOCK_LANES], n = 0;
         for (int j = 0; j < node->count && !found; j++) {
             int i = tree->refs[node->first + j];
             if (i == skip || !tested_add(&seen, i))
                 continue;
-            made++;
-            found = intersect(r, &k->tris[i], t_max, &ignored) &&
-                    blocks(&ignored, t_max);
+            batch[n++] = i;
+            if (n == BLOCK_LANES) {
+                found = blocked_batch(k, simd, r, t_max, batch, n, &made);
+                n = 0;
+            }
         }
+        if (!found && n > 0)
+            found = blocked_batch(k, simd, r, t_max, batch, n, &made);
     }
     counters->tests += made;
     counters->accel_tests += made;

@@ -230,6 +230,31 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
     return 0;
 }
 
+/*
+ * The exact filter over facets picked by index (an octree leaf's): bit j
+ * set when facet ids[j] (j < n <= BLOCK_LANES) may be hit.  The vertices
+ * are gathered into a block as fill_blocks() lays them out, so every lane
+ * computes what intersect() computes.
+ */
+AVX2 static unsigned gathered_candidates(const KERNEL_T *k, const ray *r,
+                                         const int *ids, int n)
+{
+    _Alignas(32) block b;
+    memset(&b, 0, sizeof b);
+    for (int lane = 0; lane < n; lane++) {
+        const tri *f = &k->tris[ids[lane]];
+        const vec *vertex[3] = {&f->a, &f->b, &f->c};
+        for (int j = 0; j < 3; j++) {
+            b.v[j][0][lane] = vertex[j]->x;
+            b.v[j][1][lane] = vertex[j]->y;
+            b.v[j][2][lane] = vertex[j]->z;
+        }
+    }
+    vray q;
+    broadcast(r, &q);
+    return block_candidates(&b, &q, 0) & ((1u << n) - 1);
+}
+
 /* Non-zero when this processor runs the AVX2 loops. */
 static int cpu_has_avx2(void)
 {
