@@ -33,6 +33,9 @@ typedef struct kernel_ref {
 typedef struct job {
     const rt_scene *scene;
     const rt_render_options *options;
+    rt_camera camera;       /* the scene's, at the render's image size */
+    int x0, y0;             /* the region's top-left pixel in that image */
+    int width;              /* the output image's width: the region's */
     kernel_ref kernel;
     rt_trace_settings settings;
     int grid;               /* samples per side of a pixel */
@@ -193,7 +196,7 @@ static void square_to_disk(double x, double y, double *u, double *v)
  */
 static rt_ray lens_ray(const job *j, rt_ray pinhole, double x, double y)
 {
-    const rt_camera *camera = &j->scene->camera;
+    const rt_camera *camera = &j->camera;
     double u, v;
     square_to_disk(x, y, &u, &v);
     rt_vec3 w = v3_normalize(v3_sub(camera->screen_center, camera->observer));
@@ -216,11 +219,12 @@ static rt_color trace(const job *j, rt_ray ray, rt_counters *counters)
                               &j->settings, counters);
 }
 
-/* The colour of pixel (i, row): the mean of its samples. */
+/* The colour of pixel (i, row) of the whole image: the mean of its
+ * samples. */
 static rt_color render_pixel(const job *j, int i, int row,
                              rt_counters *counters, uint64_t *rays)
 {
-    const rt_camera *camera = &j->scene->camera;
+    const rt_camera *camera = &j->camera;
     int n = j->grid;
     if (n == 1) {
         rt_ray ray = rt_camera_ray(camera, i, row);
@@ -268,10 +272,10 @@ static int render_row(job *j, int row, rt_counters *counters,
                       uint64_t *rays)
 {
     unsigned char *out = rt_image_pixel(j->image, 0, row);
-    for (int i = 0; i < j->scene->camera.width; i++) {
+    for (int i = 0; i < j->width; i++) {
         if (stopping(j))
             return 0;
-        rt_color c = render_pixel(j, i, row, counters, rays);
+        rt_color c = render_pixel(j, j->x0 + i, j->y0 + row, counters, rays);
         out[3 * i + 0] = rt_channel_to_byte(c.r);
         out[3 * i + 1] = rt_channel_to_byte(c.g);
         out[3 * i + 2] = rt_channel_to_byte(c.b);
@@ -290,7 +294,7 @@ static void *worker(void *argument)
             break;
         if (!render_row(j, row, &counters, &rays))
             break;
-        pixels += (uint64_t)j->scene->camera.width;
+        pixels += (uint64_t)j->width;
         if (j->options->on_row != NULL) {
             pthread_mutex_lock(&j->callback_lock);
             int go_on = atomic_load(&j->cancelled) ||
@@ -436,6 +440,58 @@ rt_status rt_scene_check_precision(const rt_scene *scene,
     return RT_OK;
 }
 
+/* The checks of rt_render_image_size; fills the whole image's size too. */
+static rt_status image_size(const rt_scene *scene,
+                            const rt_render_options *options, int *full_width,
+                            int *full_height, int *width, int *height,
+                            rt_error *error)
+{
+    *width = *height = *full_width = *full_height = 0;
+    if (scene == NULL || options == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "no scene or no render options");
+    int w = options->width != 0 ? options->width : scene->camera.width;
+    int h = options->height != 0 ? options->height : scene->camera.height;
+    if (w < 1 || w > RT_MAX_IMAGE_SIDE || h < 1 || h > RT_MAX_IMAGE_SIDE)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "an image of %d x %d pixels: each side must be "
+                             "in 1..%d", w, h, RT_MAX_IMAGE_SIDE);
+    *full_width = w;
+    *full_height = h;
+    rt_region r = options->region;
+    if (r.x0 == 0 && r.y0 == 0 && r.x1 == 0 && r.y1 == 0) {
+        *width = w;
+        *height = h;
+        return RT_OK;
+    }
+    if (r.x0 < 0 || r.y0 < 0 || r.x1 > w || r.y1 > h || r.x0 >= r.x1 ||
+        r.y0 >= r.y1)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the region %d,%d,%d,%d is %s of the %d x %d "
+                             "image (columns x0 <= x < x1, rows y0 <= y < "
+                             "y1)", r.x0, r.y0, r.x1, r.y1,
+                             r.x0 >= r.x1 || r.y0 >= r.y1 ? "an empty part"
+                                                          : "not inside",
+                             w, h);
+    *width = r.x1 - r.x0;
+    *height = r.y1 - r.y0;
+    return RT_OK;
+}
+
+rt_status rt_render_image_size(const rt_scene *scene,
+                               const rt_render_options *options, int *width,
+                               int *height, rt_error *error)
+{
+    rt_render_options defaults;
+    if (options == NULL) {
+        rt_render_options_init(&defaults);
+        options = &defaults;
+    }
+    int full_width, full_height;
+    return image_size(scene, options, &full_width, &full_height, width,
+                      height, error);
+}
+
 rt_status rt_render_rows(const rt_scene *scene,
                          const rt_render_options *options, int row_begin,
                          int row_end, rt_image *image)
@@ -445,9 +501,11 @@ rt_status rt_render_rows(const rt_scene *scene,
         rt_render_options_init(&defaults);
         options = &defaults;
     }
+    int full_width, full_height, width, height;
     if (scene == NULL || image == NULL || image->pixels == NULL ||
-        image->width != scene->camera.width ||
-        image->height != scene->camera.height ||
+        image_size(scene, options, &full_width, &full_height, &width, &height,
+                   NULL) != RT_OK ||
+        image->width != width || image->height != height ||
         image->stride < (size_t)image->width * 3 || options->max_depth < 0 ||
         row_begin < 0 || row_end > image->height || row_begin > row_end ||
         (options->precision != RT_PRECISION_DOUBLE &&
@@ -471,7 +529,9 @@ rt_status rt_render_rows(const rt_scene *scene,
                                 : scene->camera.focal_distance;
     if (!isfinite(aperture) || !isfinite(focal_distance))
         return RT_ERR_ARGUMENT;
-    job j = {.scene = scene, .options = options, .image = image,
+    job j = {.scene = scene, .options = options, .camera = scene->camera,
+             .x0 = options->region.x0, .y0 = options->region.y0,
+             .width = width, .image = image,
              .row_end = row_end, .grid = grid, .aperture = aperture,
              .focal_distance = focal_distance,
              .settings = {options->max_depth, options->fast_inv_sqrt != 0,
@@ -504,6 +564,8 @@ rt_status rt_render_rows(const rt_scene *scene,
         if (j.settings.eye == NULL)
             return RT_ERR_NOMEM;
     }
+    j.camera.width = full_width;
+    j.camera.height = full_height;
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
     pthread_mutex_init(&j.callback_lock, NULL);
@@ -545,5 +607,5 @@ rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
 {
     if (scene == NULL || image == NULL)
         return RT_ERR_ARGUMENT;
-    return rt_render_rows(scene, options, 0, scene->camera.height, image);
+    return rt_render_rows(scene, options, 0, image->height, image);
 }

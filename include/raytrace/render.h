@@ -140,6 +140,15 @@ void rt_cancel_request(rt_cancel *cancel);
 void rt_cancel_reset(rt_cancel *cancel);
 int rt_cancel_requested(const rt_cancel *cancel);
 
+/*
+ * A rectangle of pixels of the image: columns x0 <= x < x1, rows
+ * y0 <= y < y1, with (0, 0) the top-left pixel.  All four zero: the whole
+ * image.
+ */
+typedef struct rt_region {
+    int x0, y0, x1, y1;
+} rt_region;
+
 typedef struct rt_render_options {
     int max_depth;              /* reflections after a primary ray; default 5 */
     int threads;                /* 0: one per online core (default); 1: the
@@ -163,17 +172,43 @@ typedef struct rt_render_options {
                                camera, today's rays exactly */
     double focal_distance;  /* f > 0 in scene units; 0 (the default): the
                                scene's (|AO| unless the file sets it) */
+    int width;              /* the image's size in pixels, each in
+                               1..RT_MAX_IMAGE_SIDE; 0 (the default): the */
+    int height;             /* scene's.  The screen keeps its width 2|AB|
+                               and the pixels stay square, so another ratio
+                               of width to height shows more or less of the
+                               scene above and below (docs/rendering-model.md,
+                               "Image size and regions") */
+    rt_region region;       /* the part of that image to render; the output
+                               image holds just it, and its pixels are those
+                               the whole image has there, byte for byte.
+                               Zero (the default): the whole image */
 } rt_render_options;
 
 /* Sets the defaults: max_depth 5, all cores, double precision, exact
  * square root, one sample per pixel, no callback, no stats, the fastest
- * kernel, the octree chosen by facet count.  Thread-safe. */
+ * kernel, the octree chosen by facet count, the scene's image size, the
+ * whole image.  Thread-safe. */
 void rt_render_options_init(rt_render_options *options);
 
 /*
- * Renders the whole image into `image`, which must be width x height of the
- * scene (see rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image
- * size, negative depth, samples not a square in 1..1024), RT_ERR_RANGE (a
+ * The size of the image a render of `scene` with `options` (NULL: the
+ * defaults) writes: the region's when one is set, else options->width x
+ * options->height (each 0 meaning the scene's).  RT_OK, or RT_ERR_ARGUMENT
+ * with the reason in *error (may be NULL) when a side is outside
+ * 1..RT_MAX_IMAGE_SIDE or the region is empty or reaches outside the
+ * image; *width and *height are then 0.  Thread-safe.
+ */
+rt_status rt_render_image_size(const rt_scene *scene,
+                               const rt_render_options *options, int *width,
+                               int *height, rt_error *error);
+
+/*
+ * Renders the image (or its region) into `image`, which must have the size
+ * rt_render_image_size gives: the scene's width x height by default (see
+ * rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image size, a
+ * bad size or region, negative depth, samples not a square in 1..1024),
+ * RT_ERR_RANGE (a
  * float render of a scene float cannot hold or resolve: see
  * rt_scene_check_precision), RT_ERR_NOMEM
  * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the
@@ -201,9 +236,10 @@ rt_status rt_scene_check_precision(const rt_scene *scene,
                                    rt_precision precision, rt_error *error);
 
 /*
- * Renders rows [row_begin, row_end) of the scene's image into the same rows
- * of `image` (a full-size image); other rows are not touched.  Same results
- * and status as rt_render.  Thread-safe on disjoint bands.
+ * Renders rows [row_begin, row_end) of `image` (of the size rt_render
+ * takes; with a region, row 0 is the region's top row); other rows are not
+ * touched, and on_row reports rows of `image`.  Same results and status as
+ * rt_render.  Thread-safe on disjoint bands.
  */
 rt_status rt_render_rows(const rt_scene *scene,
                          const rt_render_options *options, int row_begin,
