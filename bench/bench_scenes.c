@@ -1,7 +1,7 @@
 /*
  * bench_scenes.c - generated benchmark scenes (a tessellated sphere, a
- * random soup of triangles) and resizing a loaded scene, all through the
- * public scene builder (rt_scene_create).
+ * random soup of triangles), through the public scene builder
+ * (rt_scene_create).
  */
 #include <math.h>
 #include <stdint.h>
@@ -138,37 +138,4 @@ rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
     d.vertex_count = 3 * facets;
     d.facet_count = facets;
     return build(&d, v, f, scene, error);
-}
-
-rt_status bench_resize(const rt_scene *scene, int width, int height,
-                       rt_scene **resized, rt_error *error)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    rt_scene_desc d = {.observer = info.camera.observer,
-                       .screen_center = info.camera.screen_center,
-                       .width = width, .height = height,
-                       .vertex_count = info.vertex_count,
-                       .facet_count = info.facet_count,
-                       .background = info.background,
-                       .light_position = info.light_position,
-                       .light_color = info.light_color};
-    d.screen_right = (rt_vec3){info.camera.screen_center.x + info.camera.right.x,
-                               info.camera.screen_center.y + info.camera.right.y,
-                               info.camera.screen_center.z + info.camera.right.z};
-    size_t nv = info.vertex_count > 0 ? (size_t)info.vertex_count : 1;
-    size_t nf = info.facet_count > 0 ? (size_t)info.facet_count : 1;
-    rt_vec3 *v = malloc(nv * sizeof *v);
-    rt_facet_desc *f = malloc(nf * sizeof *f);
-    if (v == NULL || f == NULL)
-        return build(&d, v, f, resized, error);
-    for (int i = 0; i < info.vertex_count; i++)
-        v[i] = rt_scene_vertex(scene, i);
-    for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info fi;
-        rt_scene_facet(scene, i, &fi);
-        f[i] = (rt_facet_desc){{fi.vertex[0], fi.vertex[1], fi.vertex[2]},
-                               fi.k, fi.color};
-    }
-    return build(&d, v, f, resized, error);
 }

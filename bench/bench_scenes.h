@@ -1,7 +1,6 @@
 /*
  * bench_scenes.h - the scenes the performance benchmark renders besides
- * files: generated meshes of any size, and a loaded scene at another image
- * size.  Every generator is deterministic (a fixed LCG), so a facet count
+ * files: generated meshes of any size.  Every generator is deterministic (a fixed LCG), so a facet count
  * always gives the same scene.
  */
 #ifndef RAYTRACE_BENCH_SCENES_H
@@ -18,10 +17,5 @@ rt_status bench_sphere(int facets, int width, int height, rt_scene **scene,
  * third one reflective (k = 0.3). */
 rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
                      rt_error *error);
-
-/* `scene` rebuilt with another image size (same camera, vertices, facets,
- * light and background). */
-rt_status bench_resize(const rt_scene *scene, int width, int height,
-                       rt_scene **resized, rt_error *error);
 
 #endif /* RAYTRACE_BENCH_SCENES_H */

@@ -124,13 +124,8 @@ static rt_status make_scene(const entry *e, const char *shared_dir,
                           e->shared ? shared_dir : RT_SOURCE_DIR, e->path);
     if (length < 0 || (size_t)length >= sizeof path)
         return RT_ERR_ARGUMENT;
-    rt_scene *loaded;
-    rt_status status = rt_scene_load(path, &loaded, error);
-    if (status != RT_OK)
-        return status;
-    status = bench_resize(loaded, e->width, e->height, scene, error);
-    rt_scene_free(loaded);
-    return status;
+    /* Rendered at the entry's size through the render options. */
+    return rt_scene_load(path, scene, error);
 }
 
 /* Renders once with setting *s and adds the time to r->times; 0 on
@@ -145,6 +140,8 @@ static int measure_once(const rt_scene *scene, const setting *s,
     options.threads = s->threads;
     options.accel = s->accel;
     options.stats = &r->stats;
+    options.width = image->width;
+    options.height = image->height;
     double start = now();
     rt_status status = rt_render(scene, &options, image);
     if (status != RT_OK) {

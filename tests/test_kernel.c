@@ -20,16 +20,28 @@
 #include "scene_internal.h"
 #include "testutil.h"
 
-static rt_image render(const rt_scene *scene, rt_precision precision,
+/* The size to render at; 0: the scene's. */
+typedef struct image_size {
+    int width, height;
+} image_size;
+
+static const image_size full_size = {0, 0};
+
+static rt_image render(const rt_scene *scene, const image_size *size,
+                       rt_precision precision,
                        rt_kernel_choice kernel, int threads,
                        rt_render_stats *stats)
 {
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
+    options.width = size->width;
+    options.height = size->height;
+    rt_image image;
+    int width, height;
+    ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
+                                          NULL),
+                     RT_OK);
+    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
     options.precision = precision;
     options.kernel = kernel;
     options.threads = threads;
@@ -40,14 +52,18 @@ static rt_image render(const rt_scene *scene, rt_precision precision,
 
 /* Scalar on one thread is the reference; the fast kernel on 1 and 2
  * threads must give the same bytes, and cast the same rays. */
-static void check_scene(const rt_scene *scene, const char *name)
+static void check_scene(const rt_scene *scene, image_size size,
+                        const char *name)
 {
     for (int p = 0; p < 2; p++) {
         rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
         rt_render_stats s_ref, s_fast;
-        rt_image ref = render(scene, precision, RT_KERNEL_SCALAR, 1, &s_ref);
-        rt_image fast1 = render(scene, precision, RT_KERNEL_AUTO, 1, &s_fast);
-        rt_image fast2 = render(scene, precision, RT_KERNEL_AUTO, 2, NULL);
+        rt_image ref = render(scene, &size, precision, RT_KERNEL_SCALAR, 1,
+                              &s_ref);
+        rt_image fast1 = render(scene, &size, precision, RT_KERNEL_AUTO, 1,
+                                &s_fast);
+        rt_image fast2 = render(scene, &size, precision, RT_KERNEL_AUTO, 2,
+                                NULL);
         ck_assert_msg(rt_test_image_diff(&ref, &fast1, NULL) == 0,
                       "%s (%s): the fast kernel changed the image", name,
                       p ? "float" : "double");
@@ -74,7 +90,7 @@ START_TEST(project_scenes_render_identically_with_both_kernels)
         rt_error error;
         ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
                       "%s", error.message);
-        check_scene(scene, g.gl_pathv[i]);
+        check_scene(scene, (image_size){0, 0}, g.gl_pathv[i]);
         rt_scene_free(scene);
     }
     globfree(&g);
@@ -95,18 +111,15 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
     if (glob(pattern, 0, NULL, &g) != 0)
         return;
     for (size_t i = 0; i < g.gl_pathc; i++) {
-        rt_scene *loaded, *scene;
+        rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &loaded, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
                       "%s", error.message);
         /* 48 x 48 keeps the scalar renders of 10,000 facets short (and
          * 8 x 8 under valgrind) */
         int side = getenv("RT_TEST_MEMCHECK") ? 8 : 48;
-        ck_assert_int_eq(bench_resize(loaded, side, side, &scene, &error),
-                         RT_OK);
-        check_scene(scene, g.gl_pathv[i]);
+        check_scene(scene, (image_size){side, side}, g.gl_pathv[i]);
         rt_scene_free(scene);
-        rt_scene_free(loaded);
     }
     globfree(&g);
 }
@@ -118,10 +131,10 @@ START_TEST(generated_meshes_render_identically_with_both_kernels)
     rt_error error;
     int side = getenv("RT_TEST_MEMCHECK") ? 16 : 64;
     ck_assert_int_eq(bench_sphere(2000, side, side, &scene, &error), RT_OK);
-    check_scene(scene, "sphere");
+    check_scene(scene, (image_size){0, 0}, "sphere");
     rt_scene_free(scene);
     ck_assert_int_eq(bench_soup(2001, side, side, &scene, &error), RT_OK);
-    check_scene(scene, "soup");
+    check_scene(scene, (image_size){0, 0}, "soup");
     rt_scene_free(scene);
 }
 END_TEST
@@ -321,7 +334,8 @@ START_TEST(a_scene_without_reflective_facets_casts_no_reflection_ray)
     rt_error error;
     ck_assert_int_eq(bench_sphere(500, 32, 32, &scene, &error), RT_OK);
     rt_render_stats stats;
-    rt_image image = render(scene, RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 1,
+    rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
+                            RT_KERNEL_AUTO, 1,
                             &stats);
     ck_assert_uint_eq(stats.reflection_rays, 0);
     ck_assert_uint_gt(stats.reflection_rays_skipped, 0);
@@ -339,7 +353,8 @@ START_TEST(the_cubes_scene_casts_fewer_shadow_rays_than_it_has_hits)
                                    &scene, &error),
                      RT_OK);
     rt_render_stats stats;
-    rt_image image = render(scene, RT_PRECISION_DOUBLE, RT_KERNEL_AUTO, 0,
+    rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
+                            RT_KERNEL_AUTO, 0,
                             &stats);
     /* every hit either casts its shadow ray or skips it */
     uint64_t hits = stats.shadow_rays + stats.shadow_rays_skipped;

@@ -27,16 +27,28 @@
 
 static int memcheck(void) { return getenv("RT_TEST_MEMCHECK") != NULL; }
 
-static rt_image render(const rt_scene *scene, rt_precision precision,
+/* The size to render at; 0: the scene's. */
+typedef struct image_size {
+    int width, height;
+} image_size;
+
+static const image_size full_size = {0, 0};
+
+static rt_image render(const rt_scene *scene, const image_size *size,
+                       rt_precision precision,
                        rt_accel accel, int threads, int samples,
                        rt_render_stats *stats)
 {
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
+    options.width = size->width;
+    options.height = size->height;
+    rt_image image;
+    int width, height;
+    ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
+                                          NULL),
+                     RT_OK);
+    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
     options.precision = precision;
     options.accel = accel;
     options.threads = threads;
@@ -49,7 +61,8 @@ static rt_image render(const rt_scene *scene, rt_precision precision,
 
 /* Brute force on one thread against the octree on 1 and 3 threads, with 1
  * and 4 samples per pixel, in double and float. */
-static void check_scene(const rt_scene *scene, const char *name)
+static void check_scene(const rt_scene *scene, image_size size,
+                        const char *name)
 {
     for (int p = 0; p < 2; p++) {
         rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
@@ -59,11 +72,13 @@ static void check_scene(const rt_scene *scene, const char *name)
             continue;
         for (int samples = 1; samples <= 4; samples += 3) {
             rt_render_stats s_ref, s_oct;
-            rt_image ref = render(scene, precision, RT_ACCEL_NONE, 1, samples,
+            rt_image ref = render(scene, &size, precision, RT_ACCEL_NONE, 1,
+                                  samples,
                                   &s_ref);
-            rt_image one = render(scene, precision, RT_ACCEL_OCTREE, 1,
+            rt_image one = render(scene, &size, precision, RT_ACCEL_OCTREE, 1,
                                   samples, &s_oct);
-            rt_image three = render(scene, precision, RT_ACCEL_OCTREE, 3,
+            rt_image three = render(scene, &size, precision, RT_ACCEL_OCTREE,
+                                    3,
                                     samples, NULL);
             ck_assert_msg(rt_test_image_diff(&ref, &one, NULL) == 0,
                           "%s (%s, %d samples): the octree changed the image",
@@ -93,18 +108,16 @@ static size_t check_directory(const char *dir, int side)
     if (glob(pattern, 0, NULL, &g) != 0)
         return 0;
     for (size_t i = 0; i < g.gl_pathc; i++) {
-        rt_scene *loaded, *scene;
+        rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &loaded, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
                       "%s", error.message);
         rt_scene_info info;
-        rt_scene_get_info(loaded, &info);
+        rt_scene_get_info(scene, &info);
         int w = side && info.width > side ? side : info.width;
         int h = side && info.height > side ? side : info.height;
-        ck_assert_int_eq(bench_resize(loaded, w, h, &scene, &error), RT_OK);
-        check_scene(scene, g.gl_pathv[i]);
+        check_scene(scene, (image_size){w, h}, g.gl_pathv[i]);
         rt_scene_free(scene);
-        rt_scene_free(loaded);
     }
     size_t count = g.gl_pathc;
     globfree(&g);
@@ -128,12 +141,12 @@ START_TEST(generated_meshes_render_identically_through_the_octree)
     for (int i = 0; i < (memcheck() ? 2 : 3); i++) {
         ck_assert_int_eq(bench_sphere(sizes[i], side, side, &scene, &error),
                          RT_OK);
-        check_scene(scene, "sphere");
+        check_scene(scene, (image_size){0, 0}, "sphere");
         rt_scene_free(scene);
         ck_assert_int_eq(bench_soup(sizes[i] + 1, side, side, &scene,
                                     &error),
                          RT_OK);
-        check_scene(scene, "soup");
+        check_scene(scene, (image_size){0, 0}, "soup");
         rt_scene_free(scene);
     }
 }
@@ -230,7 +243,7 @@ START_TEST(facets_all_in_one_spot_render_identically)
              (rt_vec3){0, 50, -1}, 0.3);
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
                                  c, (rt_vec3){1, 1, 3}, memcheck() ? 12 : 48);
-    check_scene(scene, "one spot");
+    check_scene(scene, (image_size){0, 0}, "one spot");
     rt_scene_free(scene);
 }
 END_TEST
@@ -248,7 +261,7 @@ START_TEST(a_few_facets_spanning_everything_render_identically)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
                                  (rt_vec3){3, -4, 12}, memcheck() ? 12 : 48);
-    check_scene(scene, "spanning");
+    check_scene(scene, (image_size){0, 0}, "spanning");
     rt_scene_free(scene);
 }
 END_TEST
@@ -274,7 +287,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.3, -6, 1.5},
                                  (rt_vec3){0, 1, 0}, (rt_vec3){-2, -3, 4},
                                  memcheck() ? 12 : 56);
-    check_scene(scene, "slivers and walls");
+    check_scene(scene, (image_size){0, 0}, "slivers and walls");
     rt_scene_free(scene);
 }
 END_TEST
@@ -299,7 +312,7 @@ START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.5, -7, 6},
                                  (rt_vec3){0, 0, 0}, (rt_vec3){1, -2, 9},
                                  memcheck() ? 12 : 64);
-    check_scene(scene, "coincident");
+    check_scene(scene, (image_size){0, 0}, "coincident");
     rt_scene_free(scene);
 }
 END_TEST
@@ -320,12 +333,12 @@ START_TEST(far_and_inside_cameras_render_identically)
     rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
                                memcheck() ? 12 : 40);
-    check_scene(far, "far camera");
+    check_scene(far, (image_size){0, 0}, "far camera");
     rt_scene_free(far);
     rt_scene *inside = soup_scene(&t, (rt_vec3){0.01, 0.02, 0.03},
                                   (rt_vec3){1, 0.5, 0.2}, (rt_vec3){0, 0, 0},
                                   memcheck() ? 12 : 40);
-    check_scene(inside, "inside");
+    check_scene(inside, (image_size){0, 0}, "inside");
     rt_scene_free(inside);
 }
 END_TEST
@@ -357,7 +370,7 @@ START_TEST(transparency_lights_and_lens_render_identically)
         .more_lights = lights, .more_light_count = 2,
         .aperture = 0.05, .focal_distance = 4};
     rt_scene *scene = soup_create(&desc, &s);
-    check_scene(scene, "transparency, lights, lens");
+    check_scene(scene, (image_size){0, 0}, "transparency, lights, lens");
     rt_scene_free(scene);
 }
 END_TEST
@@ -389,9 +402,11 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
     rt_scene *scene = soup_create(&desc, &s);
     for (int samples = 1; samples <= 4; samples += 3) {
         rt_render_stats stats;
-        rt_image ref = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_NONE, 1,
+        rt_image ref = render(scene, &full_size, RT_PRECISION_DOUBLE,
+                              RT_ACCEL_NONE, 1,
                               samples, NULL);
-        rt_image tree = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_OCTREE, 2,
+        rt_image tree = render(scene, &full_size, RT_PRECISION_DOUBLE,
+                               RT_ACCEL_OCTREE, 2,
                                samples, &stats);
         ck_assert_int_eq(rt_test_image_diff(&ref, &tree, NULL), 0);
         ck_assert_int_eq(stats.accel_used, 1);
@@ -537,10 +552,12 @@ START_TEST(auto_uses_the_octree_from_the_threshold_on)
     ck_assert_int_eq(bench_soup(RT_ACCEL_AUTO_FACETS * 4, 8, 8, &big, &error),
                      RT_OK);
     rt_render_stats stats;
-    rt_image a = render(small, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO, 1, 1,
+    rt_image a = render(small, &full_size, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO,
+                        1, 1,
                         &stats);
     ck_assert_int_eq(stats.accel_used, 0);
-    rt_image b = render(big, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO, 1, 1,
+    rt_image b = render(big, &full_size, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO,
+                        1, 1,
                         &stats);
     ck_assert_int_eq(stats.accel_used, 1);
     ck_assert_uint_gt(stats.accel_leaves, 1);
@@ -562,9 +579,11 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     rt_error error;
     ck_assert_int_eq(bench_sphere(3000, 16, 16, &scene, &error), RT_OK);
     rt_render_stats first, second;
-    rt_image a = render(scene, RT_PRECISION_FLOAT, RT_ACCEL_OCTREE, 2, 1,
+    rt_image a = render(scene, &full_size, RT_PRECISION_FLOAT,
+                        RT_ACCEL_OCTREE, 2, 1,
                         &first);
-    rt_image b = render(scene, RT_PRECISION_FLOAT, RT_ACCEL_OCTREE, 1, 1,
+    rt_image b = render(scene, &full_size, RT_PRECISION_FLOAT,
+                        RT_ACCEL_OCTREE, 1, 1,
                         &second);
     ck_assert_double_eq(first.accel_build_seconds,
                         second.accel_build_seconds);
@@ -588,7 +607,8 @@ START_TEST(a_degenerate_scene_keeps_the_octree_bounded)
     rt_scene *scene = soup_scene(&s, (rt_vec3){1, -30, 1}, c,
                                  (rt_vec3){5, -5, 20}, 4);
     rt_render_stats stats;
-    rt_image image = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_OCTREE, 1, 1,
+    rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
+                            RT_ACCEL_OCTREE, 1, 1,
                             &stats);
     ck_assert_int_le(stats.accel_depth, 16);
     ck_assert_uint_le(stats.accel_references,
