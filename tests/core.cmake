@@ -9,6 +9,7 @@ foreach(suite
     test_reflect
     test_ppm
     test_render
+    test_render_size
     test_extension
     test_readers)
   raytrace_add_suite(${suite})

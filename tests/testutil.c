@@ -47,10 +47,13 @@ rt_scene *rt_test_scene_from_string(const char *text)
 rt_image rt_test_render_with(const rt_scene *scene,
                              const rt_render_options *options)
 {
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
+    int width, height;
+    rt_error error;
+    ck_assert_msg(rt_render_image_size(scene, options, &width, &height,
+                                       &error) == RT_OK,
+                  "%s", error.message);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
     ck_assert_int_eq(rt_render(scene, options, &image), RT_OK);
     return image;
 }

@@ -26,8 +26,8 @@ const char *rt_test_shared_path(const char *relative);
  * message if it does not load. */
 rt_scene *rt_test_scene_from_string(const char *text);
 
-/* Renders `scene` with `options` into a new image; fails the test if the
- * render does not succeed. */
+/* Renders `scene` with `options` into a new image of the size they ask
+ * for; fails the test if the render does not succeed. */
 rt_image rt_test_render_with(const rt_scene *scene,
                              const rt_render_options *options);
 
