@@ -1,5 +1,5 @@
 /*
- * camera.c - the camera frame of SPEC.md section 2 and primary rays.
+ * camera.c - the camera frame of docs/rendering-model.md and primary rays.
  *
  * The screen's right half-width AB is made perpendicular to the viewing axis
  * AO by projection when the scene file's B is not; the up half-height AC

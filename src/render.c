@@ -148,7 +148,8 @@ static double hash_unit(uint32_t a, uint32_t b, uint32_t c)
 }
 
 /* The primary ray through the point (x, y) of the image plane, in pixel
- * units from the top-left corner (SPEC.md section 2 with i + 1/2 -> x). */
+ * units from the top-left corner (docs/rendering-model.md, "The camera",
+ * with i + 1/2 -> x). */
 static rt_ray camera_ray_at(const rt_camera *camera, double x, double y)
 {
     double w = camera->width, h = camera->height;

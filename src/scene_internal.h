@@ -51,7 +51,7 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
                           rt_error *error);
 
 /*
- * Computes the camera of SPEC.md section 2 (aperture 0, focal distance
+ * Computes the camera of docs/rendering-model.md (aperture 0, focal distance
  * |AO|: the pinhole camera).  Returns NULL on success, or a
  * phrase saying what is degenerate ("the observer O is the screen centre A").
  */

@@ -2,7 +2,8 @@
  * raytrace/raytrace.h - the whole public API of libraytrace in one include.
  *
  * libraytrace renders scenes of triangles lit by one point light, Whitted
- * style (hard shadows, mirror reflections), as docs/ and SPEC.md describe.
+ * style (hard shadows, mirror reflections), as docs/rendering-model.md
+ * describes.
  *
  *     rt_scene *scene;
  *     rt_error error;

@@ -1,7 +1,8 @@
 /*
  * raytrace/render.h - turning a scene into pixels.
  *
- * Whitted ray tracing as SPEC.md section 3 defines it: one primary ray through
+ * Whitted ray tracing as docs/rendering-model.md defines it: one primary ray
+ * through
  * each pixel centre, the nearest facet (by brute force or through an octree,
  * with the same result), a shadow ray to the point light, mirror reflections
  * up to a depth, real-valued colours rounded once per pixel.  Rendering only
@@ -159,7 +160,7 @@ typedef struct rt_render_options {
                                    instead of 1/sqrt; default 0 */
     int samples;                /* rays per pixel, a square n*n; default 1:
                                    one ray through the pixel's centre, as
-                                   SPEC.md says; the pixel is their mean */
+                                   the model says; the pixel is their mean */
     rt_sampling sampling;       /* default RT_SAMPLING_REGULAR */
     rt_row_callback on_row;     /* optional progress / cancellation */
     rt_cancel *cancel;          /* optional: cancels within one pixel */
@@ -212,8 +213,8 @@ rt_status rt_render_image_size(const rt_scene *scene,
  * float render of a scene float cannot hold or resolve: see
  * rt_scene_check_precision), RT_ERR_NOMEM
  * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the
- * others hold whatever they held before).  Thread-safe as long as no two calls write the
- * same rows of the same image.
+ * others hold whatever they held before).  Thread-safe as long as no two
+ * calls write the same rows of the same image.
  */
 rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
                     rt_image *image);
@@ -246,7 +247,8 @@ rt_status rt_render_rows(const rt_scene *scene,
                          int row_end, rt_image *image);
 
 /*
- * The real-valued colour carried by `ray` (SPEC.md section 3), following at
+ * The real-valued colour carried by `ray` (docs/rendering-model.md, "What a
+ * ray sees"), following at
  * most `max_depth` reflections; the direction need not be unit length.
  * The value is not clamped.  Thread-safe.
  */

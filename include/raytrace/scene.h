@@ -25,7 +25,7 @@
 extern "C" {
 #endif
 
-/* Limits the loader enforces (SPEC.md section 1). */
+/* Limits the loader enforces (docs/scene-format.md). */
 #define RT_MAX_IMAGE_SIDE 16384
 
 typedef struct rt_scene rt_scene;
@@ -44,7 +44,8 @@ typedef struct rt_warning {
 } rt_warning;
 
 /*
- * The camera after validation (SPEC.md section 2): the observer, the screen
+ * The camera after validation (docs/rendering-model.md, "The camera"): the
+ * observer, the screen
  * centre A, the right half-width AB (B projected onto the screen plane when
  * the file's B was not perpendicular) and the up half-height AC with
  * |AC| = |AB| and (AB, AC, AO) right-handed.
@@ -245,9 +246,10 @@ void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
 /* The i-th warning (0-based, i < warning_count).  Thread-safe. */
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
 
-/* The primary ray of pixel (column i, row j from the top), SPEC.md section 2:
- * from the observer through the pixel's centre; direction not normalised.
- * Thread-safe. */
+/* The primary ray of pixel (column i, row j from the top) of the camera's
+ * width x height image, as docs/rendering-model.md ("The camera") defines
+ * it: from the observer through the pixel's centre; direction not
+ * normalised.  Thread-safe. */
 rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
 
 /* A ray-facet intersection. */

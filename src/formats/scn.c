@@ -1,5 +1,5 @@
 /*
- * scn.c - the `.scn` scene format (SPEC.md section 1), read from
+ * scn.c - the `.scn` scene format (docs/scene-format.md), read from
  * memory into an rt_scene_desc and handed to the scene builder.
  *
  * The reader goes record by record over the lines that hold something

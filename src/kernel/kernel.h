@@ -5,9 +5,9 @@
  * compiled twice, by kernel_double.c and kernel_float.c, so both precisions
  * run exactly the same algorithm:
  * the watertight intersection test, the error-bounded offset of secondary
- * ray origins, and the shading of SPEC.md section 3.  A kernel is built from
- * a scene's facet records and holds, in its own precision, only what the
- * renderer reads: the facets that can be hit and their precomputed data.
+ * ray origins, and the shading of docs/rendering-model.md.  A kernel is
+ * built from a scene's facet records and holds, in its own precision, only
+ * what the renderer reads: the facets that can be hit and their precomputed data.
  * A kernel is immutable once built: any number of threads may trace with it.
  * Its octree (octree_impl.h) is built on first request, once, under a lock
  * (rt__kernel_*_octree_prepare, thread-safe), and only read afterwards;

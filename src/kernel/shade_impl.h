@@ -1,8 +1,8 @@
 /*
  * shade_impl.h - what happens at a hit: the hit point and its error bound,
  * the offset origin of secondary rays, the direct light and the reflections
- * of SPEC.md section 3 (part of kernel_impl.h, compiled once per precision;
- * everything here but KERNEL(trace) is static).
+ * of docs/rendering-model.md (part of kernel_impl.h, compiled once per
+ * precision; everything here but KERNEL(trace) is static).
  *
  * Secondary rays: the hit point is computed from barycentric weights with
  * its rounding-error bound, and the new ray starts just beyond that bound
