@@ -59,6 +59,7 @@ if(RAYTRACE_VIEWER_ENABLED)
   find_package(Threads REQUIRED)
 
   add_library(raytrace_viewer STATIC
+    viewer/view_app.c
     viewer/view_scene.c
     viewer/view_session.c
     viewer/view_window.c)

@@ -1,12 +1,11 @@
 /*
- * view_scene.h - what rt-view does with scene files besides rendering them:
- * loading one at a chosen resolution, and naming the image saved beside it.
+ * view_scene.h - what rt-view does with files besides rendering them:
+ * loading a scene, noticing that its file changed (--watch), and choosing
+ * the names `S` saves to so that no save ever replaces an earlier one.
  *
- * Scaling rebuilds the scene through the public builder (rt_scene_create)
- * with the same camera, geometry and light and a width and height
- * multiplied by the factor: the picture is the same, with more or fewer
- * pixels.  A factor of 1 keeps the loaded scene untouched, so the viewer's
- * image is then exactly rt-export's.  Thread-safe.
+ * The image size is a render option (rt_render_options.width/height), so
+ * nothing here copies or rebuilds a scene: --scale only computes a width
+ * and height from the scene's (view_scale_side).  Thread-safe.
  */
 #ifndef VIEW_SCENE_H
 #define VIEW_SCENE_H
@@ -19,33 +18,53 @@
 #define VIEW_MIN_SCALE 0.01
 #define VIEW_MAX_SCALE 64.0
 
-/*
- * Loads the scene at `path` and renders it at `scale` times its size
- * (rounded, at least 1 pixel).  Errors are rt_scene_load's, or
- * RT_ERR_LIMIT / RT_ERR_ARGUMENT with a message naming the path when the
- * scaled size is out of range.  *scene is NULL on failure.
- */
-rt_status view_scene_load(const char *path, double scale, rt_scene **scene,
-                          rt_error *error);
+/* Loads the scene at `path` with the loader's options (NULL: the
+ * defaults): rt_scene_load_with, whose messages are FILE:LINE:COLUMN:
+ * MESSAGE.  *scene is NULL on failure. */
+rt_status view_scene_load(const char *path, const rt_load_options *options,
+                          rt_scene **scene, rt_error *error);
 
-/* The same with the loader's options (format, tessellation, view, lights;
- * NULL: the defaults). */
-rt_status view_scene_load_with(const char *path, double scale,
-                               const rt_load_options *options,
-                               rt_scene **scene, rt_error *error);
-
-/* The same scene at `scale` times its size, as a new scene. */
-rt_status view_scene_rescale(const rt_scene *scene, const char *name,
-                             double scale, rt_scene **scaled,
-                             rt_error *error);
+/* `side` pixels times `scale`, rounded to nearest, at least 1 (it may
+ * exceed RT_MAX_IMAGE_SIDE: the render then refuses the size). */
+int view_scale_side(int side, double scale);
 
 /*
- * Where `S` saves the image of `scene_path`: the same directory and name
- * with `extension` (".png", ".ppm") instead of `.scn` (appended when the
- * name has another extension or none).  Returns 0 when it does not fit in
+ * The stem `S` saves beside: the scene's directory and name with
+ * `extension` (".png", ".ppm") instead of `.scn` (appended when the name
+ * has another extension or none).  Returns 0 when it does not fit in
  * `size`.
  */
 int view_scene_image_path(const char *scene_path, const char *extension,
                           char *buffer, size_t size);
+
+/*
+ * Claims the first free numbered name beside `path` ("dir/cubes.png"):
+ * "dir/cubes-1.png", "dir/cubes-2.png", ..., or with a `tag`
+ * ("partial") "dir/cubes-partial-1.png", ...  A name is claimed by
+ * creating it empty and exclusively (O_CREAT | O_EXCL), so two savers never
+ * get the same name and an existing file is never a candidate; the caller
+ * then writes the image over the empty file (rt_image_save) or removes it.
+ * Returns 1 with the name in `buffer`, or 0 with the reason in `error`
+ * (the name too long, the folder missing or read-only ...).
+ */
+int view_save_claim_numbered(const char *path, const char *tag, char *buffer,
+                             size_t size, rt_error *error);
+
+/* What --watch compares to notice that a file changed: its identity
+ * (device and inode: an editor that saves by renaming gives a new one), its
+ * size and its modification time. */
+typedef struct view_file_stamp {
+    int exists;
+    unsigned long long device, inode;
+    long long size;
+    long long mtime_seconds;
+    long mtime_nanoseconds;
+} view_file_stamp;
+
+/* Reads the stamp of `path` (exists = 0 when it cannot be stat'ed). */
+void view_file_stamp_read(const char *path, view_file_stamp *stamp);
+
+/* Non-zero when the two stamps are the same. */
+int view_file_stamp_equal(const view_file_stamp *a, const view_file_stamp *b);
 
 #endif /* VIEW_SCENE_H */

@@ -68,13 +68,8 @@ static int on_row(void *user, int row)
 static void *worker_main(void *arg)
 {
     view_session *session = arg;
-    rt_render_options options;
-    rt_render_options_init(&options);
-    options.max_depth = session->options.max_depth;
-    options.threads = session->options.threads;
-    options.samples = session->options.samples;
-    options.aperture = session->options.aperture;
-    options.focal_distance = session->options.focal_distance;
+    rt_render_options options = session->options.render;
+    options.stats = NULL;
     options.on_row = on_row;
     options.user = session;
     options.cancel = session->cancel;
@@ -98,16 +93,12 @@ static void *worker_main(void *arg)
 void view_session_options_init(view_session_options *options)
 {
     memset(options, 0, sizeof *options);
-    options->max_depth = RT_DEFAULT_DEPTH;
-    options->threads = 0;
-    options->samples = 1;
-    options->aperture = -1.0;
-    options->focal_distance = 0.0;
+    rt_render_options_init(&options->render);
 }
 
 rt_status view_session_create(rt_scene *scene,
                               const view_session_options *options,
-                              view_session **out)
+                              view_session **out, rt_error *error)
 {
     *out = NULL;
     view_session_options defaults;
@@ -115,10 +106,23 @@ rt_status view_session_create(rt_scene *scene,
         view_session_options_init(&defaults);
         options = &defaults;
     }
-    if (options->max_depth < 0 || options->max_depth > VIEW_MAX_DEPTH ||
-        options->threads < 0) {
+    int width, height;
+    rt_status status = rt_render_image_size(scene, &options->render, &width,
+                                            &height, error);
+    if (status == RT_OK && (options->render.max_depth < 0 ||
+                            options->render.max_depth > VIEW_MAX_DEPTH ||
+                            options->render.threads < 0)) {
+        status = RT_ERR_ARGUMENT;
+        if (error) {
+            memset(error, 0, sizeof *error);
+            error->status = status;
+            snprintf(error->message, sizeof error->message,
+                     "depth or threads out of range");
+        }
+    }
+    if (status != RT_OK) {
         rt_scene_free(scene);
-        return RT_ERR_ARGUMENT;
+        return status;
     }
     view_session *session = calloc(1, sizeof *session);
     if (session == NULL) {
@@ -132,13 +136,10 @@ rt_status view_session_create(rt_scene *scene,
     session->cancel = rt_cancel_create();
     atomic_init(&session->wake_pending, 0);
 
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    rt_status status = rt_image_create(&session->image, info.width,
-                                       info.height);
+    status = rt_image_create(&session->image, width, height);
     if (status == RT_OK) {
-        session->done = calloc((size_t)info.height, 1);
-        session->fresh = calloc((size_t)info.height, 1);
+        session->done = calloc((size_t)height, 1);
+        session->fresh = calloc((size_t)height, 1);
         if (session->done == NULL || session->fresh == NULL)
             status = RT_ERR_NOMEM;
     }
@@ -222,7 +223,7 @@ rt_status view_session_set_depth(view_session *session, int max_depth)
 {
     if (max_depth < 0 || max_depth > VIEW_MAX_DEPTH)
         return RT_ERR_ARGUMENT;
-    session->options.max_depth = max_depth;
+    session->options.render.max_depth = max_depth;
     return RT_OK;
 }
 
@@ -264,7 +265,7 @@ void view_session_get_progress(view_session *session,
     progress->state = session->state;
     progress->rows_done = session->rows_done;
     progress->rows_total = session->image.height;
-    progress->max_depth = session->options.max_depth;
+    progress->max_depth = session->options.render.max_depth;
     progress->status = session->status;
     progress->generation = session->generation;
     double end = session->state == VIEW_RENDERING ? now_seconds()

@@ -25,8 +25,9 @@
 
 #include "raytrace/raytrace.h"
 
-/* Deepest reflection depth the viewer offers (the library has no limit). */
-#define VIEW_MAX_DEPTH 100
+/* Deepest reflection depth the viewer accepts: rt-export's limit
+ * (apps/common/cli.h, CLI_MAX_DEPTH); the library itself has none. */
+#define VIEW_MAX_DEPTH 1000000
 
 typedef struct view_session view_session;
 
@@ -37,13 +38,10 @@ typedef struct view_session view_session;
 typedef void (*view_notify_func)(void *context);
 
 typedef struct view_session_options {
-    int max_depth;              /* 0..VIEW_MAX_DEPTH; default RT_DEFAULT_DEPTH */
-    int threads;                /* as rt_render_options.threads; default 0 */
-    int samples;                /* as rt_render_options.samples; default 1 */
-    double aperture;            /* as rt_render_options; default -1: the
-                                   scene's */
-    double focal_distance;      /* as rt_render_options; default 0: the
-                                   scene's */
+    rt_render_options render;   /* every render option: depth (at most
+                                   VIEW_MAX_DEPTH), threads, samples, size,
+                                   region ...; on_row, user and cancel are
+                                   the session's own and ignored here */
     view_notify_func notify;    /* optional */
     void *notify_context;
 } view_session_options;
@@ -67,18 +65,20 @@ typedef struct view_progress {
     unsigned generation;        /* increases with each start */
 } view_progress;
 
-/* Sets the defaults: depth RT_DEFAULT_DEPTH, all cores, no notify. */
+/* Sets the defaults: rt_render_options_init's, no notify. */
 void view_session_options_init(view_session_options *options);
 
 /*
  * Creates a session for `scene`, which it takes over (freed by
- * view_session_destroy, also on failure).  The image is allocated black.
- * Returns RT_OK, RT_ERR_NOMEM or RT_ERR_ARGUMENT (depth out of range);
- * *session is NULL on failure.
+ * view_session_destroy, also on failure).  The image has the size
+ * rt_render_image_size gives for the options, allocated black.  Returns
+ * RT_OK, RT_ERR_NOMEM or RT_ERR_ARGUMENT (depth out of range, or a size or
+ * region the scene's image cannot have: the reason in *error, which may be
+ * NULL); *session is NULL on failure.
  */
 rt_status view_session_create(rt_scene *scene,
                               const view_session_options *options,
-                              view_session **session);
+                              view_session **session, rt_error *error);
 
 /* Cancels any render, joins its thread and frees everything.  NULL is a
  * no-op. */

@@ -53,6 +53,58 @@ void view_fit_size(int width, int height, int max_width, int max_height,
     *out_height = h < 1 ? 1 : h > max_height ? max_height : h;
 }
 
+/* Drivers that show nothing to anyone. */
+static int headless_driver(const char *name)
+{
+    return strcmp(name, "offscreen") == 0 || strcmp(name, "dummy") == 0 ||
+           strcmp(name, "evdev") == 0;
+}
+
+/* Through the environment rather than SDL_HINT_VIDEODRIVER, which SDL
+ * before 2.0.22 does not read. */
+static int try_driver(const char *name)
+{
+    setenv("SDL_VIDEODRIVER", name, 1);
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO) == 0)
+        return 1;
+    unsetenv("SDL_VIDEODRIVER");
+    return 0;
+}
+
+int view_video_init(char *error, size_t error_size)
+{
+    const char *asked = SDL_getenv("SDL_VIDEODRIVER");
+    if (asked != NULL && asked[0] != '\0') {
+        if (SDL_InitSubSystem(SDL_INIT_VIDEO) == 0)
+            return 1;
+        snprintf(error, error_size, "%s", SDL_GetError());
+        return 0;
+    }
+    const char *runtime_dir = SDL_getenv("XDG_RUNTIME_DIR");
+    const char *display = SDL_getenv("DISPLAY");
+    const char *wayland = SDL_getenv("WAYLAND_DISPLAY");
+    int tried = 0;
+    for (int i = 0; i < SDL_GetNumVideoDrivers(); i++) {
+        const char *name = SDL_GetVideoDriver(i);
+        if (headless_driver(name) ||
+            (strcmp(name, "wayland") == 0 && runtime_dir == NULL))
+            continue;
+        if (try_driver(name))
+            return 1;
+        /* The first failure says most (x11's, with DISPLAY set). */
+        if (tried++ == 0)
+            snprintf(error, error_size, "%s%s%s", SDL_GetError(),
+                     display ? " with DISPLAY=" : "", display ? display : "");
+    }
+    if ((display == NULL || display[0] == '\0') &&
+        (wayland == NULL || wayland[0] == '\0'))
+        snprintf(error, error_size,
+                 "no display (DISPLAY and WAYLAND_DISPLAY are not set)");
+    else if (tried == 0)
+        snprintf(error, error_size, "this SDL has no display driver");
+    return 0;
+}
+
 view_window *view_window_create(const char *title, int width, int height,
                                 unsigned flags, char *error,
                                 size_t error_size)

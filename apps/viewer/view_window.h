@@ -32,6 +32,18 @@ enum {
 #define VIEW_CHECKER_SIZE 8
 
 /*
+ * Starts SDL's video on a display a person can see, or fails with the
+ * reason in `error` and SDL not started.  When SDL_VIDEODRIVER names a
+ * driver, that one is used, whatever it is (the tests ask for "dummy").
+ * Otherwise every compiled-in driver but the headless ones is tried in
+ * SDL's order: SDL would otherwise fall back to "offscreen" when there is
+ * no display, and a window nobody can see or close would never end.
+ * Wayland is not tried without XDG_RUNTIME_DIR (its client library only
+ * prints an error then).  Returns 1 on success.
+ */
+int view_video_init(char *error, size_t error_size);
+
+/*
  * Opens a resizable window of width x height pixels with a renderer.
  * `flags` combines VIEW_WINDOW_*.  Returns NULL on failure with SDL's
  * reason in `error` ("cannot create window: ...").

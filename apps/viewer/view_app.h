@@ -1,0 +1,89 @@
+/*
+ * view_app.h - rt-view itself, less its command line: the window, the
+ * scene it shows, the keys, reloading (R, --watch), saving (S) and the
+ * event loop.  apps/rt-view.c parses the options and calls this; the tests
+ * drive the same functions directly on SDL's dummy driver.
+ *
+ * The rules it keeps:
+ *   - a reload reads the file again; when it fails, the picture shown stays
+ *     and the error (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the
+ *     title;
+ *   - S never replaces an image saved before: a complete image goes to
+ *     `-o PATH` the first time, else to the first free numbered name
+ *     (SCENE-1.png, SCENE-2.png ..., or PATH's stem numbered the same way),
+ *     and an image still rendering to SCENE-partial-N.png, so a partial
+ *     image can never take a complete one's place;
+ *   - the exit status is 128 + the signal after SIGINT, SIGTERM or SIGHUP,
+ *     1 when a scene was asked for and none ever loaded, else 0.
+ *
+ * Threading: main thread only (SDL's rule), after view_video_init.
+ */
+#ifndef VIEW_APP_H
+#define VIEW_APP_H
+
+#include <stddef.h>
+
+#include "raytrace/raytrace.h"
+#include "view_session.h"
+
+#define VIEW_WATCH_MS 250   /* how often --watch looks at the file */
+
+typedef struct view_app_options {
+    rt_render_options render;   /* every render option; width and height 0
+                                   (the scene's) unless --size said */
+    double scale;               /* when width and height are 0: the scene's
+                                   size times this (1: the scene's) */
+    const rt_load_options *load;/* the loader's options, NULL: defaults;
+                                   must outlive the app */
+    const char *output;         /* -o PATH, or NULL: beside the scene */
+    rt_image_format format;     /* of the saves */
+    int watch;                  /* --watch: reload when the file changes */
+    unsigned window_flags;      /* VIEW_WINDOW_*; the window starts hidden
+                                   whatever they say */
+} view_app_options;
+
+typedef struct view_app view_app;
+
+/* Defaults: rt_render_options_init's, scale 1, PNG when this build writes
+ * it (else binary PPM), no -o, no watch. */
+void view_app_options_init(view_app_options *options);
+
+/* Opens the (hidden) window.  SDL's video must be started.  NULL on
+ * failure, with the reason in `error`. */
+view_app *view_app_create(const view_app_options *options, char *error,
+                          size_t error_size);
+
+/* Cancels the render, waits for its threads, closes the window.  NULL is
+ * a no-op. */
+void view_app_destroy(view_app *app);
+
+/* Loads `path` and renders it in place of the current scene; it becomes
+ * the file R and --watch reload.  Returns 1, or 0 when it did not load
+ * (the current picture stays; the error is shown). */
+int view_app_open(view_app *app, const char *path);
+
+/* R: view_app_open on the current file again (0 when there is none). */
+int view_app_reload(view_app *app);
+
+/* --watch: reloads when the file's stamp differs from the one it had when
+ * last read.  Returns 1 when it reloaded (successfully or not). */
+int view_app_check_watch(view_app *app);
+
+/* S: saves what is rendered so far by the rules above; returns 1 with the
+ * path written in `path`, or 0 (the reason shown). */
+int view_app_save(view_app *app, char *path, size_t size);
+
+/* Shows the window and runs the event loop until Q, Esc, closing the
+ * window or a termination signal. */
+void view_app_run(view_app *app);
+
+/* The exit status the rules above give. */
+int view_app_exit_status(const view_app *app);
+
+/* The session shown, or NULL before a scene loaded. */
+view_session *view_app_session(view_app *app);
+
+/* The last error shown ("" when the last action succeeded). */
+const char *view_app_message(const view_app *app);
+
+#endif /* VIEW_APP_H */
