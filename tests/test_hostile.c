@@ -1181,7 +1181,8 @@ START_TEST(export_exit_codes_say_what_went_wrong)
          "rt-export: no/such/dir/x.ppm: cannot write the image: the "
          "folder no/such/dir/ does not exist\n"},
         {{"scene.scn", "--depth", "-1", NULL}, 2,
-         "rt-export: expected a depth in 0..1000000, found '-1'\n"
+         "rt-export: --depth: expected an integer in 0..1000000, found "
+         "'-1'\n"
          "Try 'rt-export --help'.\n"},
         {{NULL}, 2,
          "rt-export: expected a scene file\nTry 'rt-export --help'.\n"},

@@ -1,0 +1,257 @@
+/*
+ * cli_report.c - the progress line and the statistics of a render (see
+ * cli_report.h).  The JSON is written by hand: a flat object of numbers
+ * and a few strings, so a library would buy nothing; strings are escaped
+ * as RFC 8259 asks.
+ */
+#include "cli_report.h"
+
+#include <stdint.h>
+#include <string.h>
+
+double cli_seconds_since(const struct timespec *t)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - t->tv_sec) +
+           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
+}
+
+void cli_progress_start(cli_progress *progress, FILE *out, int terminal,
+                        const char *name, int rows, int width, int samples)
+{
+    *progress = (cli_progress){.out = out, .name = name,
+                               .terminal = terminal, .rows = rows,
+                               .rays_per_row = (double)width * samples};
+    clock_gettime(CLOCK_MONOTONIC, &progress->start);
+    progress->last = progress->start;
+}
+
+/* "12.3 s", "4 min 05 s", "1 h 02 min" */
+static void format_duration(double seconds, char *out, size_t size)
+{
+    if (seconds < 60.0)
+        snprintf(out, size, "%.1f s", seconds);
+    else if (seconds < 3600.0)
+        snprintf(out, size, "%d min %02d s", (int)(seconds / 60.0),
+                 (int)seconds % 60);
+    else
+        snprintf(out, size, "%d h %02d min", (int)(seconds / 3600.0),
+                 (int)(seconds / 60.0) % 60);
+}
+
+/* "812k", "3.41M": three significant digits and an SI prefix. */
+static void format_rate(double rate, char *out, size_t size)
+{
+    static const char *prefixes[] = {"", "k", "M", "G", "T"};
+    int p = 0;
+    while (rate >= 1000.0 && p < 4) {
+        rate /= 1000.0;
+        p++;
+    }
+    snprintf(out, size, "%.3g%s", rate, prefixes[p]);
+}
+
+static void draw(cli_progress *p, double elapsed)
+{
+    char spent[32], left[32], rate[32];
+    format_duration(elapsed, spent, sizeof spent);
+    format_duration(elapsed * (p->rows - p->done) / p->done, left,
+                    sizeof left);
+    format_rate(p->rays_per_row * p->done / (elapsed > 0 ? elapsed : 1e-9),
+                rate, sizeof rate);
+    /* the trailing spaces wipe a longer line drawn before */
+    fprintf(p->out, "%srendering %s: %3d%%, %s, %s left, %s camera rays/s%s",
+            p->terminal ? "\r" : "", p->name,
+            (int)(100.0 * p->done / p->rows), spent, left, rate,
+            p->terminal ? "   " : "\n");
+    fflush(p->out);
+    p->shown = 1;
+}
+
+int cli_progress_row(void *user, int row)
+{
+    (void)row;
+    cli_progress *p = user;
+    p->done++;
+    double elapsed = cli_seconds_since(&p->start);
+    double interval = p->terminal ? 0.1 : 1.0;
+    if (elapsed < 0.5 ||
+        (cli_seconds_since(&p->last) < interval && p->done < p->rows))
+        return 1;
+    clock_gettime(CLOCK_MONOTONIC, &p->last);
+    draw(p, elapsed);
+    return 1;
+}
+
+void cli_progress_end(cli_progress *progress)
+{
+    if (progress->shown && progress->terminal)
+        fputc('\n', progress->out);
+}
+
+/* ------------------------------------------------------------------ */
+
+static const char *precision_name(rt_precision p)
+{
+    return p == RT_PRECISION_FLOAT ? "float" : "double";
+}
+
+static const char *kernel_name(rt_kernel_choice k)
+{
+    return k == RT_KERNEL_SCALAR ? "scalar" : "auto";
+}
+
+static const char *accel_name(rt_accel a)
+{
+    return a == RT_ACCEL_NONE     ? "none"
+           : a == RT_ACCEL_OCTREE ? "octree"
+                                  : "auto";
+}
+
+void cli_print_stats_text(FILE *out, const rt_render_stats *s,
+                          const cli_render_report *r)
+{
+    const rt_render_options *o = &r->settings->render;
+    double tests_per_second = s->seconds > 0 ? s->ray_facet_tests / s->seconds
+                                             : 0.0;
+    unsigned long long cast = s->camera_rays + s->shadow_rays +
+                              s->reflection_rays + s->refraction_rays;
+    fprintf(out,
+            "rays: %llu camera, %llu shadow, %llu reflection, %llu refraction "
+            "(%llu in all)\n"
+            "skipped by the scene analysis: %llu shadow rays "
+            "(N.S <= 0 or d = 0), %llu reflection rays (k = 0), %llu "
+            "refraction rays (depth limit or total internal reflection; "
+            "none where t = 0)\n"
+            "ray-facet tests: %llu (%.3g per second); %llu more without the "
+            "analysis and early exits\n"
+            "time: load %.3f s, render %.3f s (%s threads, %s kernel, %s), "
+            "write %.3f s\n",
+            (unsigned long long)s->camera_rays,
+            (unsigned long long)s->shadow_rays,
+            (unsigned long long)s->reflection_rays,
+            (unsigned long long)s->refraction_rays, cast,
+            (unsigned long long)s->shadow_rays_skipped,
+            (unsigned long long)s->reflection_rays_skipped,
+            (unsigned long long)s->refraction_rays_skipped,
+            (unsigned long long)s->ray_facet_tests, tests_per_second,
+            (unsigned long long)s->ray_facet_tests_skipped, r->load_seconds,
+            s->seconds, o->threads == 0 ? "all" : "the given",
+            o->kernel == RT_KERNEL_SCALAR ? "scalar" : "fast",
+            precision_name(o->precision), r->write_seconds);
+    if (!s->accel_used)
+        return;
+    uint64_t queries = s->accel_queries ? s->accel_queries : 1;
+    fprintf(out,
+            "octree: built in %.3f s; %llu leaves, depth %d, %.2f references "
+            "per facet (+%llu slivers in every ray's list), %.1f MB\n"
+            "octree per query: %.2f leaves visited, %.2f facets tested "
+            "(brute force: %llu); %llu queries left to brute force\n",
+            s->accel_build_seconds, (unsigned long long)s->accel_leaves,
+            s->accel_depth,
+            s->accel_facets > 0
+                ? (double)s->accel_references / (double)s->accel_facets
+                : 0.0,
+            (unsigned long long)s->accel_always, s->accel_bytes / 1e6,
+            (double)s->accel_leaves_visited / queries,
+            (double)s->accel_facet_tests / queries,
+            (unsigned long long)s->accel_facets,
+            (unsigned long long)s->accel_fallbacks);
+}
+
+/* A JSON string: quotes, backslashes and control characters escaped;
+ * other bytes as they are (scene names are the user's bytes). */
+static void json_string(FILE *out, const char *text)
+{
+    fputc('"', out);
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
+        if (*c == '"' || *c == '\\')
+            fprintf(out, "\\%c", *c);
+        else if (*c < 0x20)
+            fprintf(out, "\\u%04x", *c);
+        else
+            fputc(*c, out);
+    }
+    fputc('"', out);
+}
+
+static void json_u64(FILE *out, const char *name, uint64_t value,
+                     const char *after)
+{
+    fprintf(out, "\"%s\":%llu%s", name, (unsigned long long)value, after);
+}
+
+static void print_json_octree(FILE *out, const rt_render_stats *s)
+{
+    if (!s->accel_used) {
+        fputs("\"octree\":null", out);
+        return;
+    }
+    fprintf(out, "\"octree\":{\"build_seconds\":%.6f,", s->accel_build_seconds);
+    json_u64(out, "nodes", s->accel_nodes, ",");
+    json_u64(out, "leaves", s->accel_leaves, ",");
+    fprintf(out, "\"depth\":%d,", s->accel_depth);
+    json_u64(out, "references", s->accel_references, ",");
+    json_u64(out, "always_tested", s->accel_always, ",");
+    json_u64(out, "bytes", s->accel_bytes, ",");
+    json_u64(out, "queries", s->accel_queries, ",");
+    json_u64(out, "leaves_visited", s->accel_leaves_visited, ",");
+    json_u64(out, "facet_tests", s->accel_facet_tests, ",");
+    json_u64(out, "fallbacks", s->accel_fallbacks, ",");
+    json_u64(out, "facets", s->accel_facets, "}");
+}
+
+static void print_json_settings(FILE *out, const cli_render_report *r)
+{
+    const rt_render_options *o = &r->settings->render;
+    const rt_region *g = &o->region;
+    fprintf(out, "\"full_width\":%d,\"full_height\":%d,", r->full_width,
+            r->full_height);
+    if (g->x0 || g->y0 || g->x1 || g->y1)
+        fprintf(out, "\"region\":[%d,%d,%d,%d],", g->x0, g->y0, g->x1, g->y1);
+    else
+        fputs("\"region\":null,", out);
+    fprintf(out, "\"threads\":%d,\"precision\":\"%s\",\"fast_sqrt\":%s,"
+                 "\"depth\":%d,\"samples\":%d,\"sampling\":\"%s\","
+                 "\"kernel\":\"%s\",\"accel\":\"%s\",",
+            o->threads, precision_name(o->precision),
+            o->fast_inv_sqrt ? "true" : "false", o->max_depth, o->samples,
+            o->sampling == RT_SAMPLING_STRATIFIED ? "stratified" : "regular",
+            kernel_name(o->kernel), accel_name(o->accel));
+}
+
+void cli_print_stats_json(FILE *out, const rt_render_stats *s,
+                          const cli_render_report *r)
+{
+    fputs("{\"program\":", out);
+    json_string(out, r->program);
+    fputs(",\"version\":", out);
+    json_string(out, rt_version_string());
+    fputs(",\"scene\":", out);
+    json_string(out, r->scene);
+    fputs(",\"output\":", out);
+    json_string(out, r->output);
+    fprintf(out, ",\"format\":\"%s\",\"width\":%d,\"height\":%d,",
+            rt_image_format_name(r->format), r->width, r->height);
+    json_u64(out, "pixels", s->pixels, ",");
+    print_json_settings(out, r);
+    fprintf(out, "\"seconds\":{\"load\":%.6f,\"render\":%.6f,"
+                 "\"write\":%.6f},",
+            r->load_seconds, s->seconds, r->write_seconds);
+    fputs("\"rays\":{", out);
+    json_u64(out, "camera", s->camera_rays, ",");
+    json_u64(out, "shadow", s->shadow_rays, ",");
+    json_u64(out, "reflection", s->reflection_rays, ",");
+    json_u64(out, "refraction", s->refraction_rays, ",");
+    json_u64(out, "total", s->camera_rays + s->shadow_rays +
+                               s->reflection_rays + s->refraction_rays,
+             "},\"rays_skipped\":{");
+    json_u64(out, "shadow", s->shadow_rays_skipped, ",");
+    json_u64(out, "reflection", s->reflection_rays_skipped, ",");
+    json_u64(out, "refraction", s->refraction_rays_skipped, "},");
+    json_u64(out, "ray_facet_tests", s->ray_facet_tests, ",");
+    json_u64(out, "ray_facet_tests_skipped", s->ray_facet_tests_skipped, ",");
+    print_json_octree(out, s);
+    fputs("}\n", out);
+}
