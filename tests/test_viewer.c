@@ -13,6 +13,7 @@
  */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <pthread.h>
 #include <semaphore.h>
@@ -20,12 +21,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
 #include "testutil.h"
+#include "view_app.h"
 #include "view_scene.h"
 #include "view_session.h"
 #include "view_window.h"
@@ -689,6 +693,323 @@ START_TEST(bad_scene_reports_file_line_and_column)
 }
 END_TEST
 
+/* two-facets.scn with the background `background` ("30, 30, 60"). */
+static void write_scene(const char *path, const char *background)
+{
+    FILE *file = fopen(path, "w");
+    ck_assert_msg(file != NULL, "cannot write %s", path);
+    fprintf(file,
+            "0,0,10\n0,0,5, 4,0,5, 64,48\n6\n"
+            "-9.37,-5.73,0\n9.71,-5.38,0\n0.31,13.1,0\n"
+            "-1.13,-1.27,2\n1.58,-0.93,2\n-0.17,1.74,2\n2\n"
+            "1,2,3, 0, 180,180,180\n4,5,6, 0.4, 40,120,255\n"
+            "%s\n-3.875,0.125,4, 255,255,255\n",
+            background);
+    ck_assert_int_eq(fclose(file), 0);
+}
+
+/* Moves the file's modification time `seconds` on, so that --watch sees a
+ * change even on a file system with coarse times. */
+static void touch_later(const char *path, int seconds)
+{
+    struct stat info;
+    ck_assert_int_eq(stat(path, &info), 0);
+    struct timespec times[2] = {info.st_atim, info.st_mtim};
+    times[1].tv_sec += seconds;
+    ck_assert_int_eq(utimensat(AT_FDCWD, path, times, 0), 0);
+}
+
+/* An rt-view on the dummy driver, saving binary PPM; `samples` rays a
+ * pixel on one thread. */
+static view_app *open_app_with(const char *output, int watch, int samples)
+{
+    setenv("SDL_VIDEODRIVER", "dummy", 0);
+    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
+                  SDL_GetError());
+    view_app_options options;
+    view_app_options_init(&options);
+    options.format = RT_IMAGE_P6;
+    options.output = output;
+    options.watch = watch;
+    options.window_flags = VIEW_WINDOW_SOFTWARE;
+    if (samples > 1) {
+        options.render.samples = samples;
+        options.render.threads = 1;
+    }
+    char error[256];
+    view_app *app = view_app_create(&options, error, sizeof error);
+    ck_assert_msg(app != NULL, "%s", error);
+    return app;
+}
+
+static view_app *open_app(const char *output, int watch)
+{
+    return open_app_with(output, watch, 1);
+}
+
+static void close_app(view_app *app)
+{
+    view_app_destroy(app);
+    SDL_Quit();
+}
+
+/* The finished image of the app's session. */
+static const rt_image *finished_image(view_app *app)
+{
+    view_session *session = view_app_session(app);
+    ck_assert_ptr_nonnull(session);
+    ck_assert_int_eq(wait_until_finished(session), VIEW_DONE);
+    return view_session_image(session);
+}
+
+/* The background colour of the image's top-left pixel (two-facets shows
+ * the background there). */
+static int shows_background(const rt_image *image, int r, int g, int b)
+{
+    const unsigned char *pixel = rt_image_pixel(image, 0, 0);
+    return pixel[0] == r && pixel[1] == g && pixel[2] == b;
+}
+
+START_TEST(reload_reads_the_edited_file)
+{
+    write_scene("viewer-reload.scn", "30, 30, 60");
+    view_app *app = open_app(NULL, 0);
+    ck_assert(view_app_open(app, "viewer-reload.scn"));
+    ck_assert(shows_background(finished_image(app), 30, 30, 60));
+    write_scene("viewer-reload.scn", "200, 10, 10");
+    ck_assert(view_app_reload(app));
+    ck_assert(shows_background(finished_image(app), 200, 10, 10));
+    ck_assert_str_eq(view_app_message(app), "");
+    close_app(app);
+    remove("viewer-reload.scn");
+}
+END_TEST
+
+START_TEST(failing_reload_keeps_the_picture_and_reports_the_error)
+{
+    write_scene("viewer-broken.scn", "30, 30, 60");
+    view_app *app = open_app(NULL, 0);
+    ck_assert(view_app_open(app, "viewer-broken.scn"));
+    const rt_image *before = finished_image(app);
+    view_session *session = view_app_session(app);
+    write_scene("viewer-broken.scn", "30, 30");
+    ck_assert(!view_app_reload(app));
+    ck_assert_ptr_eq(view_app_session(app), session);
+    ck_assert_ptr_eq(finished_image(app), before);
+    ck_assert(shows_background(before, 30, 30, 60));
+    /* FILE:LINE:COLUMN: the background is line 13. */
+    ck_assert_msg(strncmp(view_app_message(app), "viewer-broken.scn:13:",
+                          21) == 0,
+                  "%s", view_app_message(app));
+    /* Fixed, it loads again and the error goes. */
+    write_scene("viewer-broken.scn", "10, 200, 10");
+    ck_assert(view_app_reload(app));
+    ck_assert(shows_background(finished_image(app), 10, 200, 10));
+    ck_assert_str_eq(view_app_message(app), "");
+    ck_assert_int_eq(view_app_exit_status(app), 0);
+    close_app(app);
+    remove("viewer-broken.scn");
+}
+END_TEST
+
+START_TEST(watch_reloads_when_the_file_changes_and_only_then)
+{
+    write_scene("viewer-watch.scn", "30, 30, 60");
+    view_app *app = open_app(NULL, 1);
+    ck_assert(view_app_open(app, "viewer-watch.scn"));
+    ck_assert(shows_background(finished_image(app), 30, 30, 60));
+    ck_assert(!view_app_check_watch(app));
+    write_scene("viewer-watch.scn", "60, 30, 30");
+    touch_later("viewer-watch.scn", 2);
+    ck_assert(view_app_check_watch(app));
+    ck_assert(shows_background(finished_image(app), 60, 30, 30));
+    ck_assert(!view_app_check_watch(app));
+    /* Removed (an editor between delete and rename): nothing happens, and
+     * the new file is read when it appears. */
+    remove("viewer-watch.scn");
+    ck_assert(!view_app_check_watch(app));
+    ck_assert_str_eq(view_app_message(app), "");
+    write_scene("viewer-watch.scn", "30, 60, 30");
+    ck_assert(view_app_check_watch(app));
+    ck_assert(shows_background(finished_image(app), 30, 60, 30));
+    close_app(app);
+    remove("viewer-watch.scn");
+}
+END_TEST
+
+/* The file's bytes, or fails. */
+static char *read_file(const char *path, size_t *size)
+{
+    FILE *file = fopen(path, "rb");
+    ck_assert_msg(file != NULL, "cannot read %s", path);
+    char *data = malloc(1 << 20);
+    ck_assert(data != NULL);
+    *size = fread(data, 1, 1 << 20, file);
+    fclose(file);
+    return data;
+}
+
+START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
+{
+    remove("viewer-save-1.ppm");
+    remove("viewer-save-2.ppm");
+    remove("viewer-save-3.ppm");
+    write_scene("viewer-save.scn", "30, 30, 60");
+    /* A file of that name from before is not a candidate. */
+    write_scene("viewer-save-1.ppm", "not an image");
+    view_app *app = open_app(NULL, 0);
+    ck_assert(view_app_open(app, "viewer-save.scn"));
+    finished_image(app);
+    char path[256];
+    ck_assert(view_app_save(app, path, sizeof path));
+    ck_assert_str_eq(path, "viewer-save-2.ppm");
+    size_t first_size;
+    char *first = read_file(path, &first_size);
+
+    write_scene("viewer-save.scn", "200, 10, 10");
+    ck_assert(view_app_reload(app));
+    finished_image(app);
+    ck_assert(view_app_save(app, path, sizeof path));
+    ck_assert_str_eq(path, "viewer-save-3.ppm");
+    size_t again_size;
+    char *again = read_file("viewer-save-2.ppm", &again_size);
+    ck_assert(first_size == again_size &&
+              memcmp(first, again, first_size) == 0);
+    free(again);
+    again = read_file("viewer-save-1.ppm", &again_size);
+    ck_assert(strstr(again, "not an image") != NULL);
+
+    rt_image saved;
+    rt_error error;
+    ck_assert_int_eq(rt_ppm_load("viewer-save-3.ppm", &saved, &error),
+                     RT_OK);
+    ck_assert(shows_background(&saved, 200, 10, 10));
+    rt_image_destroy(&saved);
+    free(first);
+    free(again);
+    close_app(app);
+    remove("viewer-save.scn");
+    remove("viewer-save-1.ppm");
+    remove("viewer-save-2.ppm");
+    remove("viewer-save-3.ppm");
+}
+END_TEST
+
+START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
+{
+    remove("viewer-out.ppm");
+    remove("viewer-out-1.ppm");
+    remove("viewer-out-partial-1.ppm");
+    write_scene("viewer-mid.scn", "30, 30, 60");
+    view_app *app = open_app("viewer-out.ppm", 0);
+    ck_assert(view_app_open(app, "viewer-mid.scn"));
+    finished_image(app);
+    char path[256];
+    ck_assert(view_app_save(app, path, sizeof path));
+    ck_assert_str_eq(path, "viewer-out.ppm");
+    /* A second complete save goes beside -o's path. */
+    ck_assert(view_app_save(app, path, sizeof path));
+    ck_assert_str_eq(path, "viewer-out-1.ppm");
+    close_app(app);
+    size_t first_size;
+    char *first = read_file("viewer-out.ppm", &first_size);
+
+    /* 1024 rays a pixel on one thread, stopped at once: surely unfinished
+     * when S is pressed. */
+    app = open_app_with("viewer-out.ppm", 0, 1024);
+    ck_assert(view_app_open(app, "viewer-mid.scn"));
+    view_session *session = view_app_session(app);
+    view_session_cancel(session);
+    view_progress progress;
+    view_session_get_progress(session, &progress);
+    ck_assert_int_lt(progress.rows_done, progress.rows_total);
+    ck_assert(view_app_save(app, path, sizeof path));
+    ck_assert_str_eq(path, "viewer-out-partial-1.ppm");
+    size_t again_size;
+    char *again = read_file("viewer-out.ppm", &again_size);
+    ck_assert(first_size == again_size &&
+              memcmp(first, again, first_size) == 0);
+    free(first);
+    free(again);
+    close_app(app);
+    remove("viewer-mid.scn");
+    remove("viewer-out.ppm");
+    remove("viewer-out-1.ppm");
+    remove("viewer-out-partial-1.ppm");
+}
+END_TEST
+
+START_TEST(numbered_names_are_claimed_exclusively)
+{
+    char a[64], b[64];
+    rt_error error;
+    remove("viewer-claim-1.png");
+    remove("viewer-claim-2.png");
+    ck_assert(view_save_claim_numbered("viewer-claim.png", NULL, a, sizeof a,
+                                       &error));
+    ck_assert(view_save_claim_numbered("viewer-claim.png", NULL, b, sizeof b,
+                                       &error));
+    ck_assert_str_eq(a, "viewer-claim-1.png");
+    ck_assert_str_eq(b, "viewer-claim-2.png");
+    ck_assert(view_save_claim_numbered("dir.d/plain", "partial", a, sizeof a,
+                                       &error) == 0);
+    ck_assert_msg(strstr(error.message, "dir.d/plain-partial-1") != NULL,
+                  "%s", error.message);
+    ck_assert(!view_save_claim_numbered("viewer-claim.png", NULL, a, 8,
+                                        &error));
+    remove("viewer-claim-1.png");
+    remove("viewer-claim-2.png");
+}
+END_TEST
+
+START_TEST(a_scene_that_never_loaded_exits_1_when_the_window_closes)
+{
+    view_app *app = open_app(NULL, 0);
+    ck_assert(!view_app_open(app, "viewer-no-such-scene.scn"));
+    SDL_Event quit;
+    SDL_zero(quit);
+    quit.type = SDL_QUIT;
+    ck_assert_int_eq(SDL_PushEvent(&quit), 1);
+    view_app_run(app);
+    ck_assert_int_eq(view_app_exit_status(app), 1);
+    close_app(app);
+
+    /* No scene asked for, or one that loaded: 0. */
+    app = open_app(NULL, 0);
+    ck_assert_int_eq(SDL_PushEvent(&quit), 1);
+    view_app_run(app);
+    ck_assert_int_eq(view_app_exit_status(app), 0);
+    ck_assert(view_app_open(app, rt_test_source_path("scenes/empty.scn")));
+    ck_assert_int_eq(view_app_exit_status(app), 0);
+    close_app(app);
+}
+END_TEST
+
+START_TEST(without_a_display_rt_view_says_so_and_exits_1_at_once)
+{
+    char command[4096];
+    snprintf(command, sizeof command,
+             "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "
+             "timeout -s KILL 10 '%s' '%s' 2>viewer-nodisplay.txt",
+             RT_VIEW_PATH, rt_test_source_path("scenes/cubes.scn"));
+    double start = now_seconds();
+    int status = system(command);
+    double seconds = now_seconds() - start;
+    ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 1,
+                  "status %d after %.2f s", status, seconds);
+    ck_assert_msg(seconds < 2.0, "took %.2f s", seconds);
+    size_t size;
+    char *message = read_file("viewer-nodisplay.txt", &size);
+    message[size] = '\0';
+    ck_assert_msg(strstr(message, "rt-view: cannot open a window: ") ==
+                          message &&
+                      strstr(message, "rt-export renders without a display"),
+                  "%s", message);
+    free(message);
+    remove("viewer-nodisplay.txt");
+}
+END_TEST
+
 static Suite *viewer_suite(void)
 {
     Suite *suite = suite_create("viewer");
@@ -718,7 +1039,21 @@ static Suite *viewer_suite(void)
     tcase_add_test(helpers,
                    size_beyond_the_image_limit_is_refused_with_a_reason);
     tcase_add_test(helpers, bad_scene_reports_file_line_and_column);
+    tcase_add_test(helpers, numbered_names_are_claimed_exclusively);
     suite_add_tcase(suite, helpers);
+
+    TCase *app = tcase_create("app");
+    tcase_set_timeout(app, 120);
+    tcase_add_test(app, reload_reads_the_edited_file);
+    tcase_add_test(app, failing_reload_keeps_the_picture_and_reports_the_error);
+    tcase_add_test(app, watch_reloads_when_the_file_changes_and_only_then);
+    tcase_add_test(app, saves_are_numbered_and_never_replace_an_earlier_one);
+    tcase_add_test(app,
+                   a_save_mid_render_is_partial_and_replaces_no_complete_one);
+    tcase_add_test(app,
+                   a_scene_that_never_loaded_exits_1_when_the_window_closes);
+    tcase_add_test(app, without_a_display_rt_view_says_so_and_exits_1_at_once);
+    suite_add_tcase(suite, app);
     return suite;
 }
 
