@@ -41,6 +41,14 @@ endif()
 install(EXPORT raytraceTargets
   NAMESPACE raytrace::
   DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")
+# raytrace::imgsdl, the course's libimgsdl (src/in104/imgsdl), in a file of
+# its own: it needs SDL2, which raytraceConfig.cmake looks for only then.
+get_property(_rt_imgsdl_exported GLOBAL PROPERTY RAYTRACE_IMGSDL_EXPORTED)
+if(_rt_imgsdl_exported)
+  install(EXPORT raytraceImgsdlTargets
+    NAMESPACE raytrace::
+    DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")
+endif()
 configure_package_config_file(
   "${PROJECT_SOURCE_DIR}/cmake/raytraceConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/raytraceConfig.cmake"

@@ -58,3 +58,39 @@ if(TARGET in104-render)
   set_tests_properties(in104_render_example_fails_on_a_missing_scene
                        PROPERTIES WILL_FAIL TRUE)
 endif()
+
+# The course's libutil (issue 18): splitLine and fastInvSqrt.
+raytrace_add_suite(test_in104_util LIBS raytrace::util)
+
+# kit_ppm: the image checks of the kit's tests (here and tests/kit.cmake).
+add_executable(kit_ppm kit_ppm.c)
+raytrace_set_warnings(kit_ppm)
+
+# The course's libimgsdl (issue 18), when SDL2 is found: a tests_imgsdl-style
+# program whose main() is the library's, on SDL's dummy video driver.
+if(TARGET raytrace::imgsdl)
+  add_executable(in104_imgsdl_student in104_imgsdl_student.c)
+  target_link_libraries(in104_imgsdl_student PRIVATE raytrace::imgsdl)
+  raytrace_set_warnings(in104_imgsdl_student)
+  set(imgsdl_env SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy)
+  set(imgsdl_out "${CMAKE_CURRENT_BINARY_DIR}/imgsdl-gradient.ppm")
+  add_test(NAME imgsdl_main_draws_the_scene_and_writes_IMGSDL_OUTPUT
+           COMMAND in104_imgsdl_student "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn")
+  set_tests_properties(imgsdl_main_draws_the_scene_and_writes_IMGSDL_OUTPUT
+    PROPERTIES ENVIRONMENT "${imgsdl_env};IMGSDL_OUTPUT=${imgsdl_out}"
+               FIXTURES_SETUP imgsdl_drawn)
+  add_test(NAME imgsdl_output_is_the_picture_traceSDLScene_drew
+           COMMAND kit_ppm gradient "${imgsdl_out}" 40 30)
+  set_tests_properties(imgsdl_output_is_the_picture_traceSDLScene_drew
+    PROPERTIES FIXTURES_REQUIRED imgsdl_drawn)
+  add_test(NAME imgsdl_main_without_a_scene_prints_its_usage
+           COMMAND in104_imgsdl_student)
+  add_test(NAME imgsdl_main_stops_when_parse_fails
+           COMMAND in104_imgsdl_student no-such-scene.scn)
+  set_tests_properties(imgsdl_main_without_a_scene_prints_its_usage
+    PROPERTIES ENVIRONMENT "${imgsdl_env}"
+               PASS_REGULAR_EXPRESSION "usage: [^\n]* SCENE\\.scn")
+  set_tests_properties(imgsdl_main_stops_when_parse_fails
+    PROPERTIES ENVIRONMENT "${imgsdl_env}"
+               PASS_REGULAR_EXPRESSION "imgsdl: cannot read the scene no-such-scene\\.scn")
+endif()

@@ -28,6 +28,7 @@
 
 #include "kernel.h"
 
+#include "fast_inv_sqrt.h"
 #include "real_impl.h"
 
 /* A facet that can be hit, with what shading needs precomputed. */

@@ -21,24 +21,13 @@ static inline REAL get(vec a, int axis) { return axis == 0 ? a.x : axis == 1 ? a
 static inline vec from_rt(rt_vec3 v) { return mk((REAL)v.x, (REAL)v.y, (REAL)v.z); }
 static inline rt_vec3 to_rt(vec v) { return (rt_vec3){v.x, v.y, v.z}; }
 
-/* The handout's fastInvSqrt: a bit-level first guess refined by one Newton
- * step (Lomont, "Fast Inverse Square Root", 2003, gives the constants). */
+/* The handout's fastInvSqrt in this precision (fast_inv_sqrt.h: one
+ * definition for the kernel and the course's libraytrace-util). */
 static REAL fast_inv_sqrt(REAL x)
 {
-    if (sizeof(REAL) == sizeof(float)) {
-        float f = (float)x;
-        uint32_t i;
-        memcpy(&i, &f, sizeof i);
-        i = 0x5f3759dfu - (i >> 1);
-        memcpy(&f, &i, sizeof f);
-        return (REAL)(f * (1.5f - 0.5f * (float)x * f * f));
-    }
-    double d = (double)x;
-    uint64_t i;
-    memcpy(&i, &d, sizeof i);
-    i = 0x5fe6eb50c7b537a9u - (i >> 1);
-    memcpy(&d, &i, sizeof d);
-    return (REAL)(d * (1.5 - 0.5 * (double)x * d * d));
+    if (sizeof(REAL) == sizeof(float))
+        return (REAL)rt_fast_inv_sqrtf((float)x);
+    return (REAL)rt_fast_inv_sqrt((double)x);
 }
 
 /* a / |a| without overflow or underflow; zero stays zero. */
