@@ -27,74 +27,46 @@
 #include <unistd.h>
 
 #include "raytrace/raytrace.h"
+#include "cli.h"
 #include "metrics.h"
 #include "output_file.h"
 #include "plot.h"
 #include "report.h"
 
 #define EXIT_BAD_INPUT 1
-#define EXIT_USAGE 2
 
 #define MAX_RUNS 99
 #define MAX_CONFIGS 64
 #define DEPTH_CAP 64            /* deepest reference the bound may ask for */
 #define DEPTH_TOLERANCE 1e-3    /* truncation bound of the reference, levels */
 
-static const char usage[] =
-    "usage: rt-bench SCENE.scn [--out DIR] [--size WxH] [--threads N]\n"
-    "                [--runs N] [--ref-samples N] [--max-samples N]\n"
-    "                [--compare EARLIER.csv] [--quiet]\n"
-    "       rt-bench SCENE.scn --dof [--aperture A] [--focus F] [options]\n"
-    "\n"
+static const char description[] =
     "Measures what the accuracy knobs of the renderer cost and buy on one\n"
     "scene: prints a table and writes DIR/accuracy-NAME-WxH.csv (every\n"
     "setting), DIR/accuracy-NAME-WxH-depth.csv (depth truncation against\n"
     "its bound) and DIR/accuracy-NAME-WxH.svg (error against time, log\n"
     "axes, Pareto front).  docs/accuracy.md explains how to read them.\n"
-    "\n"
-    "  --out DIR          where to write the files (default .)\n"
-    "  --size WxH         render at this size instead of the scene's (the\n"
-    "                     screen keeps its width; pixels stay square)\n"
-    "  --threads N        rendering threads; 0 = one per core (default 0)\n"
-    "  --runs N           timed renders per setting, >= 5 (default 5)\n"
-    "  --ref-samples N    rays per pixel of the reference, a square\n"
-    "                     (default 256, 1024 with --dof; raised if its\n"
-    "                     grid would nest a tested one)\n"
-    "  --max-samples N    leave out settings with more rays per pixel\n"
-    "                     (default 16; 64 with --dof)\n"
-    "  --compare CSV      compare with the CSV of an earlier run: errors\n"
-    "                     must be equal, times within the spread\n"
-    "  --dof              depth of field instead: double, depth 5, 1, 4,\n"
-    "                     16, 64 rays per pixel on regular and stratified\n"
-    "                     grids (they sample the lens too) against a\n"
-    "                     reference of 1024 (--ref-samples); writes\n"
-    "                     DIR/accuracy-dof-NAME-WxH.{csv,svg}; the camera\n"
-    "                     needs a lens (the scene's, or --aperture)\n"
-    "  --aperture A       lens radius a >= 0 in scene units instead of the\n"
-    "                     scene's (0: pinhole)\n"
-    "  --focus F          focal distance f > 0 instead of the scene's\n"
-    "  -q, --quiet        no progress lines\n"
-    "  -h, --help         this help\n"
-    "\n"
+    "With --dof it measures depth of field instead (the camera needs a\n"
+    "lens: the scene's, or --aperture).  The size, the lens and the\n"
+    "threads are the render options every program takes; the precision,\n"
+    "square root, samples and depth are what it sweeps.";
+
+static const char epilogue[] =
     "Settings are named 'PRECISION[+fast] dDEPTH SAMPLES[r|s]': float+fast\n"
     "d2 16s is float arithmetic, fastInvSqrt, depth 2, 16 rays per pixel\n"
     "on a stratified 4x4 grid (r: regular grid; no letter: one ray through\n"
     "the pixel centre).  Exit status: 0 success, 1 bad scene, failed render\n"
-    "or write, or errors that differ from --compare's, 2 bad usage.\n";
+    "or write, or errors that differ from --compare's, 2 bad usage.";
 
 typedef struct arguments {
+    cli_settings cli;           /* size, lens, threads, quiet, the scene */
     const char *scene;
     const char *out;
     const char *compare;
-    int width, height;          /* 0: the scene's own */
-    int threads;
     int runs;
     int ref_samples;
     int max_samples;
-    int quiet;
     int dof;                    /* the depth-of-field sweep */
-    double aperture;            /* < 0: the scene's */
-    double focus;               /* 0: the scene's */
 } arguments;
 
 /* The knobs of one render. */
@@ -119,25 +91,6 @@ typedef struct config {
  * docs/accuracy.md and bench_depth_bound in bench/metrics.h). */
 typedef bench_depth_bound depth_bound;
 
-static int usage_error(const char *fmt, const char *value)
-{
-    fprintf(stderr, "rt-bench: ");
-    fprintf(stderr, fmt, value);
-    fprintf(stderr, "\nTry 'rt-bench --help'.\n");
-    return EXIT_USAGE;
-}
-
-static int parse_int(const char *text, int min, int max, int *value)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (errno != 0 || end == text || *end != '\0' || v < min || v > max)
-        return 0;
-    *value = (int)v;
-    return 1;
-}
-
 static int square_root(int n)
 {
     int root = 1;
@@ -146,159 +99,50 @@ static int square_root(int n)
     return root * root == n ? root : 0;
 }
 
-/* Returns -1 to go on, or an exit status. */
+/* Returns CLI_CONTINUE to go on, or an exit status. */
 static int parse_arguments(int argc, char **argv, arguments *a)
 {
-    *a = (arguments){.out = ".", .runs = 5, .ref_samples = 0,
-                     .max_samples = 0, .aperture = -1.0};
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        const char *value = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--size") ||
-                          !strcmp(arg, "--threads") ||
-                          !strcmp(arg, "--runs") ||
-                          !strcmp(arg, "--ref-samples") ||
-                          !strcmp(arg, "--max-samples") ||
-                          !strcmp(arg, "--compare") ||
-                          !strcmp(arg, "--aperture") ||
-                          !strcmp(arg, "--focus");
-        if (takes_value && value == NULL)
-            return usage_error("option '%s' needs a value", arg);
-        if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
-            fputs(usage, stdout);
-            return EXIT_SUCCESS;
-        } else if (!strcmp(arg, "--out")) {
-            a->out = value;
-        } else if (!strcmp(arg, "--compare")) {
-            a->compare = value;
-        } else if (!strcmp(arg, "--size")) {
-            char extra;
-            if (sscanf(value, "%dx%d%c", &a->width, &a->height, &extra) != 2 ||
-                a->width < 1 || a->width > RT_MAX_IMAGE_SIDE ||
-                a->height < 1 || a->height > RT_MAX_IMAGE_SIDE)
-                return usage_error("expected WIDTHxHEIGHT (each in "
-                                   "1..16384) after --size, found '%s'",
-                                   value);
-        } else if (!strcmp(arg, "--threads")) {
-            if (!parse_int(value, 0, 1024, &a->threads))
-                return usage_error("expected a thread count in 0..1024, "
-                                   "found '%s'", value);
-        } else if (!strcmp(arg, "--runs")) {
-            if (!parse_int(value, 5, MAX_RUNS, &a->runs))
-                return usage_error("expected a run count in 5..99, "
-                                   "found '%s'", value);
-        } else if (!strcmp(arg, "--ref-samples")) {
-            if (!parse_int(value, 1, 1024, &a->ref_samples) ||
-                !square_root(a->ref_samples))
-                return usage_error("expected a square sample count in "
-                                   "1..1024 after --ref-samples, found '%s'",
-                                   value);
-        } else if (!strcmp(arg, "--max-samples")) {
-            if (!parse_int(value, 1, 1024, &a->max_samples))
-                return usage_error("expected a sample count in 1..1024, "
-                                   "found '%s'", value);
-        } else if (!strcmp(arg, "--aperture") || !strcmp(arg, "--focus")) {
-            int aperture = !strcmp(arg, "--aperture");
-            char *end;
-            errno = 0;
-            double v = strtod(value, &end);
-            if (errno != 0 || end == value || *end != '\0' || !isfinite(v) ||
-                (aperture ? v < 0.0 : v <= 0.0))
-                return usage_error(aperture ? "expected an aperture a >= 0 "
-                                              "after --aperture, found '%s'"
-                                            : "expected a focal distance "
-                                              "f > 0 after --focus, found "
-                                              "'%s'",
-                                   value);
-            if (aperture)
-                a->aperture = v;
-            else
-                a->focus = v;
-        } else if (!strcmp(arg, "--dof")) {
-            a->dof = 1;
-        } else if (!strcmp(arg, "-q") || !strcmp(arg, "--quiet")) {
-            a->quiet = 1;
-        } else if (arg[0] == '-' && arg[1] != '\0') {
-            return usage_error("unknown option '%s'", arg);
-        } else if (a->scene == NULL) {
-            a->scene = arg;
-        } else {
-            return usage_error("expected one scene, found a second: '%s'",
-                               arg);
-        }
-        i += takes_value;
-    }
-    if (a->scene == NULL)
-        return usage_error("%s", "expected a scene file");
+    a->out = ".";
+    a->compare = NULL;
+    a->runs = 5;
+    a->ref_samples = 0;
+    a->max_samples = 0;
+    a->dof = 0;
+    const cli_option own[] = {
+        {"out", 0, "DIR", CLI_STRING, 0, 0, &a->out,
+         "where to write the files (default .)"},
+        {"runs", 0, "N", CLI_INT, 5, MAX_RUNS, &a->runs,
+         "timed renders per setting (default 5)"},
+        {"ref-samples", 0, "N", CLI_SQUARE, 1, CLI_MAX_SAMPLES,
+         &a->ref_samples,
+         "rays per pixel of the reference, a square (default 256, 1024 "
+         "with --dof; raised if its grid would nest a tested one)"},
+        {"max-samples", 0, "N", CLI_INT, 1, CLI_MAX_SAMPLES, &a->max_samples,
+         "leave out settings with more rays per pixel (default 16; 64 with "
+         "--dof)"},
+        {"compare", 0, "CSV", CLI_STRING, 0, 0, &a->compare,
+         "compare with the CSV of an earlier run: errors must be equal, "
+         "times within the spread"},
+        {"dof", 0, NULL, CLI_FLAG, 0, 0, &a->dof,
+         "depth of field instead: double, depth 5, 1, 4, 16, 64 rays per "
+         "pixel on regular and stratified grids (they sample the lens too) "
+         "against a reference of 1024 (--ref-samples); writes "
+         "DIR/accuracy-dof-NAME-WxH.{csv,svg}"},
+        {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    };
+    const cli_program program = {
+        "rt-bench", "SCENE", description, epilogue,
+        CLI_GROUP_THREADS | CLI_GROUP_LENS | CLI_GROUP_SIZE | CLI_GROUP_QUIET,
+        own, 1, 1, "expected a scene file"};
+    int code = cli_parse(&program, argc, argv, &a->cli);
+    if (code != CLI_CONTINUE)
+        return code;
+    a->scene = a->cli.operands[0];
     if (a->ref_samples == 0)
         a->ref_samples = a->dof ? 1024 : 256;
     if (a->max_samples == 0)
         a->max_samples = a->dof ? 64 : 16;
-    return -1;
-}
-
-/*
- * The scene at `path`, rebuilt at width x height when they are not 0, and
- * with the lens `aperture` (when >= 0) and `focus` (when > 0).  The copy
- * keeps everything the scene holds: every facet's t, n and d (d given
- * explicitly, so that a format's own d survives), every light, the lens.
- */
-static rt_status load_scene(const char *path, int width, int height,
-                            double aperture, double focus, rt_scene **scene,
-                            rt_error *error)
-{
-    rt_status status = rt_scene_load(path, scene, error);
-    if (status != RT_OK || (width == 0 && aperture < 0.0 && focus <= 0.0))
-        return status;
-    rt_scene_info info;
-    rt_scene_get_info(*scene, &info);
-    rt_vec3 *vertices = malloc((size_t)(info.vertex_count + 1) *
-                               sizeof *vertices);
-    rt_facet_desc *facets = malloc((size_t)(info.facet_count + 1) *
-                                   sizeof *facets);
-    rt_light *lights = malloc((size_t)info.light_count * sizeof *lights);
-    status = RT_ERR_NOMEM;
-    if (vertices != NULL && facets != NULL && lights != NULL) {
-        for (int i = 0; i < info.vertex_count; i++)
-            vertices[i] = rt_scene_vertex(*scene, i);
-        for (int i = 0; i < info.facet_count; i++) {
-            rt_facet_info f;
-            rt_scene_facet(*scene, i, &f);
-            facets[i] = (rt_facet_desc){{f.vertex[0], f.vertex[1],
-                                         f.vertex[2]}, f.k, f.color, f.t,
-                                        f.n, f.d, 1};
-        }
-        for (int i = 1; i < info.light_count; i++)
-            rt_scene_light(*scene, i, &lights[i - 1]);
-        const rt_camera *c = &info.camera;
-        rt_vec3 b = {c->screen_center.x + c->right.x,
-                     c->screen_center.y + c->right.y,
-                     c->screen_center.z + c->right.z};
-        rt_scene_desc desc = {
-            c->observer, c->screen_center, b,
-            width ? width : info.width, width ? height : info.height,
-            vertices, info.vertex_count, facets, info.facet_count,
-            info.background, info.light_position, info.light_color,
-            info.light_count > 1 ? lights : NULL, info.light_count - 1,
-            aperture >= 0.0 ? aperture : c->aperture,
-            focus > 0.0 ? focus : c->focal_distance};
-        rt_scene *rebuilt;
-        status = rt_scene_create(&desc, &rebuilt, error);
-        if (status == RT_OK) {
-            rt_scene_free(*scene);
-            *scene = rebuilt;
-        }
-    } else if (error != NULL) {
-        *error = (rt_error){RT_ERR_NOMEM, 0, 0, "out of memory"};
-    }
-    free(vertices);
-    free(facets);
-    free(lights);
-    if (status != RT_OK) {
-        rt_scene_free(*scene);
-        *scene = NULL;
-    }
-    return status;
+    return CLI_CONTINUE;
 }
 
 static double now_seconds(void)
@@ -308,18 +152,18 @@ static double now_seconds(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* Renders with settings `s`; *seconds is the wall-clock time of the call. */
+/* Renders with the options the user gave (size, lens, threads) and the
+ * knobs `s`; *seconds is the wall-clock time of the call. */
 static rt_status render(const rt_scene *scene, const settings *s,
-                        int threads, rt_image *image, double *seconds)
+                        const rt_render_options *base, rt_image *image,
+                        double *seconds)
 {
-    rt_render_options options;
-    rt_render_options_init(&options);
+    rt_render_options options = *base;
     options.precision = s->precision;
     options.fast_inv_sqrt = s->fast_sqrt;
     options.samples = s->grid * s->grid;
     options.sampling = s->sampling;
     options.max_depth = s->depth;
-    options.threads = threads;
     double start = now_seconds();
     rt_status status = rt_render(scene, &options, image);
     *seconds = now_seconds() - start;
@@ -567,9 +411,10 @@ static void free_images(images *im)
 }
 
 static int render_or_complain(const rt_scene *scene, const settings *s,
-                              int threads, rt_image *image, double *seconds)
+                              const rt_render_options *base, rt_image *image,
+                              double *seconds)
 {
-    rt_status status = render(scene, s, threads, image, seconds);
+    rt_status status = render(scene, s, base, image, seconds);
     if (status != RT_OK)
         fprintf(stderr, "rt-bench: rendering failed: %s\n",
                 rt_status_string(status));
@@ -582,17 +427,17 @@ static int render_or_complain(const rt_scene *scene, const settings *s,
  * depth whose image one more bounce leaves unchanged, and whether D + 1
  * changes D's.  Returns 0 if a render failed.
  */
-static int analyse_depth(const rt_scene *scene, int threads,
+static int analyse_depth(const rt_scene *scene, const rt_render_options *base,
                          const depth_bound *b, int ref_depth, images *im,
                          FILE *csv, int *converged_at, int *reference_stable)
 {
     settings s = {RT_PRECISION_DOUBLE, 0, 1, RT_SAMPLING_REGULAR, ref_depth};
     double seconds;
-    if (!render_or_complain(scene, &s, threads, &im->depth_reference,
+    if (!render_or_complain(scene, &s, base, &im->depth_reference,
                             &seconds))
         return 0;
     s.depth = ref_depth + 1;
-    if (!render_or_complain(scene, &s, threads, &im->scratch, &seconds))
+    if (!render_or_complain(scene, &s, base, &im->scratch, &seconds))
         return 0;
     bench_error e;
     bench_compare(&im->scratch, &im->depth_reference, &e);
@@ -611,7 +456,7 @@ static int analyse_depth(const rt_scene *scene, int threads,
     for (int d = 0; d <= ref_depth; d++) {
         s.depth = d;
         if (d < ref_depth &&
-            !render_or_complain(scene, &s, threads, &im->scratch, &seconds))
+            !render_or_complain(scene, &s, base, &im->scratch, &seconds))
             return 0;
         const rt_image *image = d < ref_depth ? &im->scratch
                                               : &im->depth_reference;
@@ -644,7 +489,7 @@ static int analyse_depth(const rt_scene *scene, int threads,
 static void progress(const arguments *a, int round, int i, int count,
                      const char *label)
 {
-    if (!a->quiet)
+    if (!a->cli.quiet)
         fprintf(stderr, "rt-bench: run %d/%d, setting %d/%d: %s\n",
                 round + 1, a->runs, i + 1, count, label);
 }
@@ -673,7 +518,7 @@ static int measure(const rt_scene *scene, const arguments *a,
                     fprintf(stderr, "rt-bench: out of memory\n");
                     return 0;
                 }
-                if (!render_or_complain(scene, &c->s, a->threads, image,
+                if (!render_or_complain(scene, &c->s, &a->cli.render, image,
                                         &c->times[round]))
                     return 0;
                 unsigned long long hash = bench_image_hash(image);
@@ -796,24 +641,38 @@ int main(int argc, char **argv)
 {
     arguments a;
     int code = parse_arguments(argc, argv, &a);
-    if (code >= 0)
+    if (code != CLI_CONTINUE)
         return code;
+    const rt_render_options *options = &a.cli.render;
     rt_scene *scene;
     rt_error error;
-    if (load_scene(a.scene, a.width, a.height, a.aperture, a.focus, &scene,
-                   &error) != RT_OK) {
+    if (rt_scene_load(a.scene, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-bench: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
-    if (a.dof && !(info.camera.aperture > 0.0)) {
+    int width, height;
+    if (rt_render_image_size(scene, options, &width, &height, &error) !=
+        RT_OK) {
+        fprintf(stderr, "rt-bench: --size: %s\n", error.message);
+        rt_scene_free(scene);
+        return CLI_EXIT_USAGE;
+    }
+    /* the lens the renders use: the options', else the scene's */
+    double aperture = options->aperture >= 0.0 ? options->aperture
+                                               : info.camera.aperture;
+    double focus = options->focal_distance > 0.0
+                       ? options->focal_distance
+                       : info.camera.focal_distance;
+    if (a.dof && !(aperture > 0.0)) {
         fprintf(stderr, "rt-bench: %s: the camera has no lens (aperture "
                         "0): give --aperture A (and --focus F) to measure "
                         "depth of field\n", a.scene);
         rt_scene_free(scene);
         return EXIT_BAD_INPUT;
     }
+    int threads = options->threads;
 
     depth_bound bound = find_depth_bound(scene);
     int ref_depth = 0;
@@ -829,7 +688,7 @@ int main(int argc, char **argv)
     char name[256], base[4096], path[4200];
     scene_name(a.scene, name, sizeof name);
     snprintf(base, sizeof base, "%s/accuracy-%s%s-%dx%d", a.out,
-             a.dof ? "dof-" : "", name, info.width, info.height);
+             a.dof ? "dof-" : "", name, width, height);
     if (mkdir(a.out, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "rt-bench: %s: cannot create: %s\n", a.out,
                 strerror(errno));
@@ -839,12 +698,12 @@ int main(int argc, char **argv)
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     printf("rt-bench (libraytrace %s): %s at %d x %d, %d facets; %d runs per "
            "setting on %d thread%s\n",
-           rt_version_string(), a.scene, info.width, info.height,
-           info.facet_count, a.runs, a.threads ? a.threads : (int)cores,
-           (a.threads ? a.threads : cores) == 1 ? "" : "s");
-    if (info.camera.aperture > 0.0)
+           rt_version_string(), a.scene, width, height,
+           info.facet_count, a.runs, threads ? threads : (int)cores,
+           (threads ? threads : cores) == 1 ? "" : "s");
+    if (aperture > 0.0)
         printf("lens: aperture radius a = %g, focal distance f = %g (scene "
-               "units)\n", info.camera.aperture, info.camera.focal_distance);
+               "units)\n", aperture, focus);
     printf("depth bound: every colour <= %g, largest k + t %g, largest "
            "(k+t)_i (k+t)_j of facets not coplanar %g\n",
            bound.peak, bound.k_max, bound.pair);
@@ -857,9 +716,9 @@ int main(int argc, char **argv)
     images im = {0};
     code = EXIT_BAD_INPUT;
     output_file depth_out = {0};
-    if (rt_image_create(&im.reference, info.width, info.height) != RT_OK ||
-        rt_image_create(&im.scratch, info.width, info.height) != RT_OK ||
-        rt_image_create(&im.depth_reference, info.width, info.height) !=
+    if (rt_image_create(&im.reference, width, height) != RT_OK ||
+        rt_image_create(&im.scratch, width, height) != RT_OK ||
+        rt_image_create(&im.depth_reference, width, height) !=
             RT_OK) {
         fprintf(stderr, "rt-bench: out of memory\n");
         goto done;
@@ -871,7 +730,7 @@ int main(int argc, char **argv)
         goto done;
     }
     int converged_at, reference_stable;
-    if (!analyse_depth(scene, a.threads, &bound, ref_depth, &im,
+    if (!analyse_depth(scene, options, &bound, ref_depth, &im,
                        depth_out.file, &converged_at, &reference_stable))
         goto done;
     if (!output_file_close(&depth_out, 1)) {
@@ -883,13 +742,13 @@ int main(int argc, char **argv)
     settings reference = {RT_PRECISION_DOUBLE, 0, ref_grid,
                           RT_SAMPLING_STRATIFIED, ref_depth};
     double ref_seconds, check_seconds;
-    if (!a.quiet)
+    if (!a.cli.quiet)
         fprintf(stderr, "rt-bench: rendering the reference\n");
-    if (!render_or_complain(scene, &reference, a.threads, &im.reference,
+    if (!render_or_complain(scene, &reference, options, &im.reference,
                             &ref_seconds))
         goto done;
     reference.sampling = RT_SAMPLING_REGULAR;
-    if (!render_or_complain(scene, &reference, a.threads, &im.scratch,
+    if (!render_or_complain(scene, &reference, options, &im.scratch,
                             &check_seconds))
         goto done;
     bench_error floor;
@@ -908,7 +767,7 @@ int main(int argc, char **argv)
         /* Its convergence: half the grid side, a quarter of the rays. */
         settings quarter = {RT_PRECISION_DOUBLE, 0, ref_grid / 2,
                             RT_SAMPLING_STRATIFIED, ref_depth};
-        if (!render_or_complain(scene, &quarter, a.threads, &im.scratch,
+        if (!render_or_complain(scene, &quarter, options, &im.scratch,
                                 &check_seconds))
             goto done;
         bench_compare(&im.scratch, &im.reference, &floor);
@@ -943,19 +802,19 @@ int main(int argc, char **argv)
     char title[512], subtitle[512];
     if (a.dof)
         snprintf(title, sizeof title, "%s at %d x %d, depth of field (a = "
-                 "%g, f = %g): error against render time", name, info.width,
-                 info.height, info.camera.aperture,
-                 info.camera.focal_distance);
+                 "%g, f = %g): error against render time", name, width,
+                 height, aperture,
+                 focus);
     else
         snprintf(title, sizeof title, "%s at %d x %d: error against render "
-                 "time", name, info.width, info.height);
+                 "time", name, width, height);
     snprintf(subtitle, sizeof subtitle,
              "reference: double, exact sqrt, depth %d, %d x %d stratified; "
              "median of %d runs on %d threads; libraytrace %s",
              ref_depth, ref_grid, ref_grid, a.runs,
-             a.threads ? a.threads : (int)cores, rt_version_string());
+             threads ? threads : (int)cores, rt_version_string());
     snprintf(path, sizeof path, "%s.csv", base);
-    if (!write_csv(path, name, info.width, info.height, rows, count))
+    if (!write_csv(path, name, width, height, rows, count))
         goto done;
     printf("\nwrote %s\n", path);
     snprintf(path, sizeof path, "%s.svg", base);

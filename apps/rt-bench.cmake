@@ -15,7 +15,7 @@ target_compile_definitions(raytrace_bench PRIVATE _POSIX_C_SOURCE=200809L)
 raytrace_set_warnings(raytrace_bench)
 
 add_executable(rt-bench rt-bench.c)
-target_link_libraries(rt-bench PRIVATE raytrace_bench)
+target_link_libraries(rt-bench PRIVATE raytrace_bench raytrace_cli)
 target_compile_definitions(rt-bench PRIVATE _POSIX_C_SOURCE=200809L)
 raytrace_set_warnings(rt-bench)
 install(TARGETS rt-bench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -1,241 +1,72 @@
 /*
  * rt-view - shows a scene in an SDL window while it renders.
  *
- * This file is the command line and the start-up; the rest is in
- * apps/viewer: view_app (the window, keys, reloads, saves and event loop),
- * view_session (renders on its own thread and reports finished rows),
- * view_window (uploads those rows and draws) and view_scene (loads, watches
- * and names files).
+ * This file is the command line (the shared module apps/common/cli, so
+ * rt-view takes every render option rt-export takes, with the same limits
+ * and words) and the start-up; the rest is in apps/viewer: view_app (the
+ * window, keys, reloads, saves and event loop), view_session (renders on
+ * its own thread and reports finished rows), view_window (uploads those
+ * rows and draws) and view_scene (loads, watches and names files).
  */
-#include <errno.h>
-#include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
-#include "cli_values.h"
+#include "cli.h"
 #include "raytrace/raytrace.h"
 #include "view_app.h"
 #include "view_scene.h"
-#include "view_session.h"
 #include "view_window.h"
 
 #define PROGRAM "rt-view"
 
-static const char usage_text[] =
-    "Usage: " PROGRAM " [OPTION]... [SCENE.scn]\n"
-    "Show SCENE.scn in a window while it renders; each finished row appears\n"
-    "at once.  The title shows the scene, the progress and the elapsed time,\n"
-    "then the total time.\n"
+static double scale = 1.0;      /* --scale */
+static int watch;               /* --watch */
+
+static const cli_option view_options[] = {
+    {"scale", 0, "F", CLI_NUMBER, VIEW_MIN_SCALE, VIEW_MAX_SCALE, &scale,
+     "render at F times the scene's size in pixels (0.01..64): 0.5 for a "
+     "quick preview, 2 for detail; the same picture with more or fewer "
+     "pixels (a shorthand for --size; not with it)"},
+    {"watch", 0, NULL, CLI_FLAG, 0, 0, &watch,
+     "reload and render the scene whenever its file changes (looked at "
+     "every 250 ms)"},
+    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+};
+
+static const cli_program program = {
+    PROGRAM, "[SCENE]",
+    "Shows SCENE in a window while it renders; each finished row appears at\n"
+    "once.  The title shows the scene, the progress and the elapsed time,\n"
+    "then the total time.  Without SCENE the window waits for a scene file\n"
+    "dropped on it.  The window needs a display (X11 or Wayland);\n"
+    "rt-export renders without one.",
+    "\nWithout -o or --format, S saves PNG.  -o OUT is a file (not `-').\n"
+    "\nKeys:\n"
+    "  S       save the image: the first time to -o OUT when given, else\n"
+    "          to the first free numbered name beside the scene\n"
+    "          (SCENE-1.png, SCENE-2.png, ...; beside OUT: OUT-1.png ...),\n"
+    "          never over an earlier save; an image still rendering goes to\n"
+    "          SCENE-partial-N.png (OUT-partial-N.png), never to OUT.  PNG\n"
+    "          unless --format or OUT's extension say otherwise (binary PPM\n"
+    "          in a build without PNG support).  Prints the path.\n"
+    "  R       reload the scene from its file and render it; if it no\n"
+    "          longer loads, the picture stays and the error\n"
+    "          (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the title\n"
+    "  + / -   one more / one less reflection, and render again\n"
+    "  Q, Esc  quit (a render in progress is cancelled)\n"
+    "A scene file dropped on the window is loaded, rendered and watched.\n"
     "\n"
-    "Options:\n"
-    "  --depth N     reflections followed after a primary ray, 0.."
-    "100 (default 5)\n"
-    "  --scale F     render at F times the scene's size in pixels, e.g. 0.5\n"
-    "                for a quick preview or 2 for detail (default 1; the\n"
-    "                window is scaled down to fit the screen either way)\n"
-    "  --threads N   rendering threads, 0 for one per core (default 0)\n"
-    "  --samples N   rays per pixel, a square (1, 4, 9, ...; default 1)\n"
-    "  --aperture A  lens radius in scene units (default: the scene's; 0 for\n"
-    "                a pinhole); depth of field needs several samples\n"
-    "  --focus F     distance in focus, in scene units along the view axis\n"
-    "                (default: the scene's, else the screen's distance)\n"
-    "  --input-format F, --tessellate T, --look-from X,Y,Z, --look-at X,Y,Z,\n"
-    "  --up X,Y,Z, --fov DEGREES, --light X,Y,Z[,R,G,B] (repeatable)\n"
-    "                as in rt-export: the scene's format, the tolerance of\n"
-    "                NFF's curved shapes, a view and lights that replace the\n"
-    "                scene's\n"
-    "  --help        show this help and exit\n"
-    "  --version     show the version and exit\n"
-    "\n"
-    "Keys:\n"
-    "  S             save the image next to the scene, as SCENE.png (or\n"
-    "                SCENE.ppm in a build without PNG support); rows not\n"
-    "                rendered yet are black; prints the path\n"
-    "  R             render again\n"
-    "  + / -         one more / one less reflection, and render again\n"
-    "  Q, Esc        quit (a render in progress is cancelled)\n"
-    "\n"
-    "Drop a .scn file on the window to load and render it.  A scene with\n"
-    "errors is reported as FILE:LINE:COLUMN: MESSAGE on stderr and in the\n"
-    "title; the picture shown before stays.  The window can be moved,\n"
-    "resized or closed at any time.  SIGINT, SIGTERM or SIGHUP cancel the\n"
-    "render (and a save under way, leaving the file as it was) and end\n"
-    "rt-view with 128 + the signal's number.\n";
-
-typedef struct viewer {
-    view_app_options app;
-    rt_load_options load;       /* format, tessellation, view, lights */
-    rt_light lights[16];        /* --light, in order */
-} viewer;
-
-static int parse_int(const char *text, int low, int high, int *value)
-{
-    char *end;
-    errno = 0;
-    long number = strtol(text, &end, 10);
-    if (errno || end == text || *end || number < low || number > high)
-        return 0;
-    *value = (int)number;
-    return 1;
-}
-
-static int parse_scale(const char *text, double *value)
-{
-    char *end;
-    errno = 0;
-    double number = strtod(text, &end);
-    if (errno || end == text || *end || !(number >= VIEW_MIN_SCALE) ||
-        !(number <= VIEW_MAX_SCALE))
-        return 0;
-    *value = number;
-    return 1;
-}
-
-/* One of the loader's options (shared with rt-export); returns NULL, or
- * what was expected. */
-static const char *load_option(viewer *v, const char *arg, const char *text)
-{
-    rt_load_options *o = &v->load;
-    if (strcmp(arg, "--input-format") == 0)
-        return cli_parse_scene_format(text, &o->format)
-                   ? NULL
-                   : "--input-format expects scn, nff or obj, not";
-    if (strcmp(arg, "--tessellate") == 0)
-        return cli_parse_length(text, 1, &o->tessellation) &&
-                       o->tessellation < 1
-                   ? NULL
-                   : "--tessellate expects a tolerance in (0, 1), not";
-    if (strcmp(arg, "--fov") == 0) {
-        if (!cli_parse_length(text, 1, &o->fov) || !(o->fov < 180))
-            return "--fov expects degrees in (0, 180), not";
-        o->fov_given = 1;
-        return NULL;
-    }
-    if (strcmp(arg, "--light") == 0) {
-        if (o->light_count == 16)
-            return "at most 16 --light options; one more:";
-        if (!cli_parse_light(text, &v->lights[o->light_count]))
-            return "--light expects x,y,z or x,y,z,r,g,b (0..255), not";
-        o->lights = v->lights;
-        o->light_count++;
-        return NULL;
-    }
-    int *given = strcmp(arg, "--look-from") == 0 ? &o->look_from_given
-                 : strcmp(arg, "--look-at") == 0 ? &o->look_at_given
-                                                  : &o->up_given;
-    rt_vec3 *point = strcmp(arg, "--look-from") == 0 ? &o->look_from
-                     : strcmp(arg, "--look-at") == 0 ? &o->look_at
-                                                      : &o->up;
-    if (!cli_parse_point(text, point))
-        return "expected x,y,z after the option, not";
-    *given = 1;
-    return NULL;
-}
-
-static int usage_error(const char *message, const char *argument)
-{
-    fprintf(stderr, PROGRAM ": %s '%s'\nTry '" PROGRAM " --help'.\n",
-            message, argument);
-    return 2;
-}
-
-/* Fills v from the command line; returns -1 to go on, else an exit code. */
-static int parse_arguments(int argc, char **argv, viewer *v,
-                           const char **scene)
-{
-    *scene = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
-            fputs(usage_text, stdout);
-            return 0;
-        } else if (strcmp(arg, "--version") == 0) {
-            printf(PROGRAM " (libraytrace) %s\n", rt_version_string());
-            return 0;
-        } else if (strcmp(arg, "--input-format") == 0 ||
-                   strcmp(arg, "--tessellate") == 0 ||
-                   strcmp(arg, "--look-from") == 0 ||
-                   strcmp(arg, "--look-at") == 0 ||
-                   strcmp(arg, "--up") == 0 || strcmp(arg, "--fov") == 0 ||
-                   strcmp(arg, "--light") == 0) {
-            if (next == NULL)
-                return usage_error("missing value after", arg);
-            i++;
-            const char *wrong = load_option(v, arg, next);
-            if (wrong != NULL)
-                return usage_error(wrong, next);
-        } else if (strcmp(arg, "--samples") == 0 ||
-                   strcmp(arg, "--aperture") == 0 ||
-                   strcmp(arg, "--focus") == 0) {
-            if (next == NULL)
-                return usage_error("missing value after", arg);
-            i++;
-            if (strcmp(arg, "--samples") == 0) {
-                int root = 1;
-                if (!parse_int(next, 1, 1024, &v->app.render.samples))
-                    return usage_error("--samples expects a square in "
-                                       "1..1024, not", next);
-                while (root * root < v->app.render.samples)
-                    root++;
-                if (root * root != v->app.render.samples)
-                    return usage_error("--samples expects a square (1, 4, "
-                                       "9, 16, ...), not", next);
-            } else if (!cli_parse_length(next, strcmp(arg, "--focus") == 0,
-                                     strcmp(arg, "--focus") == 0
-                                         ? &v->app.render.focal_distance
-                                         : &v->app.render.aperture)) {
-                return usage_error(strcmp(arg, "--focus") == 0
-                                       ? "--focus expects a distance > 0, not"
-                                       : "--aperture expects a radius >= 0, "
-                                         "not",
-                                   next);
-            }
-        } else if (strcmp(arg, "--depth") == 0 ||
-                   strcmp(arg, "--threads") == 0 ||
-                   strcmp(arg, "--scale") == 0) {
-            if (next == NULL)
-                return usage_error("missing value after", arg);
-            i++;
-            int ok = strcmp(arg, "--scale") == 0
-                         ? parse_scale(next, &v->app.scale)
-                     : strcmp(arg, "--depth") == 0
-                         ? parse_int(next, 0, VIEW_MAX_DEPTH, &v->app.render.max_depth)
-                         : parse_int(next, 0, 1024, &v->app.render.threads);
-            if (!ok)
-                return usage_error(
-                    strcmp(arg, "--scale") == 0
-                        ? "--scale expects a number in 0.01..64, not"
-                    : strcmp(arg, "--depth") == 0
-                        ? "--depth expects an integer in 0..1000000, not"
-                        : "--threads expects an integer in 0..1024, not",
-                    next);
-        } else if (strcmp(arg, "--watch") == 0) {
-            v->app.watch = 1;
-        } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--output") == 0) {
-            if (next == NULL)
-                return usage_error("missing value after", arg);
-            i++;
-            if (rt_image_format_from_path(next, &v->app.format) != RT_OK)
-                return usage_error("-o expects a .png, .ppm or .pnm path, "
-                                   "not", next);
-            v->app.output = next;
-        } else if (arg[0] == '-' && arg[1] != '\0') {
-            return usage_error("unknown option", arg);
-        } else if (*scene != NULL) {
-            return usage_error("only one scene, extra argument", arg);
-        } else {
-            *scene = arg;
-        }
-    }
-    return -1;
-}
+    "Exit status: 0 when the window closes, 1 when a scene was given and\n"
+    "never loaded, when there is no display, or -o cannot be written;\n"
+    "2 bad usage; 128 + the signal after SIGINT, SIGTERM or SIGHUP (which\n"
+    "leave a save under way undone, the file as it was).",
+    CLI_GROUP_RENDER | CLI_GROUP_LOAD | CLI_GROUP_OUTPUT,
+    view_options, 0, 1, NULL};
 
 /*
  * Opens the window, shows `scene` (may be NULL) and runs until it closes;
@@ -292,16 +123,35 @@ static int run_viewer(const view_app_options *options, const char *scene)
     return status;
 }
 
+/* The checks cli_parse leaves to rt-view; CLI_CONTINUE or 2. */
+static int check_settings(const cli_settings *s)
+{
+    const rt_render_options *r = &s->render;
+    if (scale != 1.0 && (r->width != 0 || r->height != 0))
+        return cli_usage_error(&program, "--scale: not with --size, --width "
+                                         "or --height");
+    if (s->output != NULL && strcmp(s->output, "-") == 0)
+        return cli_usage_error(&program, "-o: rt-view saves to a file, not "
+                                         "to standard output");
+    return CLI_CONTINUE;
+}
+
 int main(int argc, char **argv)
 {
-    viewer v;
-    memset(&v, 0, sizeof v);
-    view_app_options_init(&v.app);
-    rt_load_options_init(&v.load);
-    v.app.load = &v.load;
-    const char *scene;
-    int code = parse_arguments(argc, argv, &v, &scene);
-    if (code >= 0)
+    cli_settings s;
+    int code = cli_parse(&program, argc, argv, &s);
+    if (code == CLI_CONTINUE)
+        code = check_settings(&s);
+    if (code != CLI_CONTINUE)
         return code;
-    return run_viewer(&v.app, scene);
+    view_app_options options;
+    view_app_options_init(&options);
+    options.render = s.render;
+    options.scale = scale;
+    options.load = &s.load;
+    options.output = s.output;
+    if (s.output != NULL || s.format_given)
+        options.format = s.format;
+    options.watch = watch;
+    return run_viewer(&options, s.operand_count ? s.operands[0] : NULL);
 }
