@@ -770,16 +770,26 @@ static int shows_background(const rt_image *image, int r, int g, int b)
     return pixel[0] == r && pixel[1] == g && pixel[2] == b;
 }
 
+/* Writes the scene with the background r, g, b, presses R and checks the
+ * new picture, with no error left in the title. */
+static void edit_and_reload(view_app *app, const char *path, int r, int g,
+                            int b)
+{
+    char background[64];
+    snprintf(background, sizeof background, "%d, %d, %d", r, g, b);
+    write_scene(path, background);
+    ck_assert(view_app_reload(app));
+    ck_assert(shows_background(finished_image(app), r, g, b));
+    ck_assert_str_eq(view_app_message(app), "");
+}
+
 START_TEST(reload_reads_the_edited_file)
 {
     write_scene("viewer-reload.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 0);
     ck_assert(view_app_open(app, "viewer-reload.scn"));
     ck_assert(shows_background(finished_image(app), 30, 30, 60));
-    write_scene("viewer-reload.scn", "200, 10, 10");
-    ck_assert(view_app_reload(app));
-    ck_assert(shows_background(finished_image(app), 200, 10, 10));
-    ck_assert_str_eq(view_app_message(app), "");
+    edit_and_reload(app, "viewer-reload.scn", 200, 10, 10);
     close_app(app);
     remove("viewer-reload.scn");
 }
@@ -802,10 +812,7 @@ START_TEST(failing_reload_keeps_the_picture_and_reports_the_error)
                           21) == 0,
                   "%s", view_app_message(app));
     /* Fixed, it loads again and the error goes. */
-    write_scene("viewer-broken.scn", "10, 200, 10");
-    ck_assert(view_app_reload(app));
-    ck_assert(shows_background(finished_image(app), 10, 200, 10));
-    ck_assert_str_eq(view_app_message(app), "");
+    edit_and_reload(app, "viewer-broken.scn", 10, 200, 10);
     ck_assert_int_eq(view_app_exit_status(app), 0);
     close_app(app);
     remove("viewer-broken.scn");
@@ -866,9 +873,7 @@ START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
     size_t first_size;
     char *first = read_file(path, &first_size);
 
-    write_scene("viewer-save.scn", "200, 10, 10");
-    ck_assert(view_app_reload(app));
-    finished_image(app);
+    edit_and_reload(app, "viewer-save.scn", 200, 10, 10);
     ck_assert(view_app_save(app, path, sizeof path));
     ck_assert_str_eq(path, "viewer-save-3.ppm");
     size_t again_size;
