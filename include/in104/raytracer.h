@@ -48,6 +48,14 @@ extern "C" {
  * line "file:line:column: what was expected, what was found" on stderr,
  * allocates nothing and leaves *s zeroed (so freeScene(s) is harmless).
  * fname is not modified (it is `char *` only for the handout's signature).
+ *
+ * *s is taken as uninitialised: parse() never frees what it holds.  Parsing
+ * into a scene that an earlier parse() filled therefore leaks that scene's
+ * points and facets (valgrind reports them "definitely lost"): call
+ * freeScene(s) first, as when reloading a file:
+ *
+ *     freeScene(&s);
+ *     if (0 != parse(name, &s)) ...
  */
 int parse(char *fname, scene *s);
 
