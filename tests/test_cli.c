@@ -27,34 +27,6 @@
 /* ------------------------------------------------------------------ */
 /* Files and programs                                                  */
 
-/* A file's bytes (malloc'd, NUL-terminated) and their count. */
-static char *slurp(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL)
-        return NULL;
-    size_t capacity = 4096, used = 0;
-    char *data = malloc(capacity + 1);
-    size_t got;
-    while (data != NULL &&
-           (got = fread(data + used, 1, capacity - used, f)) > 0) {
-        used += got;
-        if (used == capacity) {
-            char *bigger = realloc(data, 2 * capacity + 1);
-            if (bigger == NULL)
-                free(data);
-            data = bigger;
-            capacity *= 2;
-        }
-    }
-    fclose(f);
-    if (data != NULL)
-        data[used] = '\0';
-    if (size != NULL)
-        *size = used;
-    return data;
-}
-
 static void write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "wb");
@@ -137,8 +109,8 @@ static run run_in(const char *dir, const char *program,
     run r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status)
                                : 128 + WTERMSIG(status);
-    r.out = slurp(out_path, &r.out_size);
-    r.err = slurp(err_path, NULL);
+    r.out = rt_test_read_file(out_path, &r.out_size);
+    r.err = rt_test_read_file(err_path, NULL);
     unlink(out_path);
     unlink(err_path);
     ck_assert_ptr_nonnull(r.out);
@@ -169,7 +141,7 @@ static char *export_image(const char *dir, const char *const *args,
     run r = run_in(dir, RT_EXPORT_PATH, all);
     ck_assert_msg(r.code == 0, "rt-export failed (%d): %s", r.code, r.err);
     run_free(&r);
-    char *image = slurp(in_dir(dir, "out.ppm"), size);
+    char *image = rt_test_read_file(in_dir(dir, "out.ppm"), size);
     ck_assert_ptr_nonnull(image);
     return image;
 }
@@ -479,7 +451,7 @@ END_TEST
 static void write_cubes_at(const char *dir, const char *name, int width,
                            int height)
 {
-    char *text = slurp(cubes(), NULL);
+    char *text = rt_test_read_file(cubes(), NULL);
     ck_assert_ptr_nonnull(text);
     char *out = malloc(strlen(text) + 64);
     ck_assert_ptr_nonnull(out);
@@ -698,7 +670,7 @@ START_TEST(stats_json_is_one_object_a_json_parser_reads)
 {
     char *dir = fresh_dir();
     /* a name that needs escaping: a quote and a backslash */
-    char *text = slurp(cubes(), NULL);
+    char *text = rt_test_read_file(cubes(), NULL);
     write_text(in_dir(dir, "cu\"b\\es.scn"), text);
     free(text);
     const char *whole[] = {"cu\"b\\es.scn", "--size=40x30", "--stats=json",

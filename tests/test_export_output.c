@@ -27,33 +27,6 @@
 
 #include "testutil.h"
 
-/* A file's bytes (malloc'd, NUL-terminated) and their count. */
-static char *slurp(const char *path, size_t *size)
-{
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
-        return NULL;
-    size_t capacity = 1 << 16, used = 0;
-    char *data = malloc(capacity + 1);
-    size_t n;
-    while (data && (n = fread(data + used, 1, capacity - used, file)) > 0) {
-        used += n;
-        if (used == capacity) {
-            char *bigger = realloc(data, 2 * capacity + 1);
-            if (bigger == NULL)
-                free(data);
-            data = bigger;
-            capacity *= 2;
-        }
-    }
-    fclose(file);
-    if (data)
-        data[used] = '\0';
-    if (size)
-        *size = used;
-    return data;
-}
-
 /* A fresh directory for one test; remove with remove_tree. */
 static char *fresh_dir(void)
 {
@@ -193,10 +166,10 @@ static run wait_export(const char *dir, pid_t pid)
                                  : WEXITSTATUS(status);
     char path[4096];
     snprintf(path, sizeof path, "%s/..out", dir);
-    r.out = slurp(path, &r.out_size);
+    r.out = rt_test_read_file(path, &r.out_size);
     unlink(path);
     snprintf(path, sizeof path, "%s/..err", dir);
-    r.err = slurp(path, NULL);
+    r.err = rt_test_read_file(path, NULL);
     unlink(path);
     ck_assert_ptr_nonnull(r.out);
     ck_assert_ptr_nonnull(r.err);
@@ -226,7 +199,7 @@ static char *reference_image(const char *dir, size_t *size)
     run_free(&r);
     char path[4096];
     snprintf(path, sizeof path, "%s/reference.ppm", dir);
-    char *bytes = slurp(path, size);
+    char *bytes = rt_test_read_file(path, size);
     ck_assert_ptr_nonnull(bytes);
     return bytes;
 }
@@ -268,7 +241,7 @@ START_TEST(scene_from_standard_input_renders_as_the_file_does)
     char path[4096];
     snprintf(path, sizeof path, "%s/piped.ppm", dir);
     size_t size;
-    char *bytes = slurp(path, &size);
+    char *bytes = rt_test_read_file(path, &size);
     ck_assert_uint_eq(size, expected_size);
     ck_assert(memcmp(bytes, expected, size) == 0);
     free(bytes);
@@ -463,7 +436,7 @@ typedef struct fifo_reader {
 static void *read_fifo(void *arg)
 {
     fifo_reader *reader = arg;
-    reader->bytes = slurp(reader->path, &reader->size);
+    reader->bytes = rt_test_read_file(reader->path, &reader->size);
     return NULL;
 }
 
@@ -546,7 +519,7 @@ static void interrupt_the_save(int signal_number)
     ck_assert_msg(r.code == 128 + signal_number,
                   "exit %d, expected %d (killed by the signal): %s", r.code,
                   128 + signal_number, r.err);
-    char *bytes = slurp(path, NULL);
+    char *bytes = rt_test_read_file(path, NULL);
     ck_assert_ptr_nonnull(bytes);
     ck_assert_str_eq(bytes, previous);
     free(bytes);
@@ -603,7 +576,7 @@ START_TEST(converted_scenes_render_as_the_originals)
         snprintf(a, sizeof a, "%s/direct.ppm", dir);
         snprintf(b, sizeof b, "%s/again.ppm", dir);
         size_t na, nb;
-        char *da = slurp(a, &na), *db = slurp(b, &nb);
+        char *da = rt_test_read_file(a, &na), *db = rt_test_read_file(b, &nb);
         ck_assert_msg(da && db && na == nb && memcmp(da, db, na) == 0,
                       "%s: the converted scene renders differently",
                       scenes[i].path);

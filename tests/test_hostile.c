@@ -96,30 +96,6 @@ static void write_bytes(const char *path, const void *data, size_t size)
     ck_assert_int_eq(fclose(file), 0);
 }
 
-/* The whole file, NUL-terminated; *size its length.  NULL if absent. */
-static char *read_bytes(const char *path, size_t *size)
-{
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
-        return NULL;
-    size_t capacity = 4096, used = 0;
-    char *data = malloc(capacity);
-    ck_assert_ptr_nonnull(data);
-    for (;;) {
-        used += fread(data + used, 1, capacity - used - 1, file);
-        if (used < capacity - 1)
-            break;
-        capacity *= 2;
-        data = realloc(data, capacity);
-        ck_assert_ptr_nonnull(data);
-    }
-    fclose(file);
-    data[used] = '\0';
-    if (size)
-        *size = used;
-    return data;
-}
-
 /* The names in `dir` other than . and .., sorted, joined by spaces. */
 static char *list_dir(const char *dir)
 {
@@ -201,7 +177,7 @@ static const char previous_ppm[] = "P3\n1 1\n255\n1 2 3\n";
 static void assert_previous_intact(const char *path)
 {
     size_t size;
-    char *data = read_bytes(path, &size);
+    char *data = rt_test_read_file(path, &size);
     ck_assert_msg(data != NULL, "%s: the previous file is gone", path);
     ck_assert_msg(size == sizeof previous_ppm - 1 &&
                       memcmp(data, previous_ppm, size) == 0,
@@ -292,7 +268,7 @@ START_TEST(scene_corpus_replays_without_fault)
             continue;
         char *path = join(dir, entry->d_name);
         size_t size;
-        char *data = read_bytes(path, &size);
+        char *data = rt_test_read_file(path, &size);
         ck_assert_ptr_nonnull(data);
         rt_scene *scene = (rt_scene *)1;
         rt_error error;
@@ -1105,8 +1081,8 @@ static int run_program(const char *program, const char *dir,
     }
     ck_assert_int_eq(waitpid(pid, &status, 0), pid);
 finished:
-    *out = read_bytes(out_path, NULL);
-    *err = read_bytes(err_path, NULL);
+    *out = rt_test_read_file(out_path, NULL);
+    *err = rt_test_read_file(err_path, NULL);
     ck_assert_ptr_nonnull(*out);
     ck_assert_ptr_nonnull(*err);
     unlink(out_path);
@@ -1148,7 +1124,7 @@ START_TEST(export_refuses_to_write_over_its_own_scene)
         free(out);
         free(err);
         size_t size;
-        char *data = read_bytes(scene, &size);
+        char *data = rt_test_read_file(scene, &size);
         ck_assert_str_eq(data, small_scene);
         free(data);
         assert_dir_holds(dir, "link.scn scene.scn");
@@ -1308,7 +1284,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
     size_t sizes[3];
     for (int i = 0; i < 3; i++) {
         char *path = join(dir, files[i]);
-        before[i] = read_bytes(path, &sizes[i]);
+        before[i] = rt_test_read_file(path, &sizes[i]);
         ck_assert_msg(before[i] != NULL, "rt-bench wrote no %s", files[i]);
         free(path);
     }
@@ -1324,7 +1300,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
         for (int i = 0; i < 3; i++) {
             char *path = join(dir, files[i]);
             size_t size;
-            char *now = read_bytes(path, &size);
+            char *now = rt_test_read_file(path, &size);
             ck_assert_msg(now != NULL && size == sizes[i] &&
                               memcmp(now, before[i], size) == 0,
                           "%s was changed by a run that failed to write "

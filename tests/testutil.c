@@ -91,3 +91,27 @@ long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff)
         *max_diff = worst;
     return count;
 }
+
+char *rt_test_read_file(const char *path, size_t *size)
+{
+    FILE *file = fopen(path, "rb");
+    if (file == NULL)
+        return NULL;
+    size_t capacity = 1 << 16, used = 0;
+    char *data = malloc(capacity + 1);
+    ck_assert_ptr_nonnull(data);
+    size_t n;
+    while ((n = fread(data + used, 1, capacity - used, file)) > 0) {
+        used += n;
+        if (used == capacity) {
+            capacity *= 2;
+            data = realloc(data, capacity + 1);
+            ck_assert_ptr_nonnull(data);
+        }
+    }
+    fclose(file);
+    data[used] = '\0';
+    if (size != NULL)
+        *size = used;
+    return data;
+}

@@ -38,4 +38,9 @@ rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads);
  * largest channel difference (through *max_diff when not NULL). */
 long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff);
 
+/* The whole file at `path`, malloc'd and NUL-terminated (the NUL not
+ * counted), its length through *size when not NULL; NULL when it cannot
+ * be opened.  Fails the test when out of memory. */
+char *rt_test_read_file(const char *path, size_t *size);
+
 #endif /* RAYTRACE_TESTUTIL_H */
