@@ -132,7 +132,7 @@ static const spec table[] = {
     {CLI_GROUP_LOAD, "tessellate", 0, "T", 0, V_NUMBER, 0, 1, 1, NULL, {0},
      AT(load.tessellation), NO_OFFSET, NULL,
      "NFF spheres and cones: the largest distance between the surface and "
-     "its facets, relative to the radius, in (0, 1)"},
+     "its facets, relative to the radius; more than 0, less than 1"},
     {CLI_GROUP_LOAD, "look-from", 0, "X,Y,Z", 0, V_POINT, 0, 0, 0, NULL,
      {0}, AT(load.look_from), AT(load.look_from_given), NULL,
      "the observer (each view option on its own replaces that part of the "
@@ -144,7 +144,8 @@ static const spec table[] = {
      AT(load.up), AT(load.up_given), NULL, "up in the image"},
     {CLI_GROUP_LOAD, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180, 1, NULL, {0},
      AT(load.fov), AT(load.fov_given), NULL,
-     "the horizontal field of view, in (0, 180)"},
+     "the horizontal field of view in degrees; more than 0, less than "
+     "180"},
     {CLI_GROUP_LOAD, "light", 0, "X,Y,Z[,R,G,B]", 0, V_LIGHT, 0, 0, 0, NULL,
      {0}, NO_OFFSET, NO_OFFSET, NULL,
      "a point light, white unless R,G,B (0..255) say otherwise; repeat "
