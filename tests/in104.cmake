@@ -93,4 +93,9 @@ if(TARGET raytrace::imgsdl)
   set_tests_properties(imgsdl_main_stops_when_parse_fails
     PROPERTIES ENVIRONMENT "${imgsdl_env}"
                PASS_REGULAR_EXPRESSION "imgsdl: cannot read the scene no-such-scene\\.scn")
+  # A pass by message ignores the exit status: let the sanitizers' and
+  # valgrind's reports still fail these two (.ci/sanitize, .ci/memcheck).
+  set_tests_properties(imgsdl_main_without_a_scene_prints_its_usage
+                       imgsdl_main_stops_when_parse_fails
+    PROPERTIES FAIL_REGULAR_EXPRESSION "Sanitizer|runtime error|ERROR SUMMARY: [1-9]")
 endif()

@@ -25,6 +25,8 @@ function(raytrace_add_kit_test name step)
     "-DWORK_DIR=${RT_KIT_DIR}"
     "-DC_COMPILER=${CMAKE_C_COMPILER}"
     "-DKIT_PPM=$<TARGET_FILE:kit_ppm>"
+    "-DPKG_CONFIG=${PKG_CONFIG_EXECUTABLE}"
+    "-DGENERATOR=${CMAKE_GENERATOR}"
     -DSTEP=${step} -P "${CMAKE_CURRENT_SOURCE_DIR}/kit_steps.cmake")
   # One make at a time in the student's folder.
   set_tests_properties(${name} PROPERTIES LABELS consumer
@@ -43,3 +45,5 @@ raytrace_add_kit_test(kit_student_project_make_run_sdl_shows_make_runs_image
   run_sdl)
 set_tests_properties(kit_student_project_make_run_sdl_shows_make_runs_image
   PROPERTIES FIXTURES_REQUIRED "kit_built;kit_ran")
+raytrace_add_kit_test(kit_libraries_are_found_by_pkg_config_and_find_package
+  packages FIXTURES_REQUIRED kit_installed)

@@ -11,12 +11,16 @@
 #   tests_sdl  `make tests_sdl` on SDL's dummy driver with IMGSDL_OUTPUT:
 #              the example's gradient
 #   run_sdl    `make run_sdl` likewise: the same pixels as `make run`'s
+#   packages   the kit's other ways in: a program built with pkg-config's
+#              raytrace-util (and raytrace-imgsdl) flags, and one with
+#              find_package(raytrace COMPONENTS imgsdl), run
 #
 # A step that cannot run here (no make, no SDL2 in the install, no
 # sdl2-config) prints "KIT-SKIP: <why>", which kit.cmake turns into a
 # skipped test.
 # Inputs: SOURCE_DIR, PREFIX, LIBDIR (the install's CMAKE_INSTALL_LIBDIR),
-# WORK_DIR, C_COMPILER, KIT_PPM (tests/kit_ppm.c's program).
+# WORK_DIR, C_COMPILER, KIT_PPM (tests/kit_ppm.c's program), PKG_CONFIG,
+# GENERATOR.
 cmake_minimum_required(VERSION 3.20)
 
 set(student "${WORK_DIR}/student")
@@ -112,6 +116,84 @@ elseif(STEP STREQUAL "tests_sdl" OR STEP STREQUAL "run_sdl")
   else()
     check_images("the window's picture is make run's"
                  compare "${student}/cubes.p3" "${picture}")
+  endif()
+
+elseif(STEP STREQUAL "packages")
+  set(dir "${WORK_DIR}/packages")
+  file(REMOVE_RECURSE "${dir}")
+  file(WRITE "${dir}/words.c" [=[
+#include <stdio.h>
+#include <string.h>
+#include "util.h"
+int main(void)
+{
+    char line[] = " 3,-3,-1, 400,400\n";
+    char *words[6];
+    splitLine(line, words, 6);
+    if (strcmp(words[0], "3") || strcmp(words[4], "400") || words[5]) {
+        puts("splitLine: wrong words");
+        return 1;
+    }
+    printf("fastInvSqrt(4) = %.5f\n", fastInvSqrt(4.0f));
+    return 0;
+}
+]=])
+  set(imgsdl OFF)
+  if(EXISTS "${libdir}/libraytrace-imgsdl.a")
+    set(imgsdl ON)
+  endif()
+  if(PKG_CONFIG)
+    set(ENV{PKG_CONFIG_PATH} "${libdir}/pkgconfig")
+    execute_process(COMMAND "${PKG_CONFIG}" --cflags --libs raytrace-util
+                    OUTPUT_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE
+                    COMMAND_ERROR_IS_FATAL ANY)
+    message("raytrace-util.pc: ${flags}")
+    separate_arguments(flags UNIX_COMMAND "${flags}")
+    execute_process(COMMAND "${C_COMPILER}" -std=c11 -Wall -Wextra -Wpedantic
+                    -Werror "${dir}/words.c" -o "${dir}/words" ${flags}
+                    COMMAND_ERROR_IS_FATAL ANY)
+    execute_process(COMMAND "${dir}/words" COMMAND_ERROR_IS_FATAL ANY)
+    if(imgsdl)
+      execute_process(COMMAND "${PKG_CONFIG}" --cflags --libs raytrace-imgsdl
+                      OUTPUT_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE
+                      COMMAND_ERROR_IS_FATAL ANY)
+      message("raytrace-imgsdl.pc: ${flags}")
+      separate_arguments(flags UNIX_COMMAND "${flags}")
+      execute_process(COMMAND "${C_COMPILER}" -std=c11 -Wall -Wextra -Werror
+                      "${SOURCE_DIR}/tests/in104_imgsdl_student.c"
+                      -o "${dir}/imgsdl-pc" ${flags} COMMAND_ERROR_IS_FATAL ANY)
+    endif()
+  endif()
+  set(components)
+  set(imgsdl_target)
+  if(imgsdl)
+    set(components COMPONENTS imgsdl)
+    set(imgsdl_target "add_executable(imgsdl-cmake \"${SOURCE_DIR}/tests/in104_imgsdl_student.c\")\ntarget_link_libraries(imgsdl-cmake PRIVATE raytrace::imgsdl)")
+  endif()
+  file(WRITE "${dir}/CMakeLists.txt"
+    "cmake_minimum_required(VERSION 3.20)\nproject(kit_packages C)\n"
+    "find_package(raytrace REQUIRED ${components})\n"
+    "add_executable(words words.c)\n"
+    "target_link_libraries(words PRIVATE raytrace::util)\n${imgsdl_target}\n")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${dir}" -B "${dir}/build"
+                  -G "${GENERATOR}" "-DCMAKE_C_COMPILER=${C_COMPILER}"
+                  "-DCMAKE_PREFIX_PATH=${PREFIX}" COMMAND_ERROR_IS_FATAL ANY)
+  execute_process(COMMAND "${CMAKE_COMMAND}" --build "${dir}/build"
+                  COMMAND_ERROR_IS_FATAL ANY)
+  find_program(words words PATHS "${dir}/build" PATH_SUFFIXES Debug Release
+               NO_DEFAULT_PATH REQUIRED)
+  execute_process(COMMAND "${words}" COMMAND_ERROR_IS_FATAL ANY)
+  if(imgsdl)
+    set(ENV{SDL_VIDEODRIVER} dummy)
+    set(ENV{IMGSDL_OUTPUT} "${dir}/gradient.ppm")
+    find_program(drawer imgsdl-cmake PATHS "${dir}/build"
+                 PATH_SUFFIXES Debug Release NO_DEFAULT_PATH REQUIRED)
+    execute_process(COMMAND "${drawer}" "${SOURCE_DIR}/scenes/one-facet.scn"
+                    COMMAND_ERROR_IS_FATAL ANY)
+    check_images("find_package's raytrace::imgsdl" gradient
+                 "${dir}/gradient.ppm" 40 30)
+  else()
+    message("no libraytrace-imgsdl.a: only raytrace::util was tried")
   endif()
 
 else()
