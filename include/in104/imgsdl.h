@@ -16,9 +16,9 @@
  *   4. shows the result until the window is closed or Esc is pressed,
  *      then exits with status 0.
  *
- * Headless runs and tests: when the environment variable IMGSDL_OUTPUT
- * names a file, step 4 writes the surface there as a binary PPM (P6)
- * instead and exits (0, or 1 with a message if the file cannot be
+ * Headless runs and tests: when the environment variable IMGSDL_OUTPUT is
+ * set and not empty, it names a file: step 4 writes the surface there as a
+ * binary PPM (P6) instead and exits (0, or 1 with a message if the file cannot be
  * written).  With SDL_VIDEODRIVER=dummy no display is needed at all:
  *
  *     SDL_VIDEODRIVER=dummy IMGSDL_OUTPUT=out.ppm ./bin/tests_sdl scenes/cubes.scn
