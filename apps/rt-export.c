@@ -40,7 +40,8 @@ static const cli_program program = {
     "its extension) to an image and prints the path it wrote.  SCENE `-'\n"
     "reads the scene from standard input (then -o is needed).  The image\n"
     "goes to OUT (default: the scene's name with .ppm, or .png with\n"
-    "--format png, in the current directory); a device, FIFO or socket is\n"
+    "--format png, in the current directory; `-o -' writes it to standard\n"
+    "output and nothing else there); a device, FIFO or socket is\n"
     "written directly, a file is replaced atomically, keeping its mode,\n"
     "owner and links.  The progress line (stderr, on a terminal) shows the\n"
     "time left and the camera rays per second; --stats=json prints one\n"
@@ -200,7 +201,7 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
 {
     rt_image image = {0};
     rt_error error;
-    if (rt_image_create(&image, report->width, report->height) != RT_OK) {
+    if (rt_image_init(&image, report->width, report->height) != RT_OK) {
         fprintf(stderr, "rt-export: out of memory\n");
         return EXIT_BAD_INPUT;
     }
@@ -238,7 +239,7 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
         cli_print_stats_json(stderr, &stats, report);
     code = EXIT_SUCCESS;
 done:
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     return code;
 }
 
@@ -317,7 +318,7 @@ int main(int argc, char **argv)
         .load_seconds = cli_seconds_since(&load_start)};
     if (check_only) {
         print_check(report.scene, scene);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return EXIT_SUCCESS;
     }
     rt_scene_info info;
@@ -336,6 +337,6 @@ int main(int argc, char **argv)
         !same_file_as(path, STDOUT_FILENO))
         printf("%s\n", path);
     free(output);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     return code;
 }

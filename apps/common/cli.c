@@ -153,7 +153,7 @@ static const spec table[] = {
      "default light included)"},
     {CLI_GROUP_OUTPUT, "output", 'o', "OUT", 0, V_STRING, 0, 0, 0, NULL,
      {0}, AT(output), NO_OFFSET, NULL,
-     "where to write the image; `-' writes it to standard output"},
+     "where to write the image"},
     {CLI_GROUP_OUTPUT, "format", 0, "F", 0, V_CHOICE, 0, 0, 0, "p6|p3|png",
      {RT_IMAGE_P6, RT_IMAGE_P3, RT_IMAGE_PNG}, AT(format),
      AT(format_given), NULL,
