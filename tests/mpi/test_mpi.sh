@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# test_mpi.sh - rt-export-mpi as a user runs it under mpirun (issue 20):
+#   test_mpi.sh exact N      -np N gives rt-export's image, byte for byte
+#   test_mpi.sh bad-scene    one message, from rank 0, naming line and
+#                            column; the job fails; no image
+#   test_mpi.sh killed-rank  kill -9 of a worker mid-render fails the job
+#                            and leaves no image and no temporary file
+# The environment gives the programs: RT_EXPORT, RT_EXPORT_MPI, MPIEXEC,
+# RT_SOURCE_DIR.  Open MPI needs --oversubscribe to start more ranks than
+# cores, and leave to run as root (CI runs as root).
+set -u
+mode=$1
+scenes=$RT_SOURCE_DIR/scenes
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+launcher=("$MPIEXEC")
+if "$MPIEXEC" --version 2>&1 | grep -q -i -e 'Open MPI' -e 'OpenRTE'; then
+    launcher+=(--oversubscribe)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    # no ssh or rsh needed (a fresh CI machine has none): every rank is
+    # local, so the agent, which must exist, is never called
+    export OMPI_MCA_plm_rsh_agent=false
+fi
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# same NAME NP OPTIONS...: rt-export and rt-export-mpi -np NP (with
+# $bands, its own option, too), compared.
+same() {
+    local name=$1 np=$2
+    shift 2
+    "$RT_EXPORT" -q "$@" -o "ref-$name" >/dev/null || fail "rt-export $*"
+    timeout 60 "${launcher[@]}" -np "$np" "$RT_EXPORT_MPI" -q "$@" \
+        --band-rows "${bands:-0}" -o "mpi-$name" >/dev/null ||
+        fail "rt-export-mpi -np $np $*"
+    cmp -s "ref-$name" "mpi-$name" ||
+        fail "-np $np $*: not rt-export's image"
+    echo "ok: -np $np $* (bands of ${bands:-auto} rows)"
+}
+
+case $mode in
+exact)
+    np=$2
+    same mirror.ppm "$np" "$scenes/mirror.scn" -j 1
+    bands=7 same mirror2.ppm "$np" "$scenes/mirror.scn" -j 2
+    same cubes.png "$np" "$scenes/cubes.scn" --samples 4 \
+        --sampling stratified --region 37,50,301,333 -j 1
+    bands=1 same glass.ppm "$np" "$scenes/glass.scn" --size 123x77 --depth 3
+    ;;
+bad-scene)
+    printf '8,-8,-3\n3,-3,-1, 3,-9,0, 40,40\n3\n-1,-1,0\n1,x,0\n0,1,0\n' \
+        > bad.scn
+    timeout 60 "${launcher[@]}" -np 3 "$RT_EXPORT_MPI" bad.scn -o bad.ppm \
+        >out.txt 2>err.txt && fail "a bad scene exited 0"
+    cat err.txt
+    count=$(grep -c 'bad.scn:5:3:' err.txt)
+    [ "$count" -eq 1 ] || fail "expected one bad.scn:5:3 message, found $count"
+    [ ! -e bad.ppm ] || fail "an image was written"
+    ;;
+killed-rank)
+    # about 20 s of work for 3 ranks on 2 cores: the kill comes long before
+    timeout 60 "${launcher[@]}" -np 3 "$RT_EXPORT_MPI" -q \
+        "$scenes/mirror.scn" --size 900x900 --samples 16 -j 1 \
+        -o killed.ppm >out.txt 2>err.txt &
+    job=$!
+    victim=
+    for _ in $(seq 100); do     # the rank 1 process among the job's
+        sleep 0.1
+        for pid in $(pgrep -P "$(pgrep -P $job -d, || echo $job)" 2>/dev/null) \
+                   $(pgrep -P $job 2>/dev/null); do
+            if tr '\0' '\n' < "/proc/$pid/environ" 2>/dev/null |
+                grep -qx 'OMPI_COMM_WORLD_RANK=1\|PMI_RANK=1'; then
+                victim=$pid
+            fi
+        done
+        [ -n "$victim" ] && break
+    done
+    [ -n "$victim" ] || { kill $job; fail "rank 1 was not found"; }
+    sleep 1.5                   # mid-render
+    kill -9 "$victim"
+    echo "killed rank 1 (pid $victim)"
+    wait $job && fail "the job exited 0 after a rank was killed"
+    cat err.txt
+    [ -s err.txt ] || fail "no message"
+    [ ! -e killed.ppm ] || fail "an image was written"
+    leftovers=$(ls -A | grep -v -x -e out.txt -e err.txt)
+    [ -z "$leftovers" ] || fail "left behind: $leftovers"
+    ;;
+*)
+    echo "usage: test_mpi.sh exact N | bad-scene | killed-rank" >&2
+    exit 2
+    ;;
+esac
+echo "ok: $mode"
