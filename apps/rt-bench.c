@@ -403,11 +403,11 @@ typedef struct images {
 
 static void free_images(images *im)
 {
-    rt_image_destroy(&im->reference);
-    rt_image_destroy(&im->scratch);
-    rt_image_destroy(&im->depth_reference);
+    rt_image_release(&im->reference);
+    rt_image_release(&im->scratch);
+    rt_image_release(&im->depth_reference);
     for (int i = 0; i < MAX_CONFIGS; i++)
-        rt_image_destroy(&im->kept[i]);
+        rt_image_release(&im->kept[i]);
 }
 
 static int render_or_complain(const rt_scene *scene, const settings *s,
@@ -513,7 +513,7 @@ static int measure(const rt_scene *scene, const arguments *a,
                 rt_image *image = round == 0 && is_base ? &im->kept[i]
                                                         : &im->scratch;
                 if (image->pixels == NULL &&
-                    rt_image_create(image, im->reference.width,
+                    rt_image_init(image, im->reference.width,
                                     im->reference.height) != RT_OK) {
                     fprintf(stderr, "rt-bench: out of memory\n");
                     return 0;
@@ -656,7 +656,7 @@ int main(int argc, char **argv)
     if (rt_render_image_size(scene, options, &width, &height, &error) !=
         RT_OK) {
         fprintf(stderr, "rt-bench: --size: %s\n", error.message);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return CLI_EXIT_USAGE;
     }
     /* the lens the renders use: the options', else the scene's */
@@ -669,7 +669,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "rt-bench: %s: the camera has no lens (aperture "
                         "0): give --aperture A (and --focus F) to measure "
                         "depth of field\n", a.scene);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return EXIT_BAD_INPUT;
     }
     int threads = options->threads;
@@ -692,7 +692,7 @@ int main(int argc, char **argv)
     if (mkdir(a.out, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "rt-bench: %s: cannot create: %s\n", a.out,
                 strerror(errno));
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return EXIT_BAD_INPUT;
     }
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
@@ -716,9 +716,9 @@ int main(int argc, char **argv)
     images im = {0};
     code = EXIT_BAD_INPUT;
     output_file depth_out = {0};
-    if (rt_image_create(&im.reference, width, height) != RT_OK ||
-        rt_image_create(&im.scratch, width, height) != RT_OK ||
-        rt_image_create(&im.depth_reference, width, height) !=
+    if (rt_image_init(&im.reference, width, height) != RT_OK ||
+        rt_image_init(&im.scratch, width, height) != RT_OK ||
+        rt_image_init(&im.depth_reference, width, height) !=
             RT_OK) {
         fprintf(stderr, "rt-bench: out of memory\n");
         goto done;
@@ -827,6 +827,6 @@ int main(int argc, char **argv)
 done:
     output_file_close(&depth_out, 0);
     free_images(&im);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     return code;
 }

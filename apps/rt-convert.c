@@ -128,7 +128,7 @@ int main(int argc, char **argv)
     if (status == RT_OK && strcmp(out, "-") == 0 && fflush(stdout) != 0)
         status = RT_ERR_IO, snprintf(error.message, sizeof error.message,
                                      "<stdout>: cannot write the scene");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     if (status != RT_OK) {
         fprintf(stderr, "rt-convert: %s\n", error.message);
         return 1;

@@ -228,7 +228,7 @@ int main(int argc, char **argv)
         rt_image images[SETTING_COUNT] = {{0}};
         int ok = 1, first = en->octree_only ? FIRST_OCTREE : 0;
         for (int s = first; s < SETTING_COUNT && ok; s++)
-            ok = rt_image_create(&images[s], en->width, en->height) == RT_OK;
+            ok = rt_image_init(&images[s], en->width, en->height) == RT_OK;
         /* round robin, so that a change of load on the machine hits every
          * setting alike */
         for (int run = 0; run < runs && ok; run++) {
@@ -263,8 +263,8 @@ int main(int argc, char **argv)
             failures++;
         }
         for (int s = 0; s < SETTING_COUNT; s++)
-            rt_image_destroy(&images[s]);
-        rt_scene_free(scene);
+            rt_image_release(&images[s]);
+        rt_scene_destroy(scene);
     }
     fprintf(stderr, "\r%60s\r", "");
 

@@ -7,7 +7,7 @@
 #include "raytrace/image.h"
 #include "raytrace/scene.h"
 
-rt_status rt_image_create(rt_image *image, int width, int height)
+rt_status rt_image_init(rt_image *image, int width, int height)
 {
     memset(image, 0, sizeof *image);
     if (width < 1 || height < 1 || width > RT_MAX_IMAGE_SIDE ||
@@ -24,7 +24,7 @@ rt_status rt_image_create(rt_image *image, int width, int height)
     return RT_OK;
 }
 
-void rt_image_destroy(rt_image *image)
+void rt_image_release(rt_image *image)
 {
     if (image == NULL)
         return;

@@ -65,7 +65,7 @@ rt_cancel *rt_cancel_create(void)
     return cancel;
 }
 
-void rt_cancel_free(rt_cancel *cancel)
+void rt_cancel_destroy(rt_cancel *cancel)
 {
     free(cancel);
 }

@@ -221,7 +221,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
                                          d->screen_right, d->width, d->height,
                                          &s->camera);
     if (reason != NULL) {
-        rt_scene_free(s);
+        rt_scene_destroy(s);
         return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
                              "expected a camera, found that %s", reason);
     }
@@ -235,7 +235,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
     if ((name && !s->name) || !s->vertices || !s->facets ||
         !s->warnings || !s->lights) {
-        rt_scene_free(s);
+        rt_scene_destroy(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
     if (nv > 0)
@@ -280,7 +280,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt__scene_kernel_source(s, &source);
     s->kernel = rt__kernel_d_create(&source);
     if (s->kernel == NULL) {
-        rt_scene_free(s);
+        rt_scene_destroy(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
     *out = s;
@@ -299,7 +299,7 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
     return rt__scene_build(desc, NULL, NULL, NULL, scene, error);
 }
 
-void rt_scene_free(rt_scene *scene)
+void rt_scene_destroy(rt_scene *scene)
 {
     if (scene == NULL)
         return;

@@ -72,7 +72,7 @@ START_TEST(camera_keeps_perpendicular_b_and_builds_up_vector)
     assert_near(cam.right, (rt_vec3){1, 0, 0}, 0.0, "AB");
     /* AC = AO x AB = (0,0,1) x (1,0,0) = (0,1,0), tolerance 1e-15 */
     assert_near(cam.up, (rt_vec3){0, 1, 0}, 1e-15, "AC");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -101,7 +101,7 @@ START_TEST(camera_projects_b_when_ab_is_not_perpendicular_to_ao)
     rt_vec3 expected_up = cross(ao, expected_right);
     expected_up = scale(expected_up, ab / length(expected_up));
     assert_near(cam.up, expected_up, 1e-13, "AC");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -116,7 +116,7 @@ START_TEST(camera_frame_is_right_handed_for_a_tilted_screen)
     ck_assert_int_eq(info.camera.b_was_projected, 0);
     assert_near(info.camera.right, (rt_vec3){2, -1.5, 0}, 1e-15, "AB");
     assert_near(info.camera.up, (rt_vec3){0, 0, 2.5}, 1e-15, "AC");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -168,7 +168,7 @@ static void check_corners_and_centre(rt_vec3 o, rt_vec3 a, rt_vec3 b, int w,
         double cosine = dot(d, ao) / (length(d) * length(ao));
         ck_assert_double_eq_tol(cosine, 1.0, 1e-15);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(camera_rays_of_corners_and_centre_follow_the_formula_square)
@@ -207,7 +207,7 @@ START_TEST(camera_top_left_pixel_is_up_and_left)
                             1e-15);
     ck_assert_double_eq_tol(ray.origin.y + t * ray.direction.y, 2.0 / 3.0,
                             1e-15);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -238,7 +238,7 @@ START_TEST(camera_pixels_are_square_when_width_and_height_differ)
                 add(add(cam->screen_center, scale(cam->right, -0.8)),
                     scale(cam->up, 0.4)),
                 1e-13, "pixel (0, 0)");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

@@ -378,7 +378,7 @@ START_TEST(png_holds_the_pixels_of_the_ppm)
     ck_assert_int_eq(width, ppm.width);
     ck_assert_int_eq(height, ppm.height);
     ck_assert(memcmp(pixels, ppm.pixels, (size_t)width * height * 3) == 0);
-    rt_image_destroy(&ppm);
+    rt_image_release(&ppm);
     free(pixels);
 #else
     /* A build without libpng says so, and writes nothing. */

@@ -128,7 +128,7 @@ START_TEST(two_lights_add_up_channel_by_channel)
         w.d.light_color = lights[l].color;
         rt_scene *scene = build(&w);
         alone[l] = render_with(scene, 5, 1, -1, 0);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     cube_world(&w, 120, 90);
     w.d.light_position = lights[0].position;
@@ -159,10 +159,10 @@ START_TEST(two_lights_add_up_channel_by_channel)
                                rt_image_pixel(&alone[1], x, y)[c] > 0;
             }
     ck_assert_int_gt(lit_by_both, 1000);    /* the test is not vacuous */
-    rt_image_destroy(&both);
-    rt_image_destroy(&alone[0]);
-    rt_image_destroy(&alone[1]);
-    rt_scene_free(scene);
+    rt_image_release(&both);
+    rt_image_release(&alone[0]);
+    rt_image_release(&alone[1]);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -198,10 +198,10 @@ START_TEST(clear_sheet_of_index_one_is_invisible)
     long differ = rt_test_image_diff(&actual, &expected, &worst);
     ck_assert_msg(differ == 0, "%ld pixels differ (by up to %d)", differ,
                   worst);
-    rt_image_destroy(&actual);
-    rt_image_destroy(&expected);
-    rt_scene_free(sheet);
-    rt_scene_free(without);
+    rt_image_release(&actual);
+    rt_image_release(&expected);
+    rt_scene_destroy(sheet);
+    rt_scene_destroy(without);
 }
 END_TEST
 
@@ -293,8 +293,8 @@ START_TEST(slab_shifts_what_is_behind_it_without_deforming_it)
                       "at %g degrees: shift %.12g, expected %.12g",
                       degrees[i], measured, shift);
     }
-    rt_scene_free(bare);
-    rt_scene_free(slab);
+    rt_scene_destroy(bare);
+    rt_scene_destroy(slab);
 }
 END_TEST
 
@@ -340,7 +340,7 @@ START_TEST(total_internal_reflection_begins_at_the_critical_angle)
                               margins[i], color.r, color.g, color.b);
         }
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -367,11 +367,11 @@ START_TEST(zero_aperture_is_the_pinhole_byte_for_byte)
         ck_assert_int_eq(rt_test_image_diff(&closed, &expected, NULL), 0);
         if (samples[i] > 1)     /* the lens does something when open */
             ck_assert_int_gt(rt_test_image_diff(&open, &expected, NULL), 0);
-        rt_image_destroy(&expected);
-        rt_image_destroy(&closed);
-        rt_image_destroy(&open);
-        rt_scene_free(pinhole);
-        rt_scene_free(lens);
+        rt_image_release(&expected);
+        rt_image_release(&closed);
+        rt_image_release(&open);
+        rt_scene_destroy(pinhole);
+        rt_scene_destroy(lens);
     }
 }
 END_TEST
@@ -440,9 +440,9 @@ START_TEST(focal_plane_stays_sharp_as_the_aperture_grows)
                           "aperture %g: the far edge spans %d pixels "
                           "(before: %d)", apertures[i], far, previous_far);
         previous_far = far;
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

@@ -160,7 +160,7 @@ static void remove_dir(char *dir)
 static rt_image make_image(int width, int height)
 {
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
     for (int y = 0; y < height; y++)
         for (int x = 0; x < width; x++) {
             unsigned char *p = rt_image_pixel(&image, x, y);
@@ -287,7 +287,7 @@ START_TEST(scene_corpus_replays_without_fault)
             rt_ray ray = rt_camera_ray(&info.camera, info.width - 1,
                                        info.height - 1);
             (void)rt_trace(scene, ray, 5);
-            rt_scene_free(scene);
+            rt_scene_destroy(scene);
             loaded++;
         } else {
             ck_assert_ptr_null(scene);
@@ -358,7 +358,7 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     rt_error error;
     ck_assert_int_eq(rt_scene_parse(exact, length, NULL, &scene, &error),
                      RT_OK);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     /* every prefix is refused, with a message, until the last record
      * "0 0 4 255 255 255" has its sixth value; then every prefix loads */
     size_t complete = (size_t)(strstr(small_scene, "0 0 4 255 255 255") -
@@ -368,7 +368,7 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
         if (n > complete) {
             ck_assert_msg(status == RT_OK, "prefix %zu: %s", n,
                           error.message);
-            rt_scene_free(scene);
+            rt_scene_destroy(scene);
             continue;
         }
         ck_assert_msg(status != RT_OK, "a prefix of %zu bytes loaded", n);
@@ -481,12 +481,12 @@ static int parse_with_memory_limit(void *arg, char *message, size_t size)
         rt_image image;
         status = rt_ppm_parse(b->data, b->length, "hostile.ppm", &image,
                               &error);
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     } else {
         rt_scene *scene;
         status = rt_scene_parse(b->data, b->length, "hostile.scn", &scene,
                                 &error);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     snprintf(message, size, "%s: %s", rt_status_string(status),
              status == RT_OK ? "loaded" : error.message);
@@ -683,7 +683,7 @@ static double parse_time(const char *text, size_t length, shape s)
     int should_load = s == SHAPE_FACETS || s == SHAPE_DEGENERATE;
     ck_assert_msg((status == RT_OK) == should_load, "%s: %s", shape_names[s],
                   error.message);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     return elapsed;
 }
 
@@ -766,7 +766,7 @@ START_TEST(failing_sink_stops_the_writer_with_an_io_error)
                           "on call %d", (int)formats[f], n);
         }
     }
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 }
 END_TEST
 
@@ -785,7 +785,7 @@ START_TEST(ppm_write_file_reports_a_full_device)
     rt_image image = make_image(4, 4);
     rt_status status = rt_ppm_write_file(full, &image, RT_PPM_P6);
     fclose(full);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     ck_assert_msg(status == RT_ERR_IO,
                   "writing to /dev/full returned %s, expected an "
                   "input/output error", rt_status_string(status));
@@ -829,7 +829,7 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     free(through);
     free(file);
     free(path);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_dir(dir);
 }
 END_TEST
@@ -850,7 +850,7 @@ START_TEST(save_over_a_directory_fails_and_removes_its_temporary_file)
     struct stat st;
     ck_assert_int_eq(stat(target, &st), 0);
     ck_assert(S_ISDIR(st.st_mode));
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     free(target);
     remove_dir(dir);
 }
@@ -872,7 +872,7 @@ START_TEST(save_to_the_longest_file_name_works)
     rt_error error;
     rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
     char *names = list_dir(dir);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     free(path);
     remove_dir(dir);
     ck_assert_msg(status == RT_OK, "%s", error.message);
@@ -888,13 +888,13 @@ static int save_must_fail(const char *dir, char *message, size_t size)
     char path[PATH_MAX];
     snprintf(path, sizeof path, "%s/out.ppm", dir);
     rt_image image;
-    if (rt_image_create(&image, 200, 200) != RT_OK) {
+    if (rt_image_init(&image, 200, 200) != RT_OK) {
         snprintf(message, size, "no memory for the image");
         return 2;
     }
     rt_error error;
     rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     snprintf(message, size, "%s", status == RT_OK ? "saved" : error.message);
     return status == RT_ERR_IO ? 0 : 1;
 }

@@ -124,7 +124,7 @@ static void assert_parse_agrees_with_core(const char *path)
         ck_assert_double_eq_tol(f.n.z, record.normal.z, 1e-12);
     }
     freeScene(&s);
-    rt_scene_free(core);
+    rt_scene_destroy(core);
 }
 
 /* ---- parse -------------------------------------------------------------- */
@@ -379,9 +379,9 @@ static void assert_render_matches_core(const char *path)
     long differing = rt_test_image_diff(&got, &expected, &max_diff);
     ck_assert_msg(differing == 0, "%s: %ld pixels differ (by up to %d)",
                   path, differing, max_diff);
-    rt_image_destroy(&got);
-    rt_image_destroy(&expected);
-    rt_scene_free(core);
+    rt_image_release(&got);
+    rt_image_release(&expected);
+    rt_scene_destroy(core);
 }
 
 START_TEST(render_to_ppm_gives_the_core_renderers_image)
@@ -445,7 +445,7 @@ START_TEST(render_to_ppm_renders_a_scene_built_by_hand)
     ck_assert_int_eq(centre[0], 200);
     ck_assert_int_eq(centre[1], 100);
     ck_assert_int_eq(centre[2], 50);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 
     /* the facets array is the truth: no facet, only the background */
     s.nbFacets = 0;
@@ -453,7 +453,7 @@ START_TEST(render_to_ppm_renders_a_scene_built_by_hand)
     ck_assert(rt_ppm_load("in104_hand.ppm", &image, &error) == RT_OK);
     centre = rt_image_pixel(&image, 1, 1);
     ck_assert(centre[0] == 1 && centre[1] == 2 && centre[2] == 3);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 }
 END_TEST
 

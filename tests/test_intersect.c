@@ -38,7 +38,7 @@ START_TEST(hit_from_above_gives_t_point_and_normal_facing_the_origin)
     ck_assert_double_eq_tol(hit.normal.x, 0.0, 1e-15);
     ck_assert_double_eq_tol(hit.normal.y, 0.0, 1e-15);
     ck_assert_double_eq_tol(hit.normal.z, 1.0, 1e-15);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -55,7 +55,7 @@ START_TEST(hit_from_below_turns_normal_and_scales_t_with_direction)
     ck_assert_double_eq_tol(hit.point.y, -0.5, 1e-14);
     ck_assert_double_eq_tol(hit.point.z, 0.0, 1e-14);
     ck_assert_double_eq_tol(hit.normal.z, -1.0, 1e-15);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -73,7 +73,7 @@ START_TEST(ray_beside_the_facet_misses)
     /* parallel to the plane, in it or above it */
     ck_assert(!rt_scene_nearest_hit(scene, ray_of(-5, 0, 1, 1, 0, 0),
                                     INFINITY, &hit));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -85,7 +85,7 @@ START_TEST(hits_behind_the_origin_are_ignored)
                                     &hit));
     ck_assert(!rt_scene_nearest_hit(scene, ray_of(0, 0, -5, 0, 0, -1),
                                     INFINITY, &hit));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -97,7 +97,7 @@ START_TEST(hits_at_or_beyond_t_max_are_ignored)
     ck_assert(!rt_scene_nearest_hit(scene, ray, 4.9, &hit));
     ck_assert(rt_scene_nearest_hit(scene, ray, 5.1, &hit));
     ck_assert_double_eq_tol(hit.t, 5.0, 1e-14);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -117,7 +117,7 @@ START_TEST(nearest_of_two_facets_wins_whatever_their_order)
                                    &hit));
     ck_assert_int_eq(hit.facet, 0);
     ck_assert_double_eq_tol(hit.t, 5.0, 1e-14);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -139,7 +139,7 @@ START_TEST(tie_between_coincident_facets_goes_to_the_lower_index)
         ck_assert_msg(hit.facet == 1, "ray %zu hit facet %d, expected 1", p,
                       hit.facet);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -198,7 +198,7 @@ static void rays_through_the_diagonal_never_miss(int flip_second)
     ck_assert_msg(misses == 0, "%d of %d rays through the shared edge missed "
                                "both triangles (first: ray %d)",
                   misses, rays, first_miss);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(rays_through_a_shared_edge_hit_one_of_the_two_triangles)
@@ -237,7 +237,7 @@ START_TEST(rays_through_a_vertex_shared_by_a_fan_never_miss)
     }
     ck_assert_msg(misses == 0, "%d of 5000 rays through the shared vertex "
                                "missed", misses);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -265,7 +265,7 @@ START_TEST(zero_area_facets_are_never_hit)
     /* along the degenerate facet 2, from (-1,0,0) to (0,1,0) */
     ck_assert(!rt_scene_nearest_hit(scene, ray_of(-0.5, 0.5, 5, 0, 0, -1),
                                     INFINITY, &hit));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -283,7 +283,7 @@ START_TEST(occluded_when_a_facet_lies_strictly_between)
                                  (rt_vec3){5, 0, -5}, -1));
     ck_assert(!rt_scene_occluded(scene, (rt_vec3){0, 0, 5},
                                  (rt_vec3){0, 0, -5}, 0));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -295,7 +295,7 @@ START_TEST(occlusion_ignores_facets_past_the_end_point)
                                  (rt_vec3){0, 0, 0.001}, -1));
     ck_assert(!rt_scene_occluded(scene, (rt_vec3){0, 0, -0.001},
                                  (rt_vec3){0, 0, -5}, -1));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

@@ -41,7 +41,7 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
                                           NULL),
                      RT_OK);
-    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
     options.precision = precision;
     options.kernel = kernel;
     options.threads = threads;
@@ -72,9 +72,9 @@ static void check_scene(const rt_scene *scene, image_size size,
                       p ? "float" : "double");
         ck_assert_uint_eq(s_ref.shadow_rays, s_fast.shadow_rays);
         ck_assert_uint_eq(s_ref.reflection_rays, s_fast.reflection_rays);
-        rt_image_destroy(&ref);
-        rt_image_destroy(&fast1);
-        rt_image_destroy(&fast2);
+        rt_image_release(&ref);
+        rt_image_release(&fast1);
+        rt_image_release(&fast2);
     }
 }
 
@@ -91,7 +91,7 @@ START_TEST(project_scenes_render_identically_with_both_kernels)
         ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
                       "%s", error.message);
         check_scene(scene, (image_size){0, 0}, g.gl_pathv[i]);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     globfree(&g);
 }
@@ -119,7 +119,7 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
          * 8 x 8 under valgrind) */
         int side = getenv("RT_TEST_MEMCHECK") ? 8 : 48;
         check_scene(scene, (image_size){side, side}, g.gl_pathv[i]);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     globfree(&g);
 }
@@ -132,10 +132,10 @@ START_TEST(generated_meshes_render_identically_with_both_kernels)
     int side = getenv("RT_TEST_MEMCHECK") ? 16 : 64;
     ck_assert_int_eq(bench_sphere(2000, side, side, &scene, &error), RT_OK);
     check_scene(scene, (image_size){0, 0}, "sphere");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     ck_assert_int_eq(bench_soup(2001, side, side, &scene, &error), RT_OK);
     check_scene(scene, (image_size){0, 0}, "soup");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -286,7 +286,7 @@ static void check_rays_on_grid(int jitter)
             }
     }
     rt__kernel_f_free(kf);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(rays_through_shared_edges_see_the_same_with_both_kernels)
@@ -322,7 +322,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
         check_ray(scene, kf, origin, target);
     }
     rt__kernel_f_free(kf);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -340,8 +340,8 @@ START_TEST(a_scene_without_reflective_facets_casts_no_reflection_ray)
     ck_assert_uint_eq(stats.reflection_rays, 0);
     ck_assert_uint_gt(stats.reflection_rays_skipped, 0);
     ck_assert_uint_gt(stats.ray_facet_tests_skipped, 0);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -361,8 +361,8 @@ START_TEST(the_cubes_scene_casts_fewer_shadow_rays_than_it_has_hits)
     ck_assert_uint_gt(stats.shadow_rays_skipped, 0);
     ck_assert_uint_lt(stats.shadow_rays, hits);
     ck_assert_uint_eq(stats.camera_rays, 400u * 400u);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -371,14 +371,14 @@ START_TEST(an_unknown_kernel_choice_is_an_argument_error)
     rt_scene *scene = rt_test_scene_from_string(
         "0 0 5\n0 0 4 1 0 4 2 2\n0\n0\n0 0 0\n0 0 10 255 255 255\n");
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, 2, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 2, 2), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     ck_assert_int_eq(options.kernel, RT_KERNEL_AUTO);
     options.kernel = (rt_kernel_choice)7;
     ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

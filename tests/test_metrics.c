@@ -13,7 +13,7 @@
 static rt_image image_of(int width, int height, const unsigned char *values)
 {
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
     for (int y = 0; y < height; y++)
         memcpy(rt_image_pixel(&image, 0, y), values + 3 * width * y,
                (size_t)(3 * width));
@@ -32,8 +32,8 @@ START_TEST(identical_images_have_zero_error_and_infinite_psnr)
     ck_assert_int_eq(e.pixels, 2);
     ck_assert_int_eq(e.differing, 0);
     ck_assert_int_eq(e.differing_much, 0);
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
+    rt_image_release(&a);
+    rt_image_release(&b);
 }
 END_TEST
 
@@ -60,8 +60,8 @@ START_TEST(small_differences_give_hand_computed_metrics)
     ck_assert_int_eq(e.differing_much, 1);
     ck_assert_double_eq_tol(bench_percent(e.differing, e.pixels), 75.0,
                             1e-12);
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
+    rt_image_release(&a);
+    rt_image_release(&b);
 }
 END_TEST
 
@@ -80,8 +80,8 @@ START_TEST(one_full_flip_is_counted_as_a_pixel_changed_much)
     ck_assert_int_eq(e.max_error, 255);
     ck_assert_int_eq(e.differing, 1);
     ck_assert_int_eq(e.differing_much, 1);
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
+    rt_image_release(&a);
+    rt_image_release(&b);
 }
 END_TEST
 

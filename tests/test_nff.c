@@ -182,7 +182,7 @@ START_TEST(a_sphere_has_its_facets_on_it_within_the_tolerance_wound_outward)
         ck_assert_msg(gap <= tols[k] * 0.5 * (1 + 1e-9), "gap %g", gap);
         /* and not far below: the fewest bands were chosen */
         ck_assert_msg(gap > tols[k] * 0.5 * 0.3, "gap %g", gap);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -198,7 +198,7 @@ START_TEST(a_negative_radius_winds_the_sphere_inward_with_a_warning)
         ck_assert(dot(winding(scene, i), p[0]) < 0);
     }
     ck_assert_int_eq(count_warnings(scene, "negative radius"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -227,7 +227,7 @@ START_TEST(a_cylinder_is_open_with_two_facets_a_segment_wound_outward)
         double d = dot(n, p[0]) / length(n);
         ck_assert_double_eq_tol(d, 2 * cos(PI / 7), 1e-9);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -245,7 +245,7 @@ START_TEST(a_cone_to_a_point_has_one_facet_a_segment)
                           p[0].y + p[1].y + p[2].y, 0};
         ck_assert(dot(winding(scene, i), radial) > 0);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -274,7 +274,7 @@ START_TEST(the_view_maps_to_the_screen_with_the_angle_between_pixel_centres)
     ray = rt_camera_ray(c, 5, 0);
     ck_assert_double_eq_tol(ray.direction.z / ray.direction.y, 1, 1e-12);
     ck_assert_int_eq(count_warnings(scene, "hither"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -302,7 +302,7 @@ START_TEST(colours_and_materials_map_to_the_model)
     rt_scene_facet(scene, 1, &f);
     ck_assert(f.d == 2 && f.k == 0.25 && f.t == 0 && f.n == 1);
     ck_assert_int_eq(count_warnings(scene, "Shine"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -317,7 +317,7 @@ START_TEST(ks_plus_t_above_one_is_scaled_down_with_a_warning)
     ck_assert_double_eq_tol(f.t, 0.6, 1e-12);
     ck_assert(f.k + f.t <= 1);
     ck_assert_int_eq(count_warnings(scene, "Ks + T = 1.5"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -341,7 +341,7 @@ START_TEST(lights_without_colour_share_one_white_light)
     ck_assert_int_eq(l.color.r, 51);
     ck_assert_int_eq(l.color.g, 102);
     ck_assert_int_eq(l.color.b, 255);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -359,7 +359,7 @@ START_TEST(a_file_without_light_gets_a_white_light_at_the_eye)
               info.light_position.z == 3);
     ck_assert_int_eq(info.light_color.r, 255);
     ck_assert_int_eq(count_warnings(scene, "no light"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -378,7 +378,7 @@ START_TEST(a_convex_polygon_is_a_fan_that_keeps_its_winding)
         /* counter-clockwise seen from -y: normal -y */
         ck_assert(winding(scene, i).y < 0);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -405,7 +405,7 @@ START_TEST(a_non_convex_polygon_is_cut_into_ears_covering_its_area)
     ck_assert(!rt_scene_nearest_hit(scene, ray, INFINITY, &hit));
     ray.origin = (rt_vec3){0.5, 1.5, 5};
     ck_assert(rt_scene_nearest_hit(scene, ray, INFINITY, &hit));
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -420,7 +420,7 @@ START_TEST(a_patch_ignores_its_normals_with_one_warning)
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 2);
     ck_assert_int_eq(count_warnings(scene, "normals of `pp`"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -435,7 +435,7 @@ START_TEST(comments_crlf_and_values_across_lines_are_read)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 28);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -456,8 +456,8 @@ START_TEST(the_default_tolerance_follows_the_resolution)
     double tol = 1 - cos(5 / (sqrt(2.0) * (256 / (9 * tan(PI / 8)))));
     int bands = rt__tess_sphere_bands(tol);
     ck_assert_int_eq(b.facet_count, 4 * bands * (bands - 1));
-    rt_scene_free(small);
-    rt_scene_free(large);
+    rt_scene_destroy(small);
+    rt_scene_destroy(large);
 }
 END_TEST
 
@@ -563,7 +563,7 @@ START_TEST(the_loader_picks_nff_by_extension)
     ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), "ball.NFF", NULL,
                                          &scene, &error),
                      RT_OK);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -599,20 +599,20 @@ START_TEST(the_spd_scenes_of_shared_load)
     ck_assert_int_eq(info.background.r, 20);    /* 0.078 * 255 = 19.9 */
     ck_assert_int_eq(info.background.g, 92);    /* 0.361 * 255 = 92.1 */
     ck_assert_int_eq(info.background.b, 192);   /* 0.753 * 255 = 192.0 */
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 
     scene = load_shared("mount-s2.nff");
     rt_scene_get_info(scene, &info);
     /* 4 glass spheres: k = 0.1, t = 0.9, n = 1.5 */
     ck_assert_int_gt(info.transparent_facet_count, 0);
     ck_assert_int_eq(info.light_count, 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 
     scene = load_shared("rings-s2.nff");
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.light_count, 3);
     ck_assert_int_gt(info.facet_count, 150 * 8);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

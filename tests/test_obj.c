@@ -130,7 +130,7 @@ START_TEST(each_index_form_names_the_same_vertices)
         ck_assert_msg(status == RT_OK, "`%s`: %s", faces[i], error.message);
         ck_assert_int_eq(facet_count(scene), 1);
         facet_is(scene, 0, 0, 1, 2);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -144,7 +144,7 @@ START_TEST(negative_indices_count_back_from_the_last_vertex_read)
     facet_is(scene, 0, 0, 1, 2);
     facet_is(scene, 1, 3, 4, 5);
     facet_is(scene, 2, 0, 1, 5);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -155,7 +155,7 @@ START_TEST(a_statement_continues_after_a_backslash_and_comments_end_lines)
     ck_assert_int_eq(facet_count(scene), 2);
     rt_vec3 p = rt_scene_vertex(scene, 1);
     ck_assert(p.x == 1 && p.y == 0 && p.z == 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -239,7 +239,7 @@ static void check_polygon(const double (*p)[2], int n, rt_vec3 origin,
                   "the facets cover %.17g, the polygon %.17g", total,
                   polygon_area);
     ck_assert_int_eq(warnings_with(scene, "fan"), 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(an_l_shaped_hexagon_is_cut_into_four_facets_inside_it)
@@ -307,7 +307,7 @@ START_TEST(a_polygon_that_crosses_itself_is_fanned_with_a_warning)
     ck_assert_int_eq(facet_count(scene), 2);
     ck_assert_int_eq(warnings_with(scene, "triangulated as a fan"), 1);
     ck_assert_int_eq(warnings_with(scene, ":5:1: warning"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -331,7 +331,7 @@ START_TEST(corners_on_a_straight_line_and_repeated_corners_add_no_facet)
     }
     ck_assert_double_eq_tol(total, 4.0, 1e-12);
     ck_assert_int_eq(info.warning_count, 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -374,7 +374,7 @@ START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
     ck_assert_int_eq(warnings_with(scene, "material `nowhere` is defined "
                                           "in no material library"), 1);
     ck_assert_int_eq(warnings_with(scene, "materials.obj:20:8: warning"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -389,7 +389,7 @@ START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
     ck_assert_int_eq(warnings_with(scene, "missing-mtl.obj:2:8: warning"),
                      1);
     ck_assert_int_eq(warnings_with(scene, "material `red`"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -400,7 +400,7 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     scene = obj_file("tests/data/obj/escaped-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_get_info(scene, &info);
@@ -408,7 +408,7 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     ck_assert_int_eq(warnings_with(scene, "escaped-library.obj:2:8: warning: "
                                           "material library `missing.mtl` "
                                           "not read"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -417,7 +417,7 @@ START_TEST(an_obj_from_memory_without_a_path_reads_no_library)
     rt_scene *scene = obj("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3\n");
     ck_assert_int_eq(warnings_with(scene, "without a path"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -440,7 +440,7 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 5);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -450,10 +450,10 @@ START_TEST(a_file_without_faces_loads_with_a_warning)
     ck_assert_int_eq(facet_count(scene), 0);
     ck_assert_int_eq(warnings_with(scene, "<memory>: warning: the file has "
                                           "no face to draw"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     scene = obj("");
     ck_assert_int_eq(warnings_with(scene, "no face to draw"), 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -494,7 +494,7 @@ START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 2);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -608,7 +608,7 @@ static void every_vertex_inside_the_image(const char *text, int width,
                       "vertex %d at pixel (%g, %g) of %dx%d", i, x, y,
                       info.width, info.height);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(the_automatic_camera_sees_every_vertex_at_any_image_shape)
@@ -664,7 +664,7 @@ START_TEST(the_view_and_light_options_replace_the_automatic_ones)
     rt_scene_get_info(scene, &info);
     ck_assert(info.camera.observer.z == 10 && info.camera.observer.x == 0);
     ck_assert(info.light_position.x == 1 && info.light_color.b == 30);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -706,8 +706,8 @@ START_TEST(a_cube_renders_framed_with_its_red_top_lit)
         }
     ck_assert_msg(red > 2000, "%ld red pixels", red);
     ck_assert_msg(white > 2000, "%ld white pixels", white);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -747,10 +747,10 @@ START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
         rt_image direct = rt_test_render(scene, 5, 2);
         rt_image converted = rt_test_render(again, 5, 2);
         ck_assert_int_eq(rt_test_image_diff(&direct, &converted, NULL), 0);
-        rt_image_destroy(&direct);
-        rt_image_destroy(&converted);
-        rt_scene_free(again);
-        rt_scene_free(scene);
+        rt_image_release(&direct);
+        rt_image_release(&converted);
+        rt_scene_destroy(again);
+        rt_scene_destroy(scene);
         free(b.data);
     }
 }
@@ -798,8 +798,8 @@ START_TEST(real_models_in_raytrace_obj_models_load_and_render)
                       covered);
         printf("test_obj: %s: %d facets, %ld of 4096 pixels covered\n",
                entry->d_name, info.facet_count, covered);
-        rt_image_destroy(&image);
-        rt_scene_free(scene);
+        rt_image_release(&image);
+        rt_scene_destroy(scene);
         models++;
     }
     closedir(dir);

@@ -48,7 +48,7 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
                                           NULL),
                      RT_OK);
-    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
     options.precision = precision;
     options.accel = accel;
     options.threads = threads;
@@ -91,9 +91,9 @@ static void check_scene(const rt_scene *scene, image_size size,
             ck_assert_uint_eq(s_ref.reflection_rays, s_oct.reflection_rays);
             ck_assert_int_eq(s_ref.accel_used, 0);
             ck_assert_int_eq(s_oct.accel_used, 1);
-            rt_image_destroy(&ref);
-            rt_image_destroy(&one);
-            rt_image_destroy(&three);
+            rt_image_release(&ref);
+            rt_image_release(&one);
+            rt_image_release(&three);
         }
     }
 }
@@ -117,7 +117,7 @@ static size_t check_directory(const char *dir, int side)
         int w = side && info.width > side ? side : info.width;
         int h = side && info.height > side ? side : info.height;
         check_scene(scene, (image_size){w, h}, g.gl_pathv[i]);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     size_t count = g.gl_pathc;
     globfree(&g);
@@ -142,12 +142,12 @@ START_TEST(generated_meshes_render_identically_through_the_octree)
         ck_assert_int_eq(bench_sphere(sizes[i], side, side, &scene, &error),
                          RT_OK);
         check_scene(scene, (image_size){0, 0}, "sphere");
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         ck_assert_int_eq(bench_soup(sizes[i] + 1, side, side, &scene,
                                     &error),
                          RT_OK);
         check_scene(scene, (image_size){0, 0}, "soup");
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -244,7 +244,7 @@ START_TEST(facets_all_in_one_spot_render_identically)
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
                                  c, (rt_vec3){1, 1, 3}, memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "one spot");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -262,7 +262,7 @@ START_TEST(a_few_facets_spanning_everything_render_identically)
     rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
                                  (rt_vec3){3, -4, 12}, memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "spanning");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -288,7 +288,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
                                  (rt_vec3){0, 1, 0}, (rt_vec3){-2, -3, 4},
                                  memcheck() ? 12 : 56);
     check_scene(scene, (image_size){0, 0}, "slivers and walls");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -313,7 +313,7 @@ START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
                                  (rt_vec3){0, 0, 0}, (rt_vec3){1, -2, 9},
                                  memcheck() ? 12 : 64);
     check_scene(scene, (image_size){0, 0}, "coincident");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -334,12 +334,12 @@ START_TEST(far_and_inside_cameras_render_identically)
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
                                memcheck() ? 12 : 40);
     check_scene(far, (image_size){0, 0}, "far camera");
-    rt_scene_free(far);
+    rt_scene_destroy(far);
     rt_scene *inside = soup_scene(&t, (rt_vec3){0.01, 0.02, 0.03},
                                   (rt_vec3){1, 0.5, 0.2}, (rt_vec3){0, 0, 0},
                                   memcheck() ? 12 : 40);
     check_scene(inside, (image_size){0, 0}, "inside");
-    rt_scene_free(inside);
+    rt_scene_destroy(inside);
 }
 END_TEST
 
@@ -371,7 +371,7 @@ START_TEST(transparency_lights_and_lens_render_identically)
         .aperture = 0.05, .focal_distance = 4};
     rt_scene *scene = soup_create(&desc, &s);
     check_scene(scene, (image_size){0, 0}, "transparency, lights, lens");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -410,10 +410,10 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
                                samples, &stats);
         ck_assert_int_eq(rt_test_image_diff(&ref, &tree, NULL), 0);
         ck_assert_int_eq(stats.accel_used, 1);
-        rt_image_destroy(&ref);
-        rt_image_destroy(&tree);
+        rt_image_release(&ref);
+        rt_image_release(&tree);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -498,7 +498,7 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
         }
         check_ray(scene->kernel, kf, o, t);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -520,7 +520,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
             t = (rt_vec3){uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
         check_ray(scene->kernel, kf, o, t);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -531,14 +531,14 @@ START_TEST(the_default_is_auto_and_an_unknown_choice_is_an_argument_error)
     rt_scene *scene = rt_test_scene_from_string(
         "0 0 5\n0 0 4 1 0 4 2 2\n0\n0\n0 0 0\n0 0 10 255 255 255\n");
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, 2, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 2, 2), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     ck_assert_int_eq(options.accel, RT_ACCEL_AUTO);
     options.accel = (rt_accel)9;
     ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -564,10 +564,10 @@ START_TEST(auto_uses_the_octree_from_the_threshold_on)
     ck_assert_uint_gt(stats.accel_queries, 0);
     ck_assert_uint_lt(stats.accel_facet_tests,
                       stats.accel_queries * stats.accel_facets);
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
-    rt_scene_free(small);
-    rt_scene_free(big);
+    rt_image_release(&a);
+    rt_image_release(&b);
+    rt_scene_destroy(small);
+    rt_scene_destroy(big);
 }
 END_TEST
 
@@ -590,9 +590,9 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     ck_assert_uint_eq(first.accel_bytes, second.accel_bytes);
     ck_assert_ptr_eq(rt__scene_kernel_f(scene), rt__scene_kernel_f(scene));
     ck_assert_int_eq(rt_test_image_diff(&a, &b, NULL), 0);
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
-    rt_scene_free(scene);
+    rt_image_release(&a);
+    rt_image_release(&b);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -614,8 +614,8 @@ START_TEST(a_degenerate_scene_keeps_the_octree_bounded)
     ck_assert_uint_le(stats.accel_references,
                       RT_OCTREE_REFERENCE_BUDGET * 5000u +
                           RT_OCTREE_REFERENCE_EXTRA);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

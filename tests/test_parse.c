@@ -310,7 +310,7 @@ START_TEST(parse_reports_status_position_and_token_of_each_broken_rule)
     rt_status status =
         rt_scene_parse(text, strlen(text), "<test>", &scene, &error);
     check_error(c, status, scene, &error, "<test>");
-    rt_scene_free(status == RT_OK ? scene : NULL);
+    rt_scene_destroy(status == RT_OK ? scene : NULL);
 }
 END_TEST
 
@@ -334,7 +334,7 @@ START_TEST(parse_reports_the_same_errors_with_crlf_line_endings)
     memset(&error, 0, sizeof error);
     rt_status status = rt_scene_parse(crlf, n, "<test>", &scene, &error);
     check_error(c, status, scene, &error, "<test>");
-    rt_scene_free(status == RT_OK ? scene : NULL);
+    rt_scene_destroy(status == RT_OK ? scene : NULL);
 }
 END_TEST
 
@@ -448,7 +448,7 @@ START_TEST(parse_accepts_the_base_scene)
     build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -464,7 +464,7 @@ START_TEST(parse_accepts_integral_values_written_with_a_point)
                        "0 0 10 255 255. 2.55e2\n";
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -476,18 +476,18 @@ START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);
     ck_assert_double_eq(facet.k, 1.0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     build_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL, "\n");
-    rt_scene_free(parse_ok(text, strlen(text)));
+    rt_scene_destroy(parse_ok(text, strlen(text)));
     build_scene(text, sizeof text, 2, "0 0 4 1 0 0 16384 1", ALL, NULL, "\n");
     scene = parse_ok(text, strlen(text));
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, 16384);
     ck_assert_int_eq(info.height, 1);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     build_scene(text, sizeof text, 2, "0 0 4 1 0 0 1 16384", ALL, NULL, "\n");
-    rt_scene_free(parse_ok(text, strlen(text)));
+    rt_scene_destroy(parse_ok(text, strlen(text)));
 }
 END_TEST
 
@@ -507,8 +507,8 @@ START_TEST(parse_accepts_empty_scene_and_it_renders_background)
             ck_assert_msg(p[0] == 10 && p[1] == 20 && p[2] == 30,
                           "pixel (%d,%d) = %d %d %d", x, y, p[0], p[1], p[2]);
         }
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -521,7 +521,7 @@ START_TEST(parse_accepts_vertices_without_facets)
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.vertex_count, 2);
     ck_assert_int_eq(info.facet_count, 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -549,7 +549,7 @@ START_TEST(parse_accepts_comments_and_blank_lines_anywhere)
                        "\n";
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -559,7 +559,7 @@ START_TEST(parse_accepts_crlf_line_endings)
     build_scene(text, sizeof text, 0, NULL, ALL, "# end\r\n", "\r\n");
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -569,7 +569,7 @@ START_TEST(parse_accepts_a_utf8_byte_order_mark)
     build_scene(text + 3, sizeof text - 3, 0, NULL, ALL, NULL, "\n");
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -587,7 +587,7 @@ START_TEST(parse_accepts_commas_and_spaces_mixed)
                        "0 0, 10  255,255 ,255\n";
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -598,7 +598,7 @@ START_TEST(parse_accepts_a_file_without_final_newline)
     text[strlen(text) - 1] = '\0';
     rt_scene *scene = parse_ok(text, strlen(text));
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -632,7 +632,7 @@ START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);
     ck_assert_double_eq(facet.k, 0.5);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     /* and "1,5 0 0" is four values, not three, whatever the locale */
     const char *bad = "0 0 5\n0 0 4 1 0 0 2 2\n1\n1,5 0 0\n0\n10 20 30\n"
                       "0 0 10 255 255 255\n";
@@ -676,7 +676,7 @@ START_TEST(parse_warns_about_zero_area_facet_with_its_line)
     rt_hit hit;
     rt_ray ray = {{2, -1, 5}, {0, 0, -1}};
     ck_assert_int_eq(rt_scene_nearest_hit(scene, ray, INFINITY, &hit), 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -748,7 +748,7 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
     rt_status status = rt_scene_load(good, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     check_base_scene(scene);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 
     scene = NULL;
     status = rt_scene_load(bad, &scene, &error);
@@ -781,7 +781,7 @@ END_TEST
 
 START_TEST(free_of_null_scene_does_nothing)
 {
-    rt_scene_free(NULL);
+    rt_scene_destroy(NULL);
 }
 END_TEST
 

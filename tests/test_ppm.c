@@ -85,7 +85,7 @@ static void round_trip(rt_ppm_format format, int w, int h)
                                     &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     assert_same_pixels(&image, &back);
-    rt_image_destroy(&back);
+    rt_image_release(&back);
     free(out.data);
     free(memory);
 }
@@ -195,7 +195,7 @@ START_TEST(reader_accepts_comments_in_headers)
     ck_assert_int_eq(p[0], 0);
     ck_assert_int_eq(p[1], 128);
     ck_assert_int_eq(p[2], 255);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 
     const char p6[] = "P6\n# comment\n2 # w\n1\n# last\n255\n"
                       "\x01\x02\x03\x0a\x23\xff";
@@ -206,7 +206,7 @@ START_TEST(reader_accepts_comments_in_headers)
     ck_assert_int_eq(p[0], 0x0a);
     ck_assert_int_eq(p[1], 0x23);
     ck_assert_int_eq(p[2], 0xff);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 }
 END_TEST
 
@@ -292,7 +292,7 @@ START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
         status = rt_ppm_load(path, &back, &error);
         ck_assert_msg(status == RT_OK, "%s", error.message);
         assert_same_pixels(&image, &back);
-        rt_image_destroy(&back);
+        rt_image_release(&back);
     }
     free(memory);
     unlink(path);
@@ -321,7 +321,7 @@ START_TEST(save_replaces_an_existing_file)
     rt_status status = rt_ppm_load(path, &back, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     assert_same_pixels(&image, &back);
-    rt_image_destroy(&back);
+    rt_image_release(&back);
     ck_assert_int_eq(count_entries(dir, NULL, 0), 1);
     free(memory);
     unlink(path);
@@ -364,19 +364,19 @@ END_TEST
 START_TEST(image_create_and_destroy_follow_the_contract)
 {
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, 3, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 3, 2), RT_OK);
     ck_assert_int_eq(image.width, 3);
     ck_assert_int_eq(image.height, 2);
     ck_assert_uint_eq(image.stride, 9);
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 9; x++)
             ck_assert_int_eq(image.pixels[(size_t)y * image.stride + x], 0);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     ck_assert_ptr_null(image.pixels);
-    rt_image_destroy(&image); /* a zeroed image is a no-op */
-    ck_assert_int_ne(rt_image_create(&image, 0, 2), RT_OK);
+    rt_image_release(&image); /* a zeroed image is a no-op */
+    ck_assert_int_ne(rt_image_init(&image, 0, 2), RT_OK);
     ck_assert_ptr_null(image.pixels);
-    ck_assert_int_ne(rt_image_create(&image, 2, RT_MAX_IMAGE_SIDE + 1), RT_OK);
+    ck_assert_int_ne(rt_image_init(&image, 2, RT_MAX_IMAGE_SIDE + 1), RT_OK);
     ck_assert_ptr_null(image.pixels);
 }
 END_TEST

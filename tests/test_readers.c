@@ -168,7 +168,7 @@ START_TEST(coordinates_beyond_the_arithmetic_are_refused_where_they_are)
     v[1].x = 1e152;
     d.light_position = (rt_vec3){0, 0, 1e200};
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -198,7 +198,7 @@ START_TEST(float_refuses_a_scene_it_cannot_resolve)
         rt_status status =
             rt_scene_check_precision(scene, RT_PRECISION_FLOAT, &error);
         rt_image image;
-        ck_assert_int_eq(rt_image_create(&image, 8, 8), RT_OK);
+        ck_assert_int_eq(rt_image_init(&image, 8, 8), RT_OK);
         rt_render_options options;
         rt_render_options_init(&options);
         options.precision = RT_PRECISION_FLOAT;
@@ -213,8 +213,8 @@ START_TEST(float_refuses_a_scene_it_cannot_resolve)
                               && strstr(error.message, "render in double"),
                           "%s", error.message);
         }
-        rt_image_destroy(&image);
-        rt_scene_free(scene);
+        rt_image_release(&image);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST

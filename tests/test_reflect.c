@@ -75,8 +75,8 @@ START_TEST(perfect_mirror_shows_the_facet_it_faces)
     ck_assert_int_eq(p[0], 78);  /* 200*100/255 = 78.43 */
     ck_assert_int_eq(p[1], 129); /* 220*150/255 = 129.41 */
     ck_assert_int_eq(p[2], 235); /* 240*250/255 = 235.29 */
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -93,7 +93,7 @@ START_TEST(half_mirror_mixes_reflection_and_own_colour)
         snprintf(what, sizeof what, "k = %g", k);
         assert_color(rt_trace(scene, to_mirror, RT_DEFAULT_DEPTH), e[0], e[1],
                      e[2], COLOR_TOL, what);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -110,13 +110,13 @@ START_TEST(depth_zero_follows_no_reflection)
     ck_assert_msg(p[0] == 0 && p[1] == 0 && p[2] == 0,
                   "depth 0 pixel = %d %d %d, expected black", p[0], p[1],
                   p[2]);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
     scene = mirror_scene(0.5);
     assert_color(rt_trace(scene, to_mirror, 0), 0.5 * CS[0] * CM[0] / 255,
                  0.5 * CS[1] * CM[1] / 255, 0.5 * CS[2] * CM[2] / 255,
                  COLOR_TOL, "k = 0.5, depth 0");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -136,7 +136,7 @@ START_TEST(reflection_that_misses_brings_background_weighted_by_k)
             e[ch] = k * BG[ch] + (1 - k) * ns * CS[ch] * CM[ch] / 255;
         assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
                      COLOR_TOL, k == 1 ? "k = 1" : "k = 0.5");
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -157,7 +157,7 @@ START_TEST(mirror_works_at_every_scale_of_coordinates)
         snprintf(what, sizeof what, "scale %g", scales[i]);
         assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
                      1e-6, what);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -201,13 +201,13 @@ START_TEST(depth_limit_counts_reflections_exactly)
     const unsigned char *p = rt_image_pixel(&image, 0, 0);
     ck_assert_msg(p[0] == 11 && p[1] == 22 && p[2] == 33,
                   "depth 4 pixel = %d %d %d", p[0], p[1], p[2]);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     image = rt_test_render(scene, 3, 1);
     p = rt_image_pixel(&image, 0, 0);
     ck_assert_msg(p[0] == 0 && p[1] == 0 && p[2] == 0,
                   "depth 3 pixel = %d %d %d", p[0], p[1], p[2]);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -222,15 +222,15 @@ START_TEST(parallel_mirrors_terminate_at_any_depth)
         snprintf(what, sizeof what, "depth %d", depths[i]);
         assert_color(rt_trace(scene, ray, depths[i]), 0, 0, 0, 0.0, what);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     /* half mirrors: the value stays finite and within [0, 255] */
     scene = corridor(1e7, 0.5);
     rt_color c = rt_trace(scene, ray, 1000);
     ck_assert(isfinite(c.r) && c.r >= 0 && c.r <= 255 + 1e-9);
     ck_assert(isfinite(c.g) && c.g >= 0 && c.g <= 255 + 1e-9);
     rt_image image = rt_test_render(scene, RT_DEFAULT_DEPTH, 1);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

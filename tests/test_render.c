@@ -61,7 +61,7 @@ static rt_image render_with(const rt_scene *scene, rt_render_options *options)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, info.width, info.height), RT_OK);
     rt_status status = rt_render(scene, options, &image);
     ck_assert_msg(status == RT_OK, "render: %s", rt_status_string(status));
     return image;
@@ -128,9 +128,9 @@ static void check_expected_image(const char *name, int samples,
                      expected_name, worst, x0, x1, y0, y1, where,
                      saved == RT_OK ? "written to" : "NOT written to", out);
     }
-    rt_image_destroy(&expected);
-    rt_image_destroy(&actual);
-    rt_scene_free(scene);
+    rt_image_release(&expected);
+    rt_image_release(&actual);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(project_scenes_render_exactly_their_expected_images)
@@ -219,10 +219,10 @@ START_TEST(one_thread_and_two_threads_give_identical_images)
     ck_assert_int_eq(memcmp(one.pixels, seven.pixels,
                             one.stride * (size_t)one.height),
                      0);
-    rt_image_destroy(&one);
-    rt_image_destroy(&two);
-    rt_image_destroy(&seven);
-    rt_scene_free(scene);
+    rt_image_release(&one);
+    rt_image_release(&two);
+    rt_image_release(&seven);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -239,9 +239,9 @@ START_TEST(scalar_and_automatic_kernels_give_identical_images)
     long differing = rt_test_image_diff(&scalar, &automatic, &worst);
     ck_assert_msg(differing == 0, "%ld pixels differ (max %d)", differing,
                   worst);
-    rt_image_destroy(&scalar);
-    rt_image_destroy(&automatic);
-    rt_scene_free(scene);
+    rt_image_release(&scalar);
+    rt_image_release(&automatic);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -252,7 +252,7 @@ START_TEST(two_bands_rendered_apart_equal_the_whole_render)
     rt_scene_get_info(scene, &info);
     rt_image whole = render_with(scene, NULL);
     rt_image bands;
-    ck_assert_int_eq(rt_image_create(&bands, info.width, info.height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&bands, info.width, info.height), RT_OK);
     int split = info.height / 3;
     ck_assert_int_eq(rt_render_rows(scene, NULL, split, info.height, &bands),
                      RT_OK);
@@ -264,9 +264,9 @@ START_TEST(two_bands_rendered_apart_equal_the_whole_render)
     ck_assert_int_eq(memcmp(whole.pixels, bands.pixels,
                             whole.stride * (size_t)whole.height),
                      0);
-    rt_image_destroy(&whole);
-    rt_image_destroy(&bands);
-    rt_scene_free(scene);
+    rt_image_release(&whole);
+    rt_image_release(&bands);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -303,9 +303,9 @@ START_TEST(on_row_is_called_once_per_row)
         for (int y = 0; y < info.height; y++)
             ck_assert_msg(log.seen[y] == 1, "row %d reported %d times", y,
                           log.seen[y]);
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -324,7 +324,7 @@ START_TEST(cancel_from_on_row_returns_cancelled)
         options.on_row = log_row;
         options.user = &log;
         rt_image image;
-        ck_assert_int_eq(rt_image_create(&image, info.width, info.height),
+        ck_assert_int_eq(rt_image_init(&image, info.width, info.height),
                          RT_OK);
         ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_CANCELLED);
         ck_assert_msg(log.calls < info.height,
@@ -333,9 +333,9 @@ START_TEST(cancel_from_on_row_returns_cancelled)
         ck_assert_int_eq(rt_render_rows(scene, &options, 0, info.height,
                                         &image),
                          RT_ERR_CANCELLED);
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -357,7 +357,7 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     ck_assert_ptr_nonnull(token);
     ck_assert_int_eq(rt_cancel_requested(token), 0);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, info.width, info.height), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     options.cancel = token;
@@ -393,10 +393,10 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     rt_cancel_reset(token);
     options.on_row = NULL;
     ck_assert_int_eq(rt_render(scene, &options, &image), RT_OK);
-    rt_image_destroy(&image);
-    rt_cancel_free(token);
-    rt_cancel_free(NULL);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_cancel_destroy(token);
+    rt_cancel_destroy(NULL);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -406,17 +406,17 @@ START_TEST(render_refuses_wrong_image_size_and_negative_depth)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, info.width + 1, info.height),
+    ck_assert_int_eq(rt_image_init(&image, info.width + 1, info.height),
                      RT_OK);
     ck_assert_int_eq(rt_render(scene, NULL, &image), RT_ERR_ARGUMENT);
-    rt_image_destroy(&image);
-    ck_assert_int_eq(rt_image_create(&image, info.width, info.height), RT_OK);
+    rt_image_release(&image);
+    ck_assert_int_eq(rt_image_init(&image, info.width, info.height), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     options.max_depth = -1;
     ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -449,8 +449,8 @@ START_TEST(stats_count_one_camera_ray_per_pixel)
     ck_assert_uint_eq(stats.camera_rays, pixels);
     ck_assert_uint_gt(stats.shadow_rays, 0);
     ck_assert_uint_gt(stats.reflection_rays, 0);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -476,8 +476,8 @@ static void check_not_all_background(const char *name)
         }
     ck_assert_msg(other > image.width * image.height / 100,
                   "%s: only %ld pixels are not the background", name, other);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(seed_scenes_render_something)
@@ -503,11 +503,11 @@ START_TEST(seed_cubes_scene_needs_the_projection_of_b)
     ck_assert_int_ne(info.camera.b_was_projected, 0);
     ck_assert_int_eq(info.facet_count, 14);
     ck_assert_int_eq(info.width, 400);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     scene = load_scene(rt_test_shared_path("seed-scenes/test1.scn"));
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.camera.b_was_projected, 0);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

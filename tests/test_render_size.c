@@ -147,13 +147,13 @@ START_TEST(a_size_renders_as_the_scene_edited_to_that_size)
             ck_assert_msg(rt_test_image_diff(&expected, &sized, NULL) == 0,
                           "%s at %d x %d (setting %zu): differs from the "
                           "scene edited to that size", name, w, h, s);
-            rt_image_destroy(&expected);
-            rt_image_destroy(&sized);
+            rt_image_release(&expected);
+            rt_image_release(&sized);
         }
-        rt_scene_free(edited);
+        rt_scene_destroy(edited);
         free(edited_text);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     free(text);
 }
 END_TEST
@@ -199,11 +199,11 @@ START_TEST(a_region_holds_the_pixels_of_the_whole_image)
             options.region = regions[k];
             rt_image part = rt_test_render_with(scene, &options);
             assert_crop(&whole, &part, regions[k], name);
-            rt_image_destroy(&part);
+            rt_image_release(&part);
         }
-        rt_image_destroy(&whole);
+        rt_image_release(&whole);
     }
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -237,7 +237,7 @@ START_TEST(bands_of_a_region_and_its_progress_are_in_its_own_rows)
     options.on_row = log_row;
     options.user = &log;
     rt_image part;
-    ck_assert_int_eq(rt_image_create(&part, 40, 25), RT_OK);
+    ck_assert_int_eq(rt_image_init(&part, 40, 25), RT_OK);
     /* two bands, rendered apart, make up the region */
     ck_assert_int_eq(rt_render_rows(scene, &options, 0, 11, &part), RT_OK);
     ck_assert_int_eq(rt_render_rows(scene, &options, 11, 25, &part), RT_OK);
@@ -248,9 +248,9 @@ START_TEST(bands_of_a_region_and_its_progress_are_in_its_own_rows)
     /* a band outside the region's rows is refused */
     ck_assert_int_eq(rt_render_rows(scene, &options, 0, 26, &part),
                      RT_ERR_ARGUMENT);
-    rt_image_destroy(&part);
-    rt_image_destroy(&whole);
-    rt_scene_free(scene);
+    rt_image_release(&part);
+    rt_image_release(&whole);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -273,7 +273,7 @@ START_TEST(the_default_size_is_the_scenes)
                      RT_OK);
     ck_assert_int_eq(w, 150);
     ck_assert_int_eq(h, 10);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -292,12 +292,12 @@ static void assert_refused(const rt_scene *scene,
     ck_assert_msg(strstr(error.message, needle) != NULL,
                   "message '%s' lacks '%s'", error.message, needle);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, 4, 4), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 4, 4), RT_OK);
     memset(image.pixels, 7, image.stride * 4);
     ck_assert_int_eq(rt_render(scene, options, &image), RT_ERR_ARGUMENT);
     for (size_t i = 0; i < image.stride * 4; i++)
         ck_assert_int_eq(image.pixels[i], 7);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 }
 
 START_TEST(bad_sizes_and_regions_are_refused_with_a_reason)
@@ -325,10 +325,10 @@ START_TEST(bad_sizes_and_regions_are_refused_with_a_reason)
     rt_render_options_init(&options);
     options.width = 200;
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, 400, 400), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 400, 400), RT_OK);
     ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

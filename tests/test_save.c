@@ -215,7 +215,7 @@ static int count_bytes(void *context, const void *data, size_t size)
 /* A width x height image where every channel takes many values. */
 static rt_status make_pattern(rt_image *image, int width, int height)
 {
-    rt_status status = rt_image_create(image, width, height);
+    rt_status status = rt_image_init(image, width, height);
     for (int y = 0; status == RT_OK && y < height; y++)
         for (int x = 0; x < width; x++) {
             unsigned char *p = rt_image_pixel(image, x, y);
@@ -259,7 +259,7 @@ static void save_refused(const char *path, const char *reason,
     rt_image image = pattern(6, 4);
     memset(error, 0, sizeof *error);
     rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, error);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     ck_assert_msg(status == RT_ERR_IO, "saving to %s returned %s, expected "
                   "an input/output error", path, rt_status_string(status));
     ck_assert_int_eq(error->status, RT_ERR_IO);
@@ -413,7 +413,7 @@ static int save_with_umask(void *arg, char *note, size_t size)
         return say(1, note, size, "no memory for the image");
     rt_error error = {0};
     rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P6, &error);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     return status == RT_OK ? 0 : say(1, note, size, "%s", error.message);
 }
 
@@ -443,7 +443,7 @@ START_TEST(a_new_file_gets_0666_minus_the_umask)
     assert_names(dir.s, "umask-002.ppm umask-022.ppm umask-027.ppm "
                         "umask-077.ppm");
     free(expected.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_tree(&dir);
 }
 END_TEST
@@ -469,7 +469,7 @@ START_TEST(a_replaced_file_keeps_its_permission_bits)
         assert_names(dir.s, "kept.ppm");
     }
     free(expected.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_tree(&dir);
 }
 END_TEST
@@ -505,7 +505,7 @@ START_TEST(a_file_with_two_hard_links_stays_one_file_holding_the_image)
                   (long)b.st_size);
     assert_names(dir.s, "first.ppm second.ppm");
     free(expected.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_tree(&dir);
 }
 END_TEST
@@ -554,7 +554,7 @@ START_TEST(symbolic_links_stay_and_their_final_target_gets_the_image)
                       "saving through %s did not put the image in %s",
                       link.s, links[i].lands);
         free(expected.data);
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     }
     struct stat st;
     ck_assert_int_eq(stat(target.s, &st), 0);
@@ -584,7 +584,7 @@ START_TEST(a_dangling_link_gets_its_target_created_in_the_existing_folder)
     assert_names(dir.s, "dangling sub");
     assert_names(sub.s, "new.ppm");
     free(expected.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_tree(&dir);
 }
 END_TEST
@@ -634,7 +634,7 @@ static void assert_streamed(const path_t *dir, const char *name,
     ck_assert_int_gt(reader.pid, 0);
     rt_error error = {0};
     rt_status status = rt_image_save(path.s, &image, RT_IMAGE_P6, &error);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     if (kind_of(path.s) != kind)
         kill(reader.pid, SIGKILL);  /* it waits for a writer that is gone */
     char note[1024];
@@ -748,17 +748,17 @@ static int save_without_permission(void *arg, char *note, size_t size)
         rt_status checked = rt_image_save_check(path.s, &check);
         if (status != RT_ERR_IO || !strstr(error.message, path.s) ||
             !strstr(error.message, strerror(EACCES))) {
-            rt_image_destroy(&image);
+            rt_image_release(&image);
             return say(1, note, size, "saving %s: %s, `%s`", path.s,
                           rt_status_string(status), error.message);
         }
         if (checked != RT_ERR_IO || strcmp(check.message, error.message)) {
-            rt_image_destroy(&image);
+            rt_image_release(&image);
             return say(1, note, size, "checking %s: %s, `%s`", path.s,
                           rt_status_string(checked), check.message);
         }
     }
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     return 0;
 }
 
@@ -830,7 +830,7 @@ static int save_while_signalled(void *arg, char *note, size_t size)
         return say(90, note, size, "no memory for the image");
     rt_error error = {0};
     rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P3, &error);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     snprintf(note, size, "caught=%d; %s", (int)caught,
              status == RT_OK ? "saved" : error.message);
     return (int)status;
@@ -971,7 +971,7 @@ START_TEST(an_ignored_sigint_does_not_stop_the_save)
     size_t size = 0;
     ck_assert_int_eq(rt_image_write_to(count_bytes, &size, &image,
                                        RT_IMAGE_P3, NULL), RT_OK);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     struct stat st;
     ck_assert_int_eq(stat(run.out.s, &st), 0);
     ck_assert_msg((size_t)st.st_size == size,
@@ -1044,7 +1044,7 @@ START_TEST(save_check_refuses_what_the_save_refuses_with_its_message)
                       "the message does not name the path: %s",
                       check.message);
     }
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     assert_names(dir.s, "folder loop plain");
     assert_names(folder.s, "");
     remove_tree(&dir);
@@ -1096,7 +1096,7 @@ START_TEST(png_decodes_back_to_every_byte_of_the_image)
                          RT_ERR_FORMAT);
         ck_assert_uint_eq(b.size, 0);
         assert_names(dir.s, "");
-        rt_image_destroy(&image);
+        rt_image_release(&image);
         remove_tree(&dir);
         fprintf(stderr, "test_save: this build has no PNG: checked the "
                         "refusal, round trip skipped\n");
@@ -1127,7 +1127,7 @@ START_TEST(png_decodes_back_to_every_byte_of_the_image)
     assert_names(dir.s, "image.png");
     free(pixels);
     free(png.data);
-    rt_image_destroy(&wide);
+    rt_image_release(&wide);
     remove_tree(&dir);
 #else
     remove_tree(&dir);
@@ -1186,7 +1186,7 @@ START_TEST(png_has_no_gamma_or_colour_space_chunk)
     ck_assert_uint_eq(header[9], 2);   /* RGB */
     ck_assert_uint_eq(header[12], 0);  /* not interlaced */
     free(png.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
 }
 END_TEST
 
@@ -1313,7 +1313,7 @@ static int save_to_device(void *arg, char *note, size_t size)
     rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P3, &error);
     /* the check only opens the device: a full one passes */
     rt_status checked = rt_image_save_check(c->path, &check);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     char names[256];
     names_in("/dev", names, sizeof names);
     if (status != c->expected ||
@@ -1378,7 +1378,7 @@ static int save_to_dev_stdout(void *arg, char *note, size_t size)
     int wait_status = reader.pid > 0
                           ? finish(reader, reader_note, sizeof reader_note)
                           : -1;
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     int same = holds(received, expected.data, expected.size);
     size_t expected_size = expected.size;
     free(expected.data);
@@ -1432,7 +1432,7 @@ START_TEST(a_file_of_another_owner_keeps_its_owner_group_and_mode)
     ck_assert(holds(path.s, expected.data, expected.size));
     assert_names(dir.s, "theirs.ppm");
     free(expected.data);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     remove_tree(&dir);
 }
 END_TEST
@@ -1447,7 +1447,7 @@ static int refused_read_only(const char *path, char *note, size_t size)
     rt_error error = {0}, check = {0};
     rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &error);
     rt_status checked = rt_image_save_check(path, &check);
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     if (status != RT_ERR_IO || !strstr(error.message, path) ||
         !strstr(error.message, strerror(EROFS)))
         return say(1, note, size, "saving %s: %s: %s", path,

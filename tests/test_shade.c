@@ -68,7 +68,7 @@ START_TEST(light_straight_above_gives_full_diffuse_light_times_facet_colour)
     /* N.S = 1, E = 1: C_S C_F / 255 */
     assert_color(c, 255.0 * 200 / 255, 128.0 * 100 / 255, 64.0 * 50 / 255,
                  COLOR_TOL, "light above");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -79,7 +79,7 @@ START_TEST(diffuse_term_scales_with_cosine_of_light_angle)
     rt_color c = rt_trace(scene, down_from(1, 2, 5), RT_DEFAULT_DEPTH);
     assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
                  0.8 * 64.0 * 50 / 255, COLOR_TOL, "N.S = 0.8");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     /* hit (0, 0, 0), light (10, 0, 10): N.S = 1/sqrt(2) */
     scene = diffuse_scene(1, 10, 0, 10, NULL, 0);
     c = rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH);
@@ -91,7 +91,7 @@ START_TEST(diffuse_term_scales_with_cosine_of_light_angle)
     c = rt_trace(scene, oblique, RT_DEFAULT_DEPTH);
     assert_color(c, f * 200, f * 128.0 * 100 / 255, f * 64.0 * 50 / 255,
                  COLOR_TOL, "oblique view");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -103,7 +103,7 @@ START_TEST(grazing_light_still_lights_without_self_shadowing)
     double f = 1 / sqrt(10001.0);
     assert_color(c, f * 200, f * 128.0 * 100 / 255, f * 64.0 * 50 / 255,
                  COLOR_TOL, "grazing light");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -120,8 +120,8 @@ START_TEST(light_behind_the_facet_gives_black)
                           "pixel (%d,%d) = %d %d %d, expected black", x, y,
                           p[0], p[1], p[2]);
         }
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -136,7 +136,7 @@ START_TEST(facet_seen_from_its_back_is_lit_when_light_is_on_viewer_side)
                      full[2], COLOR_TOL,
                      reverse ? "back side, reversed winding" : "back side");
         /* viewer below, light above: dark */
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         scene = diffuse_scene(1, 0, 0, 10, NULL, reverse);
         assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), 0, 0, 0, 0.0,
                      "back side, light on the other side");
@@ -144,7 +144,7 @@ START_TEST(facet_seen_from_its_back_is_lit_when_light_is_on_viewer_side)
         assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH),
                      full[0], full[1], full[2], COLOR_TOL,
                      reverse ? "front, reversed winding" : "front");
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -162,13 +162,13 @@ START_TEST(facet_between_hit_point_and_light_casts_a_shadow)
                  200 * 10 / sqrt(200.0), 128.0 * 100 / 255 * 10 / sqrt(200.0),
                  64.0 * 50 / 255 * 10 / sqrt(200.0), COLOR_TOL,
                  "beside the shadow");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     /* a mirror casts a shadow too */
     const double mirror[10] = {-1, -1, 7, 1, -1, 7, 0, 1, 7, 1};
     scene = diffuse_scene(1, 0, 0, 10, mirror, 0);
     assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), 0, 0,
                  0, 0.0, "in the shadow of a mirror");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -179,7 +179,7 @@ START_TEST(facet_beyond_the_light_casts_no_shadow)
     assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), 200,
                  128.0 * 100 / 255, 64.0 * 50 / 255, COLOR_TOL,
                  "blocker beyond the light");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -191,7 +191,7 @@ START_TEST(ray_that_hits_nothing_returns_the_background)
                  "miss");
     rt_ray beside = {{100, 0, 5}, {0, 0, -1}};
     assert_color(rt_trace(scene, beside, 0), 10, 20, 30, 0.0, "miss beside");
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 END_TEST
 
@@ -210,7 +210,7 @@ START_TEST(shading_does_not_depend_on_the_scale_of_coordinates)
         /* relative tolerance 1e-9 on values ~100 */
         assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
                      0.8 * 64.0 * 50 / 255, 1e-7, what);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -243,7 +243,7 @@ START_TEST(shading_far_from_the_origin_has_no_self_shadowing)
          * 1e-7 (at 1e9) of distances ~10 */
         assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
                      0.8 * 64.0 * 50 / 255, 1e-3, what);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
 }
 END_TEST
@@ -315,8 +315,8 @@ static void check_rendered_pixels(int w, int h, rt_vec3 light,
         }
     if (near_half)
         printf("note: %d channels within 1e-9 of a half\n", near_half);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(rendered_pixels_match_the_formula_square_image)
@@ -355,8 +355,8 @@ START_TEST(rendered_pixel_is_trace_of_camera_ray_rounded_once)
                           "%.9g",
                           i, j, p[0], p[1], p[2], c.r, c.g, c.b);
         }
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
 }
 END_TEST
 

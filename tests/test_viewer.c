@@ -301,8 +301,8 @@ START_TEST(finished_window_equals_rt_export_image_pixel_for_pixel)
     ck_assert_int_eq(frame.width, exported.width);
     ck_assert_int_eq(frame.height, exported.height);
     assert_same_image(&frame, &exported, "cubes");
-    rt_image_destroy(&frame);
-    rt_image_destroy(&exported);
+    rt_image_release(&frame);
+    rt_image_release(&exported);
 }
 END_TEST
 
@@ -313,11 +313,11 @@ START_TEST(finished_window_equals_library_render_for_each_scene)
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         rt_scene *reference_scene = load_scene(scenes[i]);
         rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
-        rt_scene_free(reference_scene);
+        rt_scene_destroy(reference_scene);
         rt_image frame = show_until_done(load_scene(scenes[i]), (int)i % 3);
         assert_same_image(&frame, &expected, "scene");
-        rt_image_destroy(&frame);
-        rt_image_destroy(&expected);
+        rt_image_release(&frame);
+        rt_image_release(&expected);
     }
 }
 END_TEST
@@ -353,7 +353,7 @@ START_TEST(intermediate_frames_show_only_finished_rows)
 {
     rt_scene *reference_scene = heavy_scene(300, 96, 72);
     rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
-    rt_scene_free(reference_scene);
+    rt_scene_destroy(reference_scene);
 
     gate g;
     ck_assert_int_eq(sem_init(&g.paused, 0, 0), 0);
@@ -367,7 +367,7 @@ START_TEST(intermediate_frames_show_only_finished_rows)
     for (int y = 0; y < first.height; y++)
         ck_assert_msg(row_is_placeholder(&first, y),
                       "row %d is not the placeholder before the render", y);
-    rt_image_destroy(&first);
+    rt_image_release(&first);
 
     ck_assert_int_eq(view_session_start(session), RT_OK);
     int partial_frames = 0;
@@ -386,7 +386,7 @@ START_TEST(intermediate_frames_show_only_finished_rows)
                               "unfinished row %d shows something", y);
             }
         }
-        rt_image_destroy(&frame);
+        rt_image_release(&frame);
         partial_frames += finished > 0 && finished < expected.height;
         view_progress progress;
         view_session_get_progress(session, &progress);
@@ -401,13 +401,13 @@ START_TEST(intermediate_frames_show_only_finished_rows)
     rt_image final_frame = read_window(window);
     assert_same_image(&final_frame, &expected, "gated");
 
-    rt_image_destroy(&final_frame);
+    rt_image_release(&final_frame);
     view_window_attach(window, NULL, NULL, 0);
     view_session_destroy(session);
     close_window(window);
     sem_destroy(&g.paused);
     sem_destroy(&g.resume);
-    rt_image_destroy(&expected);
+    rt_image_release(&expected);
 }
 END_TEST
 
@@ -478,7 +478,7 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
 {
     rt_scene *reference_scene = heavy_scene(400, 80, 60);
     rt_image expected = rt_test_render(reference_scene, 2, 1);
-    rt_scene_free(reference_scene);
+    rt_scene_destroy(reference_scene);
 
     view_window *window = open_window(80, 60);
     view_session *session = new_session(heavy_scene(400, 80, 60), 0, NULL,
@@ -511,19 +511,19 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
             ck_assert_msg(row_is_placeholder(&frame, y),
                           "row %d kept the old render", y);
     }
-    rt_image_destroy(&frame);
+    rt_image_release(&frame);
 
     ck_assert_int_eq(view_session_start(session), RT_OK);
     ck_assert_int_eq(wait_until_finished(session), VIEW_DONE);
     view_window_sync(window);
     frame = read_window(window);
     assert_same_image(&frame, &expected, "restart");
-    rt_image_destroy(&frame);
+    rt_image_release(&frame);
 
     view_window_attach(window, NULL, NULL, 0);
     view_session_destroy(session);
     close_window(window);
-    rt_image_destroy(&expected);
+    rt_image_release(&expected);
 }
 END_TEST
 
@@ -652,7 +652,7 @@ START_TEST(size_renders_the_library_image_of_that_size_without_a_copy)
     ck_assert_int_eq(wait_until_finished(session), VIEW_DONE);
     assert_same_image(image, &expected, "size");
     view_session_destroy(session);
-    rt_image_destroy(&expected);
+    rt_image_release(&expected);
 }
 END_TEST
 
@@ -889,7 +889,7 @@ START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
     ck_assert_int_eq(rt_ppm_load("viewer-save-3.ppm", &saved, &error),
                      RT_OK);
     ck_assert(shows_background(&saved, 200, 10, 10));
-    rt_image_destroy(&saved);
+    rt_image_release(&saved);
     free(first);
     free(again);
     close_app(app);

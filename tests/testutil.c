@@ -53,7 +53,7 @@ rt_image rt_test_render_with(const rt_scene *scene,
                                        &error) == RT_OK,
                   "%s", error.message);
     rt_image image;
-    ck_assert_int_eq(rt_image_create(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
     ck_assert_int_eq(rt_render(scene, options, &image), RT_OK);
     return image;
 }

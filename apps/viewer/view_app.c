@@ -337,7 +337,7 @@ static void take_termination_signal(view_app *app)
 static rt_status copy_finished_rows(view_app *app, rt_image *copy, int *rows)
 {
     const rt_image *image = view_session_image(app->session);
-    rt_status status = rt_image_create(copy, image->width, image->height);
+    rt_status status = rt_image_init(copy, image->width, image->height);
     *rows = 0;
     if (status != RT_OK)
         return status;
@@ -421,7 +421,7 @@ int view_app_save(view_app *app, char *path, size_t size)
                 show_message(app, error.message);
         }
     }
-    rt_image_destroy(&copy);
+    rt_image_release(&copy);
     return saved;
 }
 

@@ -121,12 +121,12 @@ rt_status view_session_create(rt_scene *scene,
         }
     }
     if (status != RT_OK) {
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return status;
     }
     view_session *session = calloc(1, sizeof *session);
     if (session == NULL) {
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         return RT_ERR_NOMEM;
     }
     session->scene = scene;
@@ -136,7 +136,7 @@ rt_status view_session_create(rt_scene *scene,
     session->cancel = rt_cancel_create();
     atomic_init(&session->wake_pending, 0);
 
-    status = rt_image_create(&session->image, width, height);
+    status = rt_image_init(&session->image, width, height);
     if (status == RT_OK) {
         session->done = calloc((size_t)height, 1);
         session->fresh = calloc((size_t)height, 1);
@@ -148,11 +148,11 @@ rt_status view_session_create(rt_scene *scene,
     if (status == RT_OK && pthread_mutex_init(&session->lock, NULL) != 0)
         status = RT_ERR_NOMEM;
     if (status != RT_OK) {
-        rt_cancel_free(session->cancel);
+        rt_cancel_destroy(session->cancel);
         free(session->done);
         free(session->fresh);
-        rt_image_destroy(&session->image);
-        rt_scene_free(scene);
+        rt_image_release(&session->image);
+        rt_scene_destroy(scene);
         free(session);
         return status;
     }
@@ -166,11 +166,11 @@ void view_session_destroy(view_session *session)
         return;
     view_session_cancel(session);
     pthread_mutex_destroy(&session->lock);
-    rt_cancel_free(session->cancel);
+    rt_cancel_destroy(session->cancel);
     free(session->done);
     free(session->fresh);
-    rt_image_destroy(&session->image);
-    rt_scene_free(session->scene);
+    rt_image_release(&session->image);
+    rt_scene_destroy(session->scene);
     free(session);
 }
 

@@ -278,7 +278,7 @@ int view_window_read(view_window *window, rt_image *out)
     int width, height;
     if (SDL_GetRendererOutputSize(window->renderer, &width, &height) != 0)
         return 0;
-    if (rt_image_create(out, width, height) != RT_OK)
+    if (rt_image_init(out, width, height) != RT_OK)
         return 0;
     render(window);
     int ok = SDL_RenderReadPixels(window->renderer, NULL,
@@ -286,7 +286,7 @@ int view_window_read(view_window *window, rt_image *out)
                                   (int)out->stride) == 0;
     SDL_RenderPresent(window->renderer);
     if (!ok)
-        rt_image_destroy(out);
+        rt_image_release(out);
     return ok;
 }
 

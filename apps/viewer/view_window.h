@@ -73,7 +73,7 @@ void view_window_draw(view_window *window);
 
 /*
  * Draws the picture and reads back what the window shows into `out`, a new
- * image of the window's drawable size (free it with rt_image_destroy).
+ * image of the window's drawable size (free it with rt_image_release).
  * Returns 0 on failure.
  */
 int view_window_read(view_window *window, rt_image *out);

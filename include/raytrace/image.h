@@ -3,7 +3,7 @@
  *
  * An rt_image is a view: width, height, a row stride in bytes and a pointer
  * to pixels (3 bytes per pixel, R G B, rows top to bottom).  The caller may
- * point it at memory it owns, or let rt_image_create allocate it.
+ * point it at memory it owns, or let rt_image_init allocate it.
  *
  * Formats: PPM (Netpbm P3, ASCII, and P6, binary, maxval 255) always; PNG
  * (8-bit RGB, no gamma or colour-space chunk, so viewers show the computed
@@ -71,11 +71,11 @@ typedef enum rt_ppm_format {
 
 /* Allocates a black width x height image with stride 3 * width.  Sides must
  * be in 1..RT_MAX_IMAGE_SIDE.  On failure image->pixels is NULL. */
-rt_status rt_image_create(rt_image *image, int width, int height);
+rt_status rt_image_init(rt_image *image, int width, int height);
 
-/* Frees what rt_image_create allocated and zeroes the view; a zeroed image
+/* Frees what rt_image_init allocated and zeroes the view; a zeroed image
  * is a no-op. */
-void rt_image_destroy(rt_image *image);
+void rt_image_release(rt_image *image);
 
 /* Pointer to pixel (x, y). */
 static inline unsigned char *rt_image_pixel(const rt_image *image, int x,
@@ -110,7 +110,7 @@ rt_status rt_image_format_from_path(const char *path,
                                     rt_image_format *format);
 
 /* Receives `size` bytes of output; returns non-zero on success. */
-typedef int (*rt_write_func)(void *context, const void *data, size_t size);
+typedef int (*rt_write_func)(void *user, const void *data, size_t size);
 
 /*
  * Encodes `image` in `format` to the sink.  Returns RT_OK, RT_ERR_ARGUMENT
@@ -118,7 +118,7 @@ typedef int (*rt_write_func)(void *context, const void *data, size_t size);
  * message says why), RT_ERR_IO (the sink returned 0) or RT_ERR_NOMEM.  A
  * NULL `error` is allowed.  Thread-safe on distinct sinks.
  */
-rt_status rt_image_write_to(rt_write_func write, void *context,
+rt_status rt_image_write_to(rt_write_func write, void *user,
                             const rt_image *image, rt_image_format format,
                             rt_error *error);
 
@@ -152,7 +152,7 @@ rt_status rt_image_save_check(const char *path, rt_error *error);
 
 /* PPM writers (P3 lines are at most 70 characters); the same as the
  * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6. */
-rt_status rt_ppm_write_to(rt_write_func write, void *context,
+rt_status rt_ppm_write_to(rt_write_func write, void *user,
                           const rt_image *image, rt_ppm_format format);
 rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
                             rt_ppm_format format);
@@ -162,7 +162,7 @@ rt_status rt_ppm_save(const char *path, const rt_image *image,
                       rt_ppm_format format, rt_error *error);
 
 /* Parses a P3 or P6 image from memory into a new image (free it with
- * rt_image_destroy).  `name` is used in messages ("<memory>" when NULL). */
+ * rt_image_release).  `name` is used in messages ("<memory>" when NULL). */
 rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
                        rt_image *image, rt_error *error);
 rt_status rt_ppm_load(const char *path, rt_image *image, rt_error *error);

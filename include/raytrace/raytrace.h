@@ -14,11 +14,11 @@
  *     rt_scene_info info;
  *     rt_scene_get_info(scene, &info);
  *     rt_image image;
- *     rt_image_create(&image, info.width, info.height);
+ *     rt_image_init(&image, info.width, info.height);
  *     rt_render(scene, NULL, &image);            (NULL: default options)
  *     rt_ppm_save("cubes.ppm", &image, RT_PPM_P6, &error);
- *     rt_image_destroy(&image);
- *     rt_scene_free(scene);
+ *     rt_image_release(&image);
+ *     rt_scene_destroy(scene);
  *
  * Rules that hold everywhere: public names start with rt_ / RT_; fallible
  * functions return rt_status and fill an optional rt_error; out-pointers are

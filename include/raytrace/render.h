@@ -131,12 +131,12 @@ typedef enum rt_accel {
  * raise it while renders that were given it run; each then stops within one
  * pixel's work on every thread and returns RT_ERR_CANCELLED.  It stays raised
  * until reset.  All functions are thread-safe on the same flag, except
- * rt_cancel_free, which must wait until no render uses it.
+ * rt_cancel_destroy, which must wait until no render uses it.
  */
 typedef struct rt_cancel rt_cancel;
 
 rt_cancel *rt_cancel_create(void);      /* NULL when out of memory */
-void rt_cancel_free(rt_cancel *cancel); /* NULL: no-op */
+void rt_cancel_destroy(rt_cancel *cancel); /* NULL: no-op */
 void rt_cancel_request(rt_cancel *cancel);
 void rt_cancel_reset(rt_cancel *cancel);
 int rt_cancel_requested(const rt_cancel *cancel);
@@ -207,7 +207,7 @@ rt_status rt_render_image_size(const rt_scene *scene,
 /*
  * Renders the image (or its region) into `image`, which must have the size
  * rt_render_image_size gives: the scene's width x height by default (see
- * rt_image_create).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image size, a
+ * rt_image_init).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image size, a
  * bad size or region, negative depth, samples not a square in 1..1024),
  * RT_ERR_RANGE (a
  * float render of a scene float cannot hold or resolve: see

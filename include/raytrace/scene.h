@@ -226,9 +226,9 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
 rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
                              rt_scene **scene, rt_error *error);
 
-/* Frees a scene.  rt_scene_free(NULL) does nothing.  Not thread-safe on the
+/* Frees a scene.  rt_scene_destroy(NULL) does nothing.  Not thread-safe on the
  * same scene (no other call may be using it). */
-void rt_scene_free(rt_scene *scene);
+void rt_scene_destroy(rt_scene *scene);
 
 /* Fills `info`.  Thread-safe. */
 void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
@@ -295,7 +295,7 @@ int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
  * refused) or RT_ERR_ARGUMENT.  Thread-safe.
  */
 rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
-                             rt_write_func write, void *context,
+                             rt_write_func write, void *user,
                              unsigned *dropped, rt_error *error);
 
 /* The same saved at `path` by the rule of raytrace/image.h (atomic

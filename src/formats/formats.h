@@ -16,7 +16,7 @@ struct rt_notes;
 /* Bytes to save: `produce` writes `what` to the sink and returns a status
  * (filling *error on failure). */
 typedef struct rt_producer {
-    rt_status (*produce)(rt_write_func write, void *context, const void *what,
+    rt_status (*produce)(rt_write_func write, void *user, const void *what,
                          rt_error *error);
     const void *what;
 } rt_producer;
@@ -53,7 +53,7 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
 
 #if RAYTRACE_HAVE_PNG
 /* Encodes `image` (valid) as an 8-bit RGB PNG to the sink. */
-rt_status rt__png_write_to(rt_write_func write, void *context,
+rt_status rt__png_write_to(rt_write_func write, void *user,
                            const rt_image *image, rt_error *error);
 #endif
 

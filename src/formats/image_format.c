@@ -75,7 +75,7 @@ rt_status rt__image_format_refusal(rt_image_format format, rt_error *error)
                          "p6 or png", (int)format);
 }
 
-rt_status rt_image_write_to(rt_write_func write, void *context,
+rt_status rt_image_write_to(rt_write_func write, void *user,
                             const rt_image *image, rt_image_format format,
                             rt_error *error)
 {
@@ -88,10 +88,10 @@ rt_status rt_image_write_to(rt_write_func write, void *context,
                              "expected an image and a sink");
 #if RAYTRACE_HAVE_PNG
     if (format == RT_IMAGE_PNG)
-        return rt__png_write_to(write, context, image, error);
+        return rt__png_write_to(write, user, image, error);
 #endif
     rt_status status =
-        rt_ppm_write_to(write, context, image, (rt_ppm_format)format);
+        rt_ppm_write_to(write, user, image, (rt_ppm_format)format);
     if (status != RT_OK)
         return rt__error_set(error, status, NULL, 0, 0,
                              "cannot write the image: %s",
@@ -99,9 +99,9 @@ rt_status rt_image_write_to(rt_write_func write, void *context,
     return RT_OK;
 }
 
-static int write_to_file(void *context, const void *data, size_t size)
+static int write_to_file(void *user, const void *data, size_t size)
 {
-    return fwrite(data, 1, size, (FILE *)context) == size;
+    return fwrite(data, 1, size, (FILE *)user) == size;
 }
 
 rt_status rt_image_write_file(FILE *file, const rt_image *image,

@@ -18,7 +18,7 @@
 
 typedef struct png_sink {
     rt_write_func write;
-    void *context;
+    void *user;
     int failed;             /* the sink refused bytes */
     char message[128];      /* libpng's own message, if it stopped */
 } png_sink;
@@ -26,7 +26,7 @@ typedef struct png_sink {
 static void on_write(png_structp png, png_bytep data, size_t size)
 {
     png_sink *s = png_get_io_ptr(png);
-    if (!s->write(s->context, data, size)) {
+    if (!s->write(s->user, data, size)) {
         s->failed = 1;
         png_error(png, "the sink refused the bytes");
     }
@@ -50,10 +50,10 @@ static void on_warning(png_structp png, png_const_charp message)
     (void)message;          /* nothing this writer does warrants one */
 }
 
-rt_status rt__png_write_to(rt_write_func write, void *context,
+rt_status rt__png_write_to(rt_write_func write, void *user,
                            const rt_image *image, rt_error *error)
 {
-    png_sink sink = {write, context, 0, ""};
+    png_sink sink = {write, user, 0, ""};
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink,
                                               on_error, on_warning);
     if (png == NULL)

@@ -27,7 +27,7 @@ static int valid_image(const rt_image *image)
            image->height > 0 && image->stride >= (size_t)image->width * 3;
 }
 
-static rt_status write_p3_pixels(rt_write_func write, void *context,
+static rt_status write_p3_pixels(rt_write_func write, void *user,
                                  const rt_image *image)
 {
     char line[P3_LINE_MAX + 2];
@@ -39,7 +39,7 @@ static rt_status write_p3_pixels(rt_write_func write, void *context,
             int n = snprintf(number, sizeof number, "%u", row[i]);
             if (used > 0 && used + 1 + (size_t)n > P3_LINE_MAX) {
                 line[used++] = '\n';
-                if (!write(context, line, used))
+                if (!write(user, line, used))
                     return RT_ERR_IO;
                 used = 0;
             }
@@ -50,10 +50,10 @@ static rt_status write_p3_pixels(rt_write_func write, void *context,
         }
     }
     line[used++] = '\n';
-    return write(context, line, used) ? RT_OK : RT_ERR_IO;
+    return write(user, line, used) ? RT_OK : RT_ERR_IO;
 }
 
-rt_status rt_ppm_write_to(rt_write_func write, void *context,
+rt_status rt_ppm_write_to(rt_write_func write, void *user,
                           const rt_image *image, rt_ppm_format format)
 {
     if (!valid_image(image) || write == NULL)
@@ -63,20 +63,20 @@ rt_status rt_ppm_write_to(rt_write_func write, void *context,
     char header[64];
     int n = snprintf(header, sizeof header, "P%d\n%d %d\n255\n", (int)format,
                      image->width, image->height);
-    if (!write(context, header, (size_t)n))
+    if (!write(user, header, (size_t)n))
         return RT_ERR_IO;
     if (format == RT_PPM_P3)
-        return write_p3_pixels(write, context, image);
+        return write_p3_pixels(write, user, image);
     for (int y = 0; y < image->height; y++)
-        if (!write(context, rt_image_pixel(image, 0, y),
+        if (!write(user, rt_image_pixel(image, 0, y),
                    (size_t)image->width * 3))
             return RT_ERR_IO;
     return RT_OK;
 }
 
-static int write_to_file(void *context, const void *data, size_t size)
+static int write_to_file(void *user, const void *data, size_t size)
 {
-    return fwrite(data, 1, size, (FILE *)context) == size;
+    return fwrite(data, 1, size, (FILE *)user) == size;
 }
 
 rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
@@ -225,7 +225,7 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
                              "expected %zu pixel values, found a file too "
                              "short to hold them", bytes);
     }
-    status = rt_image_create(image, (int)width, (int)height);
+    status = rt_image_init(image, (int)width, (int)height);
     if (status != RT_OK)
         return rt__error_set(error, status, r.name, 0, 0, "out of memory");
     if (binary) {
@@ -236,7 +236,7 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
         long v;
         if ((status = read_uint(&r, 0, 255, "a pixel value", &v, error)) !=
             RT_OK) {
-            rt_image_destroy(image);
+            rt_image_release(image);
             return status;
         }
         image->pixels[i] = (unsigned char)v;

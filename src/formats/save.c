@@ -122,9 +122,9 @@ static int sink_flush(fd_sink *s)
     return 1;
 }
 
-static int sink_write(void *context, const void *data, size_t size)
+static int sink_write(void *user, const void *data, size_t size)
 {
-    fd_sink *s = context;
+    fd_sink *s = user;
     const unsigned char *bytes = data;
     while (size > 0) {
         if (s->used == BUFFER_SIZE && !sink_flush(s))
@@ -567,11 +567,11 @@ typedef struct image_bytes {
     rt_image_format format;
 } image_bytes;
 
-static rt_status produce_image(rt_write_func write, void *context,
+static rt_status produce_image(rt_write_func write, void *user,
                                const void *what, rt_error *error)
 {
     const image_bytes *b = what;
-    return rt_image_write_to(write, context, b->image, b->format, error);
+    return rt_image_write_to(write, user, b->image, b->format, error);
 }
 
 rt_status rt_image_save(const char *path, const rt_image *image,

@@ -18,7 +18,7 @@
 
 typedef struct out {
     rt_write_func write;
-    void *context;
+    void *user;
     int failed;
 } out;
 
@@ -33,7 +33,7 @@ static void put(out *o, const char *fmt, ...)
     va_start(args, fmt);
     int n = vsnprintf(line, sizeof line, fmt, args);
     va_end(args);
-    if (n < 0 || (size_t)n >= sizeof line || !o->write(o->context, line,
+    if (n < 0 || (size_t)n >= sizeof line || !o->write(o->user, line,
                                                       (size_t)n))
         o->failed = 1;
 }
@@ -50,14 +50,14 @@ static int scn_diffuse(const rt_facet_info *f)
 }
 
 rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
-                             rt_write_func write, void *context,
+                             rt_write_func write, void *user,
                              unsigned *dropped, rt_error *error)
 {
     if (scene == NULL || write == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a scene and a sink");
     unsigned lost = 0;
-    out o = {write, context, 0};
+    out o = {write, user, 0};
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     const rt_camera *c = &info.camera;
@@ -119,11 +119,11 @@ typedef struct scn_bytes {
     unsigned *dropped;
 } scn_bytes;
 
-static rt_status produce_scn(rt_write_func write, void *context,
+static rt_status produce_scn(rt_write_func write, void *user,
                              const void *what, rt_error *error)
 {
     const scn_bytes *b = what;
-    return rt_scene_write_scn(b->scene, b->extended, write, context,
+    return rt_scene_write_scn(b->scene, b->extended, write, user,
                               b->dropped, error);
 }
 

@@ -93,7 +93,7 @@ int parse(char *fname, scene *s)
                 fname, info.light_count > 1 ? "several lights " : "",
                 info.transparent_facet_count > 0 ? "transparent facets " : "",
                 info.camera.aperture > 0.0 ? "a lens aperture" : "");
-        rt_scene_free(loaded);
+        rt_scene_destroy(loaded);
         return RT_ERR_FORMAT;
     }
     for (int i = 0; i < info.warning_count; i++)
@@ -101,7 +101,7 @@ int parse(char *fname, scene *s)
 
     if (!copy_geometry(loaded, &info, s)) {
         release(s);
-        rt_scene_free(loaded);
+        rt_scene_destroy(loaded);
         fprintf(stderr, "%s: %s\n", fname, rt_status_string(RT_ERR_NOMEM));
         return RT_ERR_NOMEM;
     }
@@ -114,6 +114,6 @@ int parse(char *fname, scene *s)
                                     info.camera.right));
     s->s.p = in104_point(info.light_position);
     s->s.cp = to_color(info.light_color);
-    rt_scene_free(loaded);
+    rt_scene_destroy(loaded);
     return 0;
 }

@@ -93,7 +93,7 @@ int renderToPPM(const scene *s, const char *ppmFile)
         return (int)status;
 
     rt_image image;
-    status = rt_image_create(&image, s->width, s->height);
+    status = rt_image_init(&image, s->width, s->height);
     if (status == RT_OK)
         status = rt_render(built, NULL, &image);
     rt_error error;
@@ -104,7 +104,7 @@ int renderToPPM(const scene *s, const char *ppmFile)
     } else {
         fail(status, rt_status_string(status));
     }
-    rt_image_destroy(&image);
-    rt_scene_free(built);
+    rt_image_release(&image);
+    rt_scene_destroy(built);
     return (int)status;
 }

@@ -54,13 +54,13 @@ int main(void)
         fprintf(stderr, "consumer: %s\n", error.message);
         return 1;
     }
-    status = rt_image_create(&image, 8, 6);
+    status = rt_image_init(&image, 8, 6);
     if (status == RT_OK)
         status = rt_render(scene, NULL, &image);
     if (status == RT_OK)
         status = rt_ppm_write_to(append, &out, &image, RT_PPM_P6);
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
     if (status != RT_OK) {
         fprintf(stderr, "consumer: %s\n", rt_status_string(status));
         return 1;

@@ -20,7 +20,7 @@ int main(int argc, char **argv)
         return 1;
     }
     rt_scene_get_info(scene, &info);
-    status = rt_image_create(&image, info.width, info.height);
+    status = rt_image_init(&image, info.width, info.height);
     if (status == RT_OK)
         status = rt_render(scene, NULL, &image);     /* default options */
     if (status == RT_OK) {
@@ -32,7 +32,7 @@ int main(int argc, char **argv)
     } else {
         fprintf(stderr, "%s: %s\n", argv[0], rt_status_string(status));
     }
-    rt_image_destroy(&image);
-    rt_scene_free(scene);
+    rt_image_release(&image);
+    rt_scene_destroy(scene);
     return status == RT_OK ? 0 : 1;
 }

@@ -139,7 +139,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     } else {
         require(scene == NULL);
         require(error.status == status);

@@ -56,7 +56,7 @@ static void round_trip(const rt_image *image, rt_ppm_format format)
         require(memcmp(rt_image_pixel(&again, 0, y),
                        rt_image_pixel(image, 0, y),
                        (size_t)image->width * 3) == 0);
-    rt_image_destroy(&again);
+    rt_image_release(&again);
     free(out.bytes);
 }
 
@@ -78,7 +78,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             round_trip(&image, RT_PPM_P6);
             round_trip(&image, RT_PPM_P3);
         }
-        rt_image_destroy(&image);
+        rt_image_release(&image);
     } else {
         require(image.pixels == NULL);
         require(error.status == status);

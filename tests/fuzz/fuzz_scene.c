@@ -93,7 +93,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     } else {
         check_refusal(status, scene, &error);
     }

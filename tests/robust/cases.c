@@ -166,7 +166,7 @@ static void sphere_edges(rb_method method, rt_precision precision,
     }
     shared_free(&sh);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -212,7 +212,7 @@ static void case_w4(rb_method method, rt_precision precision, rb_result *r)
             r->nans += hit_is_nan(&h);
     }
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -260,7 +260,7 @@ static void case_w5(rb_method method, rt_precision precision, rb_result *r)
     }
     shared_free(&sh);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -311,7 +311,7 @@ static void case_d1(rb_method method, rt_precision precision, rb_result *r)
             r->failures++;
     }
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -384,7 +384,7 @@ static void slivers(rb_method method, rt_precision precision, rb_result *r,
                  "%ld misses allowed (the sliver is thinner than "
                  "float's resolution)", misses);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -471,7 +471,7 @@ static void case_d5(rb_method method, rt_precision precision, rb_result *r)
             worst = error;
     }
     snprintf(r->note, sizeof r->note, "largest error %.1e", worst);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -576,11 +576,11 @@ static rt_image render_view(const rb_mesh *base, const rb_view *base_view,
         rb_mesh_free(&m);
         return image;
     }
-    rt_image_create(&image, view.width, view.height);
+    rt_image_init(&image, view.width, view.height);
     rb_engine *e = rb_engine_create(scene, method, precision);
     *nans = rb_engine_render(e, 5, 2, &image);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
     return image;
 }
@@ -618,10 +618,10 @@ static void invariance(rb_method method, rt_precision precision, rb_result *r,
                  "%ld pixels differ, %ld of them off the %ld edge pixels",
                  differ, off_edge, edges);
     }
-    rt_image_destroy(&a);
-    rt_image_destroy(&b);
+    rt_image_release(&a);
+    rt_image_release(&b);
     free(mask);
-    rt_scene_free(reference_scene);
+    rt_scene_destroy(reference_scene);
     rb_mesh_free(&m);
 }
 
@@ -700,7 +700,7 @@ static void contact(rb_method method, rt_precision precision, rb_result *r,
     snprintf(r->note, sizeof r->note, "%ld leaks (under the slab), %ld acne (open floor)",
              leaks, acne);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -772,7 +772,7 @@ static void floor_rays(rb_method method, rt_precision precision, rb_result *r,
             r->failures++;
     }
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
 }
 
 static void light_in_plane(rb_method method, rt_precision precision,
@@ -886,11 +886,11 @@ static void case_c1(rb_method method, rt_precision precision, rb_result *r)
             r->failures++;
         }
         rt_image image;
-        rt_image_create(&image, 64, 64);
+        rt_image_init(&image, 64, 64);
         r->nans += rb_engine_render(e, 5, 1, &image);
-        rt_image_destroy(&image);
+        rt_image_release(&image);
         rb_engine_free(e);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         rb_mesh_free(&m);
     }
 }
@@ -923,7 +923,7 @@ static void case_c2(rb_method method, rt_precision precision, rb_result *r)
     }
     shared_free(&sh);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -963,7 +963,7 @@ static void case_c3(rb_method method, rt_precision precision, rb_result *r)
     snprintf(r->note, sizeof r->note, "grazing angle %g rad", angle);
     shared_free(&sh);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&inner);
     rb_mesh_free(&m);
 }
@@ -1011,7 +1011,7 @@ static void naive_render_child(void *arg)
     rt_image image;
     rt_scene_info info;
     (void)info;
-    rt_image_create(&image, 4, 4);
+    rt_image_init(&image, 4, 4);
     long nans = rb_engine_render(job->engine, job->depth, 1, &image);
     int bad = nans != 0;
     for (int j = 0; j < 4; j++)
@@ -1046,7 +1046,7 @@ static void case_r1(rb_method method, rt_precision precision, rb_result *r)
         int depths[2] = {depth / 10, depth};
         for (int run = 0; run < 2; run++) {
             rt_image image;
-            rt_image_create(&image, 4, 4);
+            rt_image_init(&image, 4, 4);
             rt_render_options options;
             rt_render_options_init(&options);
             options.max_depth = depths[run];
@@ -1058,7 +1058,7 @@ static void case_r1(rb_method method, rt_precision precision, rb_result *r)
             for (int j = 0; j < 4 && run == 1; j++)
                 for (int i = 0; i < 4; i++)
                     r->failures += rt_image_pixel(&image, i, j)[0] != 0;
-            rt_image_destroy(&image);
+            rt_image_release(&image);
         }
         if (stats[1].reflection_rays != 16u * (uint64_t)depth ||
             stats[0].reflection_rays != 16u * (uint64_t)(depth / 10))
@@ -1069,7 +1069,7 @@ static void case_r1(rb_method method, rt_precision precision, rb_result *r)
                  stats[0].seconds, stats[1].seconds);
     }
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -1117,7 +1117,7 @@ static void case_r2(rb_method method, rt_precision precision, rb_result *r)
                  "%ld of %ld rays left through a concave edge within "
                  "float's resolution (allowed up to 1%%)", escapes, r->total);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -1173,7 +1173,7 @@ static void case_v1(rb_method method, rt_precision precision, rb_result *r)
         if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", &scene,
                            &error) == RT_OK || scene != NULL)
             r->failures++;
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
     }
     /* The same values through rt_scene_create. */
     const double specials[3] = {NAN, INFINITY, -INFINITY};
@@ -1198,7 +1198,7 @@ static void case_v1(rb_method method, rt_precision precision, rb_result *r)
             r->total++;
             if (rt_scene_create(&desc, &scene, NULL) == RT_OK || scene != NULL)
                 r->failures++;
-            rt_scene_free(scene);
+            rt_scene_destroy(scene);
             rb_mesh_free(&m);
         }
     }
@@ -1249,7 +1249,7 @@ static void case_v2(rb_method method, rt_precision precision, rb_result *r)
     if (!is_double(precision))
         snprintf(r->note, sizeof r->note, "magnitudes 1e-30 to 1e30");
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -1278,8 +1278,8 @@ static void case_v3(rb_method method, rt_precision precision, rb_result *r)
         r->nans = (nans[0] > 0 ? nans[0] : 0) + (nans[1] > 0 ? nans[1] : 0);
         r->failures = count_differing(&images[0], &images[1]);
     }
-    rt_image_destroy(&images[0]);
-    rt_image_destroy(&images[1]);
+    rt_image_release(&images[0]);
+    rt_image_release(&images[1]);
     rb_mesh_free(&m);
 }
 
@@ -1317,7 +1317,7 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
         r->nans += rb_color_has_nan(rb_engine_trace(e, ray, 3));
     }
     rt_image image;
-    rt_image_create(&image, 64, 64);
+    rt_image_init(&image, 64, 64);
     long render_nans = rb_engine_render(e, 5, 2, &image);
     if (render_nans < 0 && method == RB_OURS && !is_double(precision))
         /* Decided: float cannot resolve facets 3 wide at 1e8 (its rule,
@@ -1326,9 +1326,9 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
                                           "rule; the ray queries ran");
     else
         r->nans += render_nans;
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -1356,7 +1356,7 @@ static void case_v5(rb_method method, rt_precision precision, rb_result *r)
         snprintf(r->note, sizeof r->note, "scale %g: rendered, %ld background pixels",
                  scale, background);
     }
-    rt_image_destroy(&image);
+    rt_image_release(&image);
     rb_mesh_free(&m);
 }
 
@@ -1402,7 +1402,7 @@ static void duplicates(rb_method method, rt_precision precision, rb_result *r,
             r->failures++;
     }
     rb_engine_free(e);
-    rt_scene_free(scene);
+    rt_scene_destroy(scene);
     rb_mesh_free(&m);
 }
 
@@ -1742,7 +1742,7 @@ static void glass_run(rb_method method, rt_precision precision, rb_result *r,
             worst = max2(worst, err);
         }
         rb_engine_free(e);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         rb_mesh_free(&m);
         rb_mesh_free(&local);
     }
@@ -2074,7 +2074,7 @@ static void case_g4(rb_method method, rt_precision precision, rb_result *r)
             }
         }
         rb_engine_free(e);
-        rt_scene_free(scene);
+        rt_scene_destroy(scene);
         rb_mesh_free(&m);
     }
     glass_note(r, per_scale, method, worst);
@@ -2128,12 +2128,12 @@ static void determinism(rb_method method, rt_precision precision, rb_result *r,
              * every render of it is refused alike */
             snprintf(r->note, sizeof r->note, "float refuses the scene "
                                               "translated by 1e6");
-            rt_scene_free(scene);
+            rt_scene_destroy(scene);
             continue;
         }
         rt_image reference, other;
-        rt_image_create(&reference, 64, 64);
-        rt_image_create(&other, 64, 64);
+        rt_image_init(&reference, 64, 64);
+        rt_image_init(&other, 64, 64);
         render_with(scene, precision, 1, RT_KERNEL_SCALAR, &reference);
         static const int threads[4] = {1, 2, 3, 8};
         for (int k = 0; k < 4; k++) {
@@ -2144,9 +2144,9 @@ static void determinism(rb_method method, rt_precision precision, rb_result *r,
             r->total += 64 * 64;
             r->failures += count_differing(&reference, &other);
         }
-        rt_image_destroy(&reference);
-        rt_image_destroy(&other);
-        rt_scene_free(scene);
+        rt_image_release(&reference);
+        rt_image_release(&other);
+        rt_scene_destroy(scene);
     }
 }
 
