@@ -14,6 +14,8 @@ foreach(suite
     test_readers)
   raytrace_add_suite(${suite})
 endforeach()
+# The handout's seed scenes, skipped when ../shared is absent.
+raytrace_add_shared_test(test_render)
 
 # The parser must read numbers in the C locale whatever the process's locale.
 # Most build machines have no French locale installed; when localedef can make

@@ -4,6 +4,7 @@
 
 raytrace_add_suite(test_in104_geometry LIBS raytrace::in104)
 raytrace_add_suite(test_in104_scene LIBS raytrace::in104)
+raytrace_add_shared_test(test_in104_scene)
 
 # in104_student.c uses nothing but the handout's headers and standard C; its
 # exit status is its number of failed checks.

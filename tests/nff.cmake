@@ -4,3 +4,4 @@
 # test prints that it skipped them otherwise).
 raytrace_add_suite(test_nff)
 set_tests_properties(test_nff PROPERTIES TIMEOUT 300)
+raytrace_add_shared_test(test_nff)

@@ -9,7 +9,4 @@ if(RAYTRACE_OCTREE_TEST_LIBM)
   target_link_libraries(test_octree PRIVATE ${RAYTRACE_OCTREE_TEST_LIBM})
 endif()
 set_tests_properties(test_octree PROPERTIES TIMEOUT 900)
-add_test(NAME test_octree_shared COMMAND test_octree shared
-         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
-set_tests_properties(test_octree_shared PROPERTIES SKIP_RETURN_CODE 77
-                     TIMEOUT 900)
+raytrace_add_shared_test(test_octree TIMEOUT 900)

@@ -100,16 +100,11 @@ END_TEST
 START_TEST(spd_scenes_render_identically_with_both_kernels)
 {
     const char *dir = rt_test_shared_path("spd-scenes");
-    if (dir == NULL) {
-        fprintf(stderr, "test_kernel: NOTE: ../shared/spd-scenes absent; "
-                        "the SPD scenes are not compared\n");
-        return;
-    }
+    ck_assert_ptr_nonnull(dir);
     glob_t g;
     char pattern[4096];
     snprintf(pattern, sizeof pattern, "%s/*.scn", dir);
-    if (glob(pattern, 0, NULL, &g) != 0)
-        return;
+    ck_assert_msg(glob(pattern, 0, NULL, &g) == 0, "no scene in %s", dir);
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
@@ -388,7 +383,6 @@ static Suite *kernel_suite(void)
     TCase *images = tcase_create("images");
     tcase_set_timeout(images, 300);
     tcase_add_test(images, project_scenes_render_identically_with_both_kernels);
-    tcase_add_test(images, spd_scenes_render_identically_with_both_kernels);
     tcase_add_test(images,
                    generated_meshes_render_identically_with_both_kernels);
     suite_add_tcase(s, images);
@@ -410,4 +404,15 @@ static Suite *kernel_suite(void)
     return s;
 }
 
-RT_CHECK_MAIN(kernel_suite)
+/* The course's SPD scenes: their own ctest entry, skipped when absent. */
+static Suite *kernel_shared_suite(void)
+{
+    Suite *s = suite_create("kernel-shared");
+    TCase *images = tcase_create("shared");
+    tcase_set_timeout(images, 300);
+    tcase_add_test(images, spd_scenes_render_identically_with_both_kernels);
+    suite_add_tcase(s, images);
+    return s;
+}
+
+RT_CHECK_MAIN_WITH_SHARED(kernel_suite, kernel_shared_suite)

@@ -676,15 +676,4 @@ static Suite *shared_suite(void)
     return s;
 }
 
-int main(int argc, char **argv)
-{
-    if (argc > 1 && strcmp(argv[1], "shared") == 0) {
-        if (rt_test_shared_path("seed-scenes") == NULL) {
-            printf("test_octree: SKIPPED: ../shared is absent (its "
-                   "seed-scenes and spd-scenes are not compared)\n");
-            return 77;
-        }
-        return rt_test_run_suite(shared_suite());
-    }
-    return rt_test_run_suite(octree_suite());
-}
+RT_CHECK_MAIN_WITH_SHARED(octree_suite, shared_suite)

@@ -17,6 +17,20 @@ int rt_test_run_suite(Suite *suite)
     return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int rt_test_main_with_shared(int argc, char **argv, Suite *(*main_fn)(void),
+                             Suite *(*shared_fn)(void))
+{
+    if (argc > 1 && strcmp(argv[1], "shared") == 0) {
+        if (rt_test_shared_path("") == NULL) {
+            printf("%s: SKIPPED: ../shared is absent, the course's scenes "
+                   "are not checked\n", argv[0]);
+            return RT_TEST_SKIPPED;
+        }
+        return rt_test_run_suite(shared_fn());
+    }
+    return rt_test_run_suite(main_fn());
+}
+
 const char *rt_test_source_path(const char *relative)
 {
     static char buffer[4096];

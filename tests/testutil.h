@@ -16,6 +16,21 @@ int rt_test_run_suite(Suite *suite);
 #define RT_CHECK_MAIN(suite_fn)                                              \
     int main(void) { return rt_test_run_suite(suite_fn()); }
 
+/* ctest's SKIP_RETURN_CODE for a check whose input is absent. */
+#define RT_TEST_SKIPPED 77
+
+/* The main of a suite whose checks on the course's scenes (../shared) are a
+ * ctest entry of their own: `prog` runs main_fn's suite; `prog shared` runs
+ * shared_fn's suite, or exits RT_TEST_SKIPPED when ../shared is absent. */
+int rt_test_main_with_shared(int argc, char **argv, Suite *(*main_fn)(void),
+                             Suite *(*shared_fn)(void));
+
+#define RT_CHECK_MAIN_WITH_SHARED(main_fn, shared_fn)                        \
+    int main(int argc, char **argv)                                          \
+    {                                                                        \
+        return rt_test_main_with_shared(argc, argv, main_fn, shared_fn);     \
+    }
+
 /* "<source dir>/<relative>" in a static buffer (one at a time). */
 const char *rt_test_source_path(const char *relative);
 
