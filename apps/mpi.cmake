@@ -1,4 +1,4 @@
-# rt-export-mpi, rendering over MPI (issue 20; docs/mpi.md): built when
+# rt-export-mpi, rendering over MPI (docs/mpi.md): built when
 # RAYTRACE_MPI is ON, or AUTO and CMake's FindMPI finds MPI's C bindings
 # (Debian: libopenmpi-dev).  The library never depends on MPI: only this
 # program links it.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # povray-times.sh - POV-Ray 3.7's own trace time against rt-export's render
-# time on the same pictures (docs/performance.md, issue 12).
+# time on the same pictures (docs/performance.md, "The octree").
 #
 #   bench/povray-times.sh BUILD_DIR [SCENE.scn ...]
 #

@@ -1,12 +1,12 @@
 /*
- * rt-perf - the speed benchmark of docs/performance.md (issue 7).
+ * rt-perf - the speed benchmark of docs/performance.md.
  *
  * Renders a fixed list of scenes - the project's cubes and mirror scenes at
  * 400x400 and 1920x1080, the SPD scenes at 400x400, and generated meshes (a
  * tessellated sphere and a random soup of about 1,000 to 1,000,000 facets) -
  * with nine renderer settings in the same run: brute force with the plain
  * scalar loops and with the fast kernel, in double and in float, the fast
- * kernel on one thread and on all; and the octree (issue 12) on one thread
+ * kernel on one thread and on all; and the octree on one thread
  * and on all.  Entries marked octree-only (the biggest meshes at 400x400,
  * where brute force would take hours) run the octree settings alone.
  * Each is timed as the median of N renders (default 5, the settings taking
@@ -311,7 +311,7 @@ int main(int argc, char **argv)
                r[4].seconds / r[5].seconds, identical[e] ? "yes" : "NO");
     }
 
-    printf("\nThe octree (issue 12): render times in seconds (median), its "
+    printf("\nThe octree: render times in seconds (median), its "
            "speed-up over the fast brute-force kernel, and its own numbers "
            "(double).  Per query: leaves visited and facets tested, against "
            "the live facets brute force tests.\n\n"

@@ -1,12 +1,12 @@
 /*
- * in104_student.c - a course program, written from SPEC.md section 5 alone:
+ * in104_student.c - a course program, written from docs/in104.md alone:
  * it uses only the handout's headers and functions (plus freeScene, to be
  * tidy) and standard C, and must build with
  *
  *   cc -Wall -Wextra -Werror -I<include/in104> in104_student.c \
  *      -lraytrace-in104 -lraytrace -lm -lpthread
  *
- * without a warning.  It checks the results SPEC.md gives and prints a
+ * without a warning.  It checks the results the handout gives and prints a
  * line per failed check; the exit status is the number of failures.
  * Optional argument: a .scn file to parse (and report on) as well.
  */

@@ -1,4 +1,4 @@
-# rt-export-mpi under mpirun (issue 20; tests/mpi/test_mpi.sh): -np 1, 2
+# rt-export-mpi under mpirun (tests/mpi/test_mpi.sh): -np 1, 2
 # and 3 byte-compared with rt-export, a bad scene, a rank killed mid-render.
 # Label `mpi`.  Without MPI (no rt-export-mpi, or no mpiexec) each test
 # exits 77: a skip ctest shows, never a pass.

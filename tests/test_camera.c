@@ -1,5 +1,5 @@
 /*
- * test_camera.c - the camera of SPEC.md section 2: B projected onto the
+ * test_camera.c - the camera of docs/rendering-model.md: B projected onto the
  * screen plane when AB is not perpendicular to AO, the right-handed frame
  * (AB, AC, AO) with |AC| = |AB|, and the primary rays of rt_camera_ray
  * against the pixel-centre formula computed here by hand, for square and
@@ -120,7 +120,8 @@ START_TEST(camera_frame_is_right_handed_for_a_tilted_screen)
 }
 END_TEST
 
-/* SPEC.md section 2, computed here. */
+/* The screen point of docs/rendering-model.md ("The camera"), computed
+ * here. */
 static rt_vec3 pixel_point(const rt_camera *cam, int i, int j)
 {
     double w = cam->width, h = cam->height;

@@ -1,7 +1,7 @@
 /*
  * test_in104_geometry.c - the handout's geometric functions (intersection.h
  * of the in104 layer): createFacet, computeIntersection, changeCoord and
- * isInFacet, on SPEC.md section 5's examples, on boundaries (vertices,
+ * isInFacet, on docs/in104.md's examples, on boundaries (vertices,
  * edges, EPSILON on both sides), on the cases without an answer (parallel
  * rays, zero-area facets) and on badly conditioned input (slivers of aspect
  * ratio 1e12, scenes at 1e-6 and 1e6).
@@ -82,13 +82,13 @@ static void assert_no_point(point p)
     ck_assert(isnan(p.x) && isnan(p.y) && isnan(p.z));
 }
 
-/* The facet of SPEC.md section 5's intersection example. */
+/* The facet of the handout's intersection example (docs/in104.md). */
 static facet spec_facet(void)
 {
     return createFacet(pt(-1, -1, 1), pt(1, -1, -1), pt(0, 1, 1));
 }
 
-/* The triangle of SPEC.md section 5's isInFacet example. */
+/* The triangle of the handout's isInFacet example (docs/in104.md). */
 static facet spec_triangle(void)
 {
     return createFacet(pt(0, 0, 0), pt(0, 1, 0), pt(1, 0, 0));

@@ -417,7 +417,7 @@ START_TEST(render_to_ppm_writes_the_handouts_p3_format)
 END_TEST
 
 /* One facet filling the view, facing the camera, lit from the observer:
- * the centre pixel is the facet's colour times N.S = 1 (SPEC.md 3). */
+ * the centre pixel is the facet's colour times N.S = 1. */
 static scene hand_made_scene(facet *storage)
 {
     scene s;

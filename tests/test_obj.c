@@ -1,5 +1,5 @@
 /*
- * test_obj.c - the Wavefront OBJ reader (src/formats/obj.c, issue 15):
+ * test_obj.c - the Wavefront OBJ reader (src/formats/obj.c):
  * every index form, relative indices, polygons triangulated by ear clipping
  * (areas and orientations checked against the polygon), materials mapped
  * from the .mtl, warnings for what is ignored, refusals with their line and

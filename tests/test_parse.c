@@ -1,5 +1,5 @@
 /*
- * test_parse.c - the `.scn` loader against SPEC.md sections 1 and 2: every
+ * test_parse.c - the `.scn` loader against docs/scene-format.md: every
  * rule has a case that checks the status, the position (line and column of
  * the first character of the bad token; just after the last token for a
  * missing value; the line after the last line for an unexpected end of file)
@@ -67,8 +67,8 @@ enum {
     S_LIMIT = 1 << RT_ERR_LIMIT
 };
 
-/* One broken rule.  `statuses` is the set of statuses that fit (SPEC does
- * not say whether `nan` is a syntax or a range error, for instance); the
+/* One broken rule.  `statuses` is the set of statuses that fit (the format
+ * does not say whether `nan` is a syntax or a range error, for instance); the
  * message must contain `token` and, when `expected` is set, "expected". */
 typedef struct bad_case {
     const char *rule;

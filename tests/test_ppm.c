@@ -1,5 +1,5 @@
 /*
- * test_ppm.c - PPM output and input (SPEC.md section 4): P3 and P6 written
+ * test_ppm.c - PPM output and input (docs/formats.md): P3 and P6 written
  * to a memory sink read back identical, P3 lines of at most 70 characters,
  * strided images, the atomic save (a complete file, nothing left behind on
  * success or failure), comments in headers, truncated or unsupported input

@@ -1,8 +1,8 @@
 /*
- * test_reflect.c - mirror reflections (SPEC.md section 3, k > 0): a mirror
- * shows the facet it faces, k mixes the reflected and the diffuse colours,
- * the depth limit (0: no reflection; the reflection past the limit is
- * black) counted exactly in a corridor of two parallel mirrors, and
+ * test_reflect.c - mirror reflections (docs/rendering-model.md, k > 0): a
+ * mirror shows the facet it faces, k mixes the reflected and the diffuse
+ * colours, the depth limit (0: no reflection; the reflection past the
+ * limit is black) counted exactly in a corridor of two parallel mirrors, and
  * reflections that miss everything bring the background weighted by k.
  */
 #include "testutil.h"

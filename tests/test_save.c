@@ -1,5 +1,5 @@
 /*
- * test_save.c - rt_image_save and rt_image_save_check (issue 11): each rule
+ * test_save.c - rt_image_save and rt_image_save_check: each rule
  * stated at the top of raytrace/image.h, checked by what the path names
  * afterwards (lstat, the bytes, the folder's listing); PNG decoded back with
  * libpng; the format chosen from an extension.

@@ -1,6 +1,6 @@
 /*
- * test_shade.c - the colour of a ray without reflections (SPEC.md section 3,
- * k = 0): C = E (N.S) C_S C_F / 255, each term checked on one-facet scenes
+ * test_shade.c - the colour of a ray without reflections
+ * (docs/rendering-model.md, k = 0): C = E (N.S) C_S C_F / 255, each term checked on one-facet scenes
  * against values computed here by hand; the background on a miss; shadows;
  * two-sided facets; scale-independent self-intersection; and the final
  * clamp-and-round of rt_channel_to_byte, alone and through whole renders.
@@ -273,7 +273,7 @@ END_TEST
 
 /* Expected pixels of a render of one facet in the plane z = 0 seen from
  * O = (0, 0, 5) through the screen z = 4, AB = (1, 0, 0), computed here
- * from SPEC.md sections 2 and 3 (k = 0, nothing casts a shadow). */
+ * from docs/rendering-model.md (k = 0, nothing casts a shadow). */
 static void check_rendered_pixels(int w, int h, rt_vec3 light,
                                   const double cs[3], const double cf[3])
 {

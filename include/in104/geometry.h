@@ -4,7 +4,7 @@
  *
  * Programs written for the course include this header and intersection.h /
  * raytracer.h exactly as the handout's skeleton did; the names, field order
- * and layout below are the handout's (SPEC.md section 5), so such programs
+ * and layout below are the handout's (docs/in104.md), so such programs
  * build unchanged.  libraytrace's own API is the rt_-prefixed one in
  * <raytrace/raytrace.h>; these unprefixed names exist only in this layer.
  *
@@ -65,7 +65,7 @@ typedef struct ssource {
 } source;
 
 /*
- * A whole scene, as parse() fills it (SPEC.md sections 1-2):
+ * A whole scene, as parse() fills it (docs/scene-format.md):
  *   back               background colour;
  *   width, height      image size in pixels;
  *   nbPoints, points   the vertices of the file (points[0] is vertex 1);

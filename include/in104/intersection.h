@@ -80,9 +80,9 @@ point changeCoord(point p, facet f);
  * Example: triangle (0,0,0), (0,1,0), (1,0,0): (0.5, 0.5, 0) is in (on the
  * long edge), (-0.5, -0.5, 0) is out.
  *
- * Returns 0 for a zero-area facet (the renderer never hits one, SPEC.md
- * section 1) and for a point with a NaN or infinite coordinate (such as
- * computeIntersection()'s answer for a parallel ray).
+ * Returns 0 for a zero-area facet (the renderer never hits one,
+ * docs/rendering-model.md) and for a point with a NaN or infinite
+ * coordinate (such as computeIntersection()'s answer for a parallel ray).
  */
 int isInFacet(point p, facet f);
 

@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /*
- * Reads the .scn file `fname` (the format of SPEC.md section 1, the same
+ * Reads the .scn file `fname` (the format of docs/scene-format.md, the same
  * files and the same checks as libraytrace's rt_scene_load) into *s.
  *
  * Returns 0 on success; *s is then entirely filled: width, height, obs,
@@ -69,14 +69,15 @@ int parse(char *fname, scene *s);
 void freeScene(scene *s);
 
 /*
- * Extension: renders *s with libraytrace (SPEC.md sections 2-3: Whitted ray
+ * Extension: renders *s with libraytrace (docs/rendering-model.md: Whitted ray
  * tracing, at most 5 reflections, all cores) and writes the image to
  * ppmFile as an ASCII PPM (P3), replacing the file atomically.
  *
  * The facets are taken from s->facets (a, b, c, k, cp; points and the
  * stored normals are not read), so a scene built or modified by the program
- * renders too.  The rules of SPEC.md apply: width and height in 1..16384,
- * k in [0, 1], finite coordinates, a camera that is not degenerate.
+ * renders too.  The rules of docs/scene-format.md apply: width and height
+ * in 1..16384, k in [0, 1], finite coordinates, a camera that is not
+ * degenerate.
  * Returns 0 on success; otherwise non-zero (an rt_status code) with one
  * line on stderr naming what was wrong, and the file is left untouched.
  */

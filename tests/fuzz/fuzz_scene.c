@@ -7,7 +7,7 @@
  * non-empty, NUL-terminated message and a status other than RT_OK; a scene
  * that loads is then asked every question the public API allows and a few
  * of its pixels are traced, so that whatever the loader accepts is also safe
- * to render (SPEC.md: "a scene that loads can be rendered").
+ * to render (a scene that loads can be rendered).
  *
  * Built only with -DRAYTRACE_FUZZ=ON and clang (tests/fuzz/CMakeLists.txt).
  */

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_mpi.sh - rt-export-mpi as a user runs it under mpirun (issue 20):
+# test_mpi.sh - rt-export-mpi as a user runs it under mpirun:
 #   test_mpi.sh exact N      -np N gives rt-export's image, byte for byte
 #   test_mpi.sh bad-scene    one message, from rank 0, naming line and
 #                            column; the job fails; no image

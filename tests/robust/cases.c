@@ -1,5 +1,5 @@
 /*
- * cases.c - the stiff and extreme cases of issue 5 (docs/robustness.md).
+ * cases.c - the stiff and extreme cases of docs/robustness.md.
  *
  * A case builds its scene, runs one method in one precision and counts
  * failures by its criterion.  Ray-level cases ask the engine for hits or
@@ -1087,7 +1087,7 @@ static void case_r2(rb_method method, rt_precision precision, rb_result *r)
     for (int i = 0; i < rb_scaled(3000); i++) {
         /* A point of a face at least 1% of the facet away from its edges:
          * a ray that meets an edge exactly leaves through it even in
-         * exact arithmetic (SPEC's t > 0; docs/robustness.md), so it has
+         * exact arithmetic (the model's t > 0; docs/robustness.md), so it has
          * no escape-free answer to test. */
         const rt_facet_desc *f = &m.facets[(int)(rb_uniform(&rng) * m.facet_count)];
         double u = rb_uniform(&rng), v = rb_uniform(&rng);
@@ -1423,13 +1423,13 @@ static void case_q2(rb_method m, rt_precision p, rb_result *r)
 }
 
 /* ================================================================== */
-/* Transparency (issue 14)                                             */
+/* Transparency                                                        */
 
 /*
  * What a ray through glass must give is computed here from the geometry
  * alone, in double, in the body's own frame at unit scale: a convex glass
  * body is a set of planes (n.p < c inside, n unit and outward), a ray meets
- * it by clipping, Snell-Descartes (SPEC.md section 7) gives each new
+ * it by clipping, Snell-Descartes (docs/rendering-model.md) gives each new
  * direction in closed form, and every exit ray ends on a lit floor (a
  * white, opaque quad under the glass, lit by one light between the glass
  * and the floor, so that no glass shadows it) or in the background.  The

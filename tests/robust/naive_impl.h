@@ -6,7 +6,7 @@
  * o + t d, secondary rays moved 1e-5 along the normal, and recursion for
  * reflections.  It exists to be measured against, never to be used.
  *
- * Transparency (SPEC.md section 7) the way a first ray tracer adds it:
+ * Transparency (docs/rendering-model.md) the way a first ray tracer adds it:
  * Snell-Descartes with the winding normal, the refracted ray started 1e-5
  * beyond the facet (on the far side of the hit point), the mirror ray 1e-5
  * in front of it, nothing skipped; every light's shadow ray tests every

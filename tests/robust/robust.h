@@ -1,6 +1,6 @@
 /*
- * robust.h - the numerical-robustness cases of issue 5, shared by the Check
- * suites (tests/test_robust_*.c) and the report (robustness-report).
+ * robust.h - the numerical-robustness cases of docs/robustness.md, shared by
+ * the Check suite (tests/test_robust.c) and the report (robustness-report).
  *
  * Each case builds a stiff or extreme scene, runs one method on it - our
  * renderer or a naive reference - in double or float, and counts what its
@@ -49,7 +49,8 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
 void rb_engine_free(rb_engine *engine);
 /* Nearest hit for t in (0, inf); 0 when none. */
 int rb_engine_hit(const rb_engine *engine, rt_ray ray, rb_hit *hit);
-/* The colour of a ray, SPEC.md section 3, at most `depth` reflections. */
+/* The colour of a ray (docs/rendering-model.md), at most `depth`
+ * reflections. */
 rt_color rb_engine_trace(const rb_engine *engine, rt_ray ray, int depth);
 /* Renders the scene's camera view into `image` (the scene's size) with
  * `threads` threads (ours: rt_render; naive: one thread); returns the
@@ -104,7 +105,7 @@ int rb_mesh_quad(rb_mesh *mesh, rt_vec3 p0, rt_vec3 p1, rt_vec3 p2,
 /* Reverses the winding of facets [first, mesh->facet_count) whose winding
  * normal (b - a) x (c - a) points towards `inside` (a point inside a
  * convex mesh): afterwards they wind counter-clockwise seen from outside,
- * as SPEC.md section 7 asks of transparent facets. */
+ * as docs/rendering-model.md asks of transparent facets. */
 void rb_mesh_orient_outward(rb_mesh *mesh, int first, rt_vec3 inside);
 /* Makes facets [first, mesh->facet_count) glass: k = 0, transparency t,
  * index n, diffuse weight 0 (given). */
@@ -123,7 +124,7 @@ void rb_view_transform(rb_view *view, double scale, rt_vec3 shift);
 /* rt_scene_create over mesh and view; NULL (with the message on stderr)
  * when it is refused. */
 rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view);
-/* The same with further lights (SPEC.md section 7), already placed. */
+/* The same with further lights, already placed. */
 rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
                           const rt_light *more_lights, int more_light_count);
 
