@@ -156,7 +156,7 @@ static double now_seconds(void)
  * knobs `s`; *seconds is the wall-clock time of the call. */
 static rt_status render(const rt_scene *scene, const settings *s,
                         const rt_render_options *base, rt_image *image,
-                        double *seconds)
+                        double *seconds, rt_error *error)
 {
     rt_render_options options = *base;
     options.precision = s->precision;
@@ -165,7 +165,7 @@ static rt_status render(const rt_scene *scene, const settings *s,
     options.sampling = s->sampling;
     options.max_depth = s->depth;
     double start = now_seconds();
-    rt_status status = rt_render(scene, &options, image);
+    rt_status status = rt_render(scene, &options, image, error);
     *seconds = now_seconds() - start;
     return status;
 }
@@ -414,10 +414,10 @@ static int render_or_complain(const rt_scene *scene, const settings *s,
                               const rt_render_options *base, rt_image *image,
                               double *seconds)
 {
-    rt_status status = render(scene, s, base, image, seconds);
+    rt_error error;
+    rt_status status = render(scene, s, base, image, seconds, &error);
     if (status != RT_OK)
-        fprintf(stderr, "rt-bench: rendering failed: %s\n",
-                rt_status_string(status));
+        fprintf(stderr, "rt-bench: cannot render: %s\n", error.message);
     return status == RT_OK;
 }
 
@@ -514,7 +514,7 @@ static int measure(const rt_scene *scene, const arguments *a,
                                                         : &im->scratch;
                 if (image->pixels == NULL &&
                     rt_image_init(image, im->reference.width,
-                                    im->reference.height) != RT_OK) {
+                                    im->reference.height, NULL) != RT_OK) {
                     fprintf(stderr, "rt-bench: out of memory\n");
                     return 0;
                 }
@@ -716,9 +716,9 @@ int main(int argc, char **argv)
     images im = {0};
     code = EXIT_BAD_INPUT;
     output_file depth_out = {0};
-    if (rt_image_init(&im.reference, width, height) != RT_OK ||
-        rt_image_init(&im.scratch, width, height) != RT_OK ||
-        rt_image_init(&im.depth_reference, width, height) !=
+    if (rt_image_init(&im.reference, width, height, NULL) != RT_OK ||
+        rt_image_init(&im.scratch, width, height, NULL) != RT_OK ||
+        rt_image_init(&im.depth_reference, width, height, NULL) !=
             RT_OK) {
         fprintf(stderr, "rt-bench: out of memory\n");
         goto done;

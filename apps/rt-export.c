@@ -201,8 +201,9 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
 {
     rt_image image = {0};
     rt_error error;
-    if (rt_image_init(&image, report->width, report->height) != RT_OK) {
-        fprintf(stderr, "rt-export: out of memory\n");
+    if (rt_image_init(&image, report->width, report->height, &error) !=
+        RT_OK) {
+        fprintf(stderr, "rt-export: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
     cli_progress progress;
@@ -215,12 +216,12 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
         s->render.on_row = cli_progress_row;
         s->render.user = &progress;
     }
-    rt_status status = rt_render(scene, &s->render, &image);
+    rt_status status = rt_render(scene, &s->render, &image, &error);
     cli_progress_end(&progress);
     int code = EXIT_BAD_INPUT;
     if (status != RT_OK) {
-        fprintf(stderr, "rt-export: %s: rendering failed: %s\n",
-                report->scene, rt_status_string(status));
+        fprintf(stderr, "rt-export: %s: cannot render: %s\n", report->scene,
+                error.message);
         goto done;
     }
     struct timespec write_start;

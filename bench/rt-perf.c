@@ -143,7 +143,7 @@ static int measure_once(const rt_scene *scene, const setting *s,
     options.width = image->width;
     options.height = image->height;
     double start = now();
-    rt_status status = rt_render(scene, &options, image);
+    rt_status status = rt_render(scene, &options, image, NULL);
     if (status != RT_OK) {
         fprintf(stderr, "\nrt-perf: %s: %s\n", s->name,
                 rt_status_string(status));
@@ -228,7 +228,7 @@ int main(int argc, char **argv)
         rt_image images[SETTING_COUNT] = {{0}};
         int ok = 1, first = en->octree_only ? FIRST_OCTREE : 0;
         for (int s = first; s < SETTING_COUNT && ok; s++)
-            ok = rt_image_init(&images[s], en->width, en->height) == RT_OK;
+            ok = rt_image_init(&images[s], en->width, en->height, NULL) == RT_OK;
         /* round robin, so that a change of load on the machine hits every
          * setting alike */
         for (int run = 0; run < runs && ok; run++) {

@@ -9,6 +9,7 @@
  * reads before each pixel.
  */
 #include <float.h>
+#include <stddef.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -103,6 +104,7 @@ static int stopping(job *j)
 void rt_render_options_init(rt_render_options *options)
 {
     memset(options, 0, sizeof *options);
+    options->size = sizeof *options;
     options->max_depth = RT_DEFAULT_DEPTH;
     options->threads = 0;
     options->precision = RT_PRECISION_DOUBLE;
@@ -441,6 +443,33 @@ rt_status rt_scene_check_precision(const rt_scene *scene,
     return RT_OK;
 }
 
+/*
+ * Copies the caller's options into *out, field by field, as far as the
+ * caller's size reaches; the fields beyond keep their defaults (the rule of
+ * raytrace/render.h for growing option structs).  NULL: the defaults.
+ */
+static rt_status take_options(const rt_render_options *in,
+                              rt_render_options *out, rt_error *error)
+{
+    rt_render_options_init(out);
+    if (in == NULL)
+        return RT_OK;
+    if (in->size == 0 || in->size > sizeof *out)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "render options of %zu bytes: expected 1..%zu "
+                             "(set by rt_render_options_init)",
+                             in->size, sizeof *out);
+#define TAKE(field)                                                          \
+    if (offsetof(rt_render_options, field) + sizeof in->field <= in->size)    \
+        out->field = in->field;
+    TAKE(max_depth) TAKE(threads) TAKE(precision) TAKE(fast_inv_sqrt)
+    TAKE(samples) TAKE(sampling) TAKE(on_row) TAKE(cancel) TAKE(user)
+    TAKE(stats) TAKE(kernel) TAKE(accel) TAKE(aperture) TAKE(focal_distance)
+    TAKE(width) TAKE(height) TAKE(region)
+#undef TAKE
+    return RT_OK;
+}
+
 /* The checks of rt_render_image_size; fills the whole image's size too. */
 static rt_status image_size(const rt_scene *scene,
                             const rt_render_options *options, int *full_width,
@@ -483,44 +512,96 @@ rt_status rt_render_image_size(const rt_scene *scene,
                                const rt_render_options *options, int *width,
                                int *height, rt_error *error)
 {
-    rt_render_options defaults;
-    if (options == NULL) {
-        rt_render_options_init(&defaults);
-        options = &defaults;
-    }
+    rt_render_options taken;
     int full_width, full_height;
-    return image_size(scene, options, &full_width, &full_height, width,
+    *width = *height = 0;
+    rt_status status = take_options(options, &taken, error);
+    if (status != RT_OK)
+        return status;
+    return image_size(scene, &taken, &full_width, &full_height, width,
                       height, error);
 }
 
-rt_status rt_render_rows(const rt_scene *scene,
-                         const rt_render_options *options, int row_begin,
-                         int row_end, rt_image *image)
+static rt_status out_of_memory(rt_error *error)
 {
-    rt_render_options defaults;
-    if (options == NULL) {
-        rt_render_options_init(&defaults);
-        options = &defaults;
-    }
+    return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                         "out of memory while preparing or running the "
+                         "render");
+}
+
+/* The checks of rt_render_rows that image_size does not make. */
+static rt_status check_render(const rt_render_options *options, int width,
+                              int height, int row_begin, int row_end,
+                              const rt_image *image, rt_error *error)
+{
+    if (image->pixels == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the image has no pixels (see rt_image_init)");
+    if (image->width != width || image->height != height)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the image is %d x %d but the render writes "
+                             "%d x %d", image->width, image->height, width,
+                             height);
+    if (image->stride < (size_t)image->width * 3)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the image's stride is %zu bytes, less than 3 "
+                             "x its width %d", image->stride, image->width);
+    if (options->max_depth < 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a depth of %d: expected 0 or more",
+                             options->max_depth);
+    if (row_begin < 0 || row_end > image->height || row_begin > row_end)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "rows %d..%d: expected a band within 0..%d",
+                             row_begin, row_end, image->height);
+    if (options->precision != RT_PRECISION_DOUBLE &&
+        options->precision != RT_PRECISION_FLOAT)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a precision of %d: expected RT_PRECISION_DOUBLE "
+                             "or RT_PRECISION_FLOAT", (int)options->precision);
+    if (options->kernel != RT_KERNEL_AUTO &&
+        options->kernel != RT_KERNEL_SCALAR)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a kernel of %d: expected RT_KERNEL_AUTO or "
+                             "RT_KERNEL_SCALAR", (int)options->kernel);
+    if (options->accel != RT_ACCEL_AUTO && options->accel != RT_ACCEL_NONE &&
+        options->accel != RT_ACCEL_OCTREE)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "an accel of %d: expected RT_ACCEL_AUTO, "
+                             "RT_ACCEL_NONE or RT_ACCEL_OCTREE",
+                             (int)options->accel);
+    return RT_OK;
+}
+
+rt_status rt_render_rows(const rt_scene *scene,
+                         const rt_render_options *caller_options,
+                         int row_begin, int row_end, rt_image *image,
+                         rt_error *error)
+{
+    if (scene == NULL || image == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "no scene or no image");
+    rt_render_options taken;
+    rt_status status = take_options(caller_options, &taken, error);
+    if (status != RT_OK)
+        return status;
+    const rt_render_options *options = &taken;
     int full_width, full_height, width, height;
-    if (scene == NULL || image == NULL || image->pixels == NULL ||
-        image_size(scene, options, &full_width, &full_height, &width, &height,
-                   NULL) != RT_OK ||
-        image->width != width || image->height != height ||
-        image->stride < (size_t)image->width * 3 || options->max_depth < 0 ||
-        row_begin < 0 || row_end > image->height || row_begin > row_end ||
-        (options->precision != RT_PRECISION_DOUBLE &&
-         options->precision != RT_PRECISION_FLOAT) ||
-        (options->kernel != RT_KERNEL_AUTO &&
-         options->kernel != RT_KERNEL_SCALAR) ||
-        (options->accel != RT_ACCEL_AUTO && options->accel != RT_ACCEL_NONE &&
-         options->accel != RT_ACCEL_OCTREE))
-        return RT_ERR_ARGUMENT;
+    status = image_size(scene, options, &full_width, &full_height, &width,
+                        &height, error);
+    if (status == RT_OK)
+        status = check_render(options, width, height, row_begin, row_end,
+                              image, error);
+    if (status != RT_OK)
+        return status;
     int grid = 1;
     while (grid * grid < options->samples && grid < 32)
         grid++;
     if (grid * grid != options->samples)
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "%d samples per pixel: expected a square "
+                             "n x n in 1..1024 (1, 4, 9, ...)",
+                             options->samples);
 
     double start = now_seconds();
     double aperture = options->aperture >= 0.0 ? options->aperture
@@ -529,7 +610,9 @@ rt_status rt_render_rows(const rt_scene *scene,
                                 ? options->focal_distance
                                 : scene->camera.focal_distance;
     if (!isfinite(aperture) || !isfinite(focal_distance))
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a lens of aperture %g and focus %g: expected "
+                             "finite numbers", aperture, focal_distance);
     job j = {.scene = scene, .options = options, .camera = scene->camera,
              .x0 = options->region.x0, .y0 = options->region.y0,
              .width = width, .image = image,
@@ -540,17 +623,17 @@ rt_status rt_render_rows(const rt_scene *scene,
     /* The float kernel is built by the first float render and kept with
      * the scene: a double-only user never pays for float data. */
     if (options->precision == RT_PRECISION_FLOAT) {
-        if (rt_scene_check_precision(scene, RT_PRECISION_FLOAT, NULL) !=
-            RT_OK)
-            return RT_ERR_RANGE;
+        status = rt_scene_check_precision(scene, RT_PRECISION_FLOAT, error);
+        if (status != RT_OK)
+            return status;
         j.kernel.f = rt__scene_kernel_f(scene);
         if (j.kernel.f == NULL)
-            return RT_ERR_NOMEM;
+            return out_of_memory(error);
     } else {
         j.kernel.d = scene->kernel;
     }
     if (!prepare_octree(&j, scene))
-        return RT_ERR_NOMEM;
+        return out_of_memory(error);
     /* The camera rays' origin, subtracted from every vertex once for the
      * whole render (only the fast brute-force loops read it). */
     rt_kernel_eye_d *eye_d = NULL;
@@ -563,7 +646,7 @@ rt_status rt_render_rows(const rt_scene *scene,
             j.settings.eye = eye_f = rt__kernel_f_eye_create(
                 j.kernel.f, scene->camera.observer);
         if (j.settings.eye == NULL)
-            return RT_ERR_NOMEM;
+            return out_of_memory(error);
     }
     j.camera.width = full_width;
     j.camera.height = full_height;
@@ -576,7 +659,6 @@ rt_status rt_render_rows(const rt_scene *scene,
     pthread_t *threads = n > 1 ? malloc((size_t)(n - 1) * sizeof *threads)
                                : NULL;
     int started = 0;
-    rt_status status = RT_OK;
     if (n > 1 && threads == NULL)
         status = RT_ERR_NOMEM;
     for (int t = 0; status == RT_OK && t < n - 1; t++) {
@@ -597,16 +679,18 @@ rt_status rt_render_rows(const rt_scene *scene,
     if (options->stats != NULL)
         fill_stats(&j, now_seconds() - start, options->stats);
     if (status == RT_OK && atomic_load(&j.cancelled))
-        status = RT_ERR_CANCELLED;
-    if (status == RT_OK && j.totals.out_of_memory)
-        status = RT_ERR_NOMEM;
+        return rt__error_set(error, RT_ERR_CANCELLED, NULL, 0, 0,
+                             "the render was cancelled");
+    if (status == RT_ERR_NOMEM || j.totals.out_of_memory)
+        return out_of_memory(error);
     return status;
 }
 
 rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
-                    rt_image *image)
+                    rt_image *image, rt_error *error)
 {
     if (scene == NULL || image == NULL)
-        return RT_ERR_ARGUMENT;
-    return rt_render_rows(scene, options, 0, image->height, image);
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "no scene or no image");
+    return rt_render_rows(scene, options, 0, image->height, image, error);
 }

@@ -11,7 +11,8 @@ foreach(suite
     test_render
     test_render_size
     test_extension
-    test_readers)
+    test_readers
+    test_api)
   raytrace_add_suite(${suite})
 endforeach()
 # The handout's seed scenes, skipped when ../shared is absent.

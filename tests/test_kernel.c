@@ -41,12 +41,12 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
                                           NULL),
                      RT_OK);
-    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
     options.precision = precision;
     options.kernel = kernel;
     options.threads = threads;
     options.stats = stats;
-    ck_assert_int_eq(rt_render(scene, &options, &image), RT_OK);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_OK);
     return image;
 }
 
@@ -366,12 +366,12 @@ START_TEST(an_unknown_kernel_choice_is_an_argument_error)
     rt_scene *scene = rt_test_scene_from_string(
         "0 0 5\n0 0 4 1 0 4 2 2\n0\n0\n0 0 0\n0 0 10 255 255 255\n");
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, 2, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 2, 2, NULL), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     ck_assert_int_eq(options.kernel, RT_KERNEL_AUTO);
     options.kernel = (rt_kernel_choice)7;
-    ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

@@ -13,7 +13,7 @@
 static rt_image image_of(int width, int height, const unsigned char *values)
 {
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
     for (int y = 0; y < height; y++)
         memcpy(rt_image_pixel(&image, 0, y), values + 3 * width * y,
                (size_t)(3 * width));

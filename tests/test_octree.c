@@ -48,13 +48,13 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
                                           NULL),
                      RT_OK);
-    ck_assert_int_eq(rt_image_init(&image, width, height), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
     options.precision = precision;
     options.accel = accel;
     options.threads = threads;
     options.samples = samples;
     options.stats = stats;
-    rt_status status = rt_render(scene, &options, &image);
+    rt_status status = rt_render(scene, &options, &image, NULL);
     ck_assert_int_eq(status, RT_OK);
     return image;
 }
@@ -531,12 +531,12 @@ START_TEST(the_default_is_auto_and_an_unknown_choice_is_an_argument_error)
     rt_scene *scene = rt_test_scene_from_string(
         "0 0 5\n0 0 4 1 0 4 2 2\n0\n0\n0 0 0\n0 0 10 255 255 255\n");
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, 2, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 2, 2, NULL), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     ck_assert_int_eq(options.accel, RT_ACCEL_AUTO);
     options.accel = (rt_accel)9;
-    ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

@@ -1,9 +1,9 @@
 /*
- * test_ppm.c - PPM output and input (docs/rendering-model.md, "The image"):
- * P3 and P6 written to a memory sink read back identical, P3 lines of at
- * most 70 characters, strided images, the atomic save (a complete file,
- * nothing left behind on success or failure), comments in headers,
- * truncated or unsupported input refused with a message.
+ * test_ppm.c - PPM output and input (docs/formats.md): P3 and P6 written
+ * to a memory sink read back identical, P3 lines of at most 70 characters,
+ * strided images, the atomic save (a complete file, nothing left behind on
+ * success or failure), comments in headers, truncated or unsupported input
+ * refused with a message.
  */
 #include "testutil.h"
 
@@ -74,7 +74,7 @@ static void round_trip(rt_ppm_format format, int w, int h)
     unsigned char *memory;
     rt_image image = make_pattern(w, h, 5, &memory);
     buffer out = {NULL, 0, 0, -1};
-    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, format),
+    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, format, NULL),
                      RT_OK);
     ck_assert_uint_ge(out.size, 2);
     ck_assert_int_eq(out.data[0], 'P');
@@ -109,7 +109,7 @@ START_TEST(p6_output_is_header_then_exactly_the_pixels)
     unsigned char *memory;
     rt_image image = make_pattern(4, 3, 7, &memory);
     buffer out = {NULL, 0, 0, -1};
-    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6),
+    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6, NULL),
                      RT_OK);
     const char *header = "P6\n4 3\n255\n";
     size_t header_size = strlen(header);
@@ -138,7 +138,7 @@ START_TEST(p3_lines_are_at_most_70_characters)
                 memset(rt_image_pixel(&image, 0, y), 255, 40 * 3);
         buffer out = {NULL, 0, 0, -1};
         ck_assert_int_eq(
-            rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3), RT_OK);
+            rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3, NULL), RT_OK);
         size_t line_length = 0, longest = 0, lines = 0;
         for (size_t i = 0; i < out.size; i++) {
             if (out.data[i] == '\n') {
@@ -167,7 +167,7 @@ START_TEST(failing_sink_makes_the_writer_fail)
         for (int after = 0; after < 3; after++) {
             buffer out = {NULL, 0, 0, after};
             rt_status status = rt_ppm_write_to(
-                buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3);
+                buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3, NULL);
             /* a writer that made fewer calls than `after` + 1 has not met
              * the failure */
             if (out.fail_after == 0)
@@ -364,7 +364,7 @@ END_TEST
 START_TEST(image_create_and_destroy_follow_the_contract)
 {
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, 3, 2), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 3, 2, NULL), RT_OK);
     ck_assert_int_eq(image.width, 3);
     ck_assert_int_eq(image.height, 2);
     ck_assert_uint_eq(image.stride, 9);
@@ -374,9 +374,9 @@ START_TEST(image_create_and_destroy_follow_the_contract)
     rt_image_release(&image);
     ck_assert_ptr_null(image.pixels);
     rt_image_release(&image); /* a zeroed image is a no-op */
-    ck_assert_int_ne(rt_image_init(&image, 0, 2), RT_OK);
+    ck_assert_int_ne(rt_image_init(&image, 0, 2, NULL), RT_OK);
     ck_assert_ptr_null(image.pixels);
-    ck_assert_int_ne(rt_image_init(&image, 2, RT_MAX_IMAGE_SIDE + 1), RT_OK);
+    ck_assert_int_ne(rt_image_init(&image, 2, RT_MAX_IMAGE_SIDE + 1, NULL), RT_OK);
     ck_assert_ptr_null(image.pixels);
 }
 END_TEST

@@ -198,11 +198,11 @@ START_TEST(float_refuses_a_scene_it_cannot_resolve)
         rt_status status =
             rt_scene_check_precision(scene, RT_PRECISION_FLOAT, &error);
         rt_image image;
-        ck_assert_int_eq(rt_image_init(&image, 8, 8), RT_OK);
+        ck_assert_int_eq(rt_image_init(&image, 8, 8, NULL), RT_OK);
         rt_render_options options;
         rt_render_options_init(&options);
         options.precision = RT_PRECISION_FLOAT;
-        rt_status rendered = rt_render(scene, &options, &image);
+        rt_status rendered = rt_render(scene, &options, &image, NULL);
         if (k == 0) {
             ck_assert_int_eq(status, RT_OK);
             ck_assert_int_eq(rendered, RT_OK);

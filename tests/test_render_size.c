@@ -237,16 +237,16 @@ START_TEST(bands_of_a_region_and_its_progress_are_in_its_own_rows)
     options.on_row = log_row;
     options.user = &log;
     rt_image part;
-    ck_assert_int_eq(rt_image_init(&part, 40, 25), RT_OK);
+    ck_assert_int_eq(rt_image_init(&part, 40, 25, NULL), RT_OK);
     /* two bands, rendered apart, make up the region */
-    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 11, &part), RT_OK);
-    ck_assert_int_eq(rt_render_rows(scene, &options, 11, 25, &part), RT_OK);
+    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 11, &part, NULL), RT_OK);
+    ck_assert_int_eq(rt_render_rows(scene, &options, 11, 25, &part, NULL), RT_OK);
     ck_assert_int_eq(log.count, 25);
     ck_assert_int_eq(log.low, 0);
     ck_assert_int_eq(log.high, 24);
     assert_crop(&whole, &part, options.region, "two bands");
     /* a band outside the region's rows is refused */
-    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 26, &part),
+    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 26, &part, NULL),
                      RT_ERR_ARGUMENT);
     rt_image_release(&part);
     rt_image_release(&whole);
@@ -292,9 +292,9 @@ static void assert_refused(const rt_scene *scene,
     ck_assert_msg(strstr(error.message, needle) != NULL,
                   "message '%s' lacks '%s'", error.message, needle);
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, 4, 4), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, 4, 4, NULL), RT_OK);
     memset(image.pixels, 7, image.stride * 4);
-    ck_assert_int_eq(rt_render(scene, options, &image), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, options, &image, NULL), RT_ERR_ARGUMENT);
     for (size_t i = 0; i < image.stride * 4; i++)
         ck_assert_int_eq(image.pixels[i], 7);
     rt_image_release(&image);
@@ -325,8 +325,8 @@ START_TEST(bad_sizes_and_regions_are_refused_with_a_reason)
     rt_render_options_init(&options);
     options.width = 200;
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, 400, 400), RT_OK);
-    ck_assert_int_eq(rt_render(scene, &options, &image), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_image_init(&image, 400, 400, NULL), RT_OK);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

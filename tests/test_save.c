@@ -215,7 +215,7 @@ static int count_bytes(void *context, const void *data, size_t size)
 /* A width x height image where every channel takes many values. */
 static rt_status make_pattern(rt_image *image, int width, int height)
 {
-    rt_status status = rt_image_init(image, width, height);
+    rt_status status = rt_image_init(image, width, height, NULL);
     for (int y = 0; status == RT_OK && y < height; y++)
         for (int x = 0; x < width; x++) {
             unsigned char *p = rt_image_pixel(image, x, y);
@@ -1214,7 +1214,7 @@ START_TEST(the_format_comes_from_the_extension_whatever_its_case)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         rt_image_format format = (rt_image_format)12345;
-        rt_status status = rt_image_format_from_path(cases[i].path, &format);
+        rt_status status = rt_image_format_from_path(cases[i].path, &format, NULL);
         ck_assert_msg(status == cases[i].status, "%s: %s", cases[i].path,
                       rt_status_string(status));
         rt_image_format expected = status == RT_OK ? cases[i].format

@@ -434,6 +434,7 @@ static void set_defaults(cli_settings *settings)
 {
     memset(settings, 0, sizeof *settings);
     rt_render_options_init(&settings->render);
+    rt_load_options_init(&settings->load);
     settings->format = RT_IMAGE_P6;
 }
 
@@ -507,7 +508,7 @@ static int check_settings(const cli_program *program, cli_settings *settings)
         const char *base = slash ? slash + 1 : out;
         const char *dot = strrchr(base, '.');
         if (dot != NULL && dot != base &&
-            rt_image_format_from_path(out, &settings->format) != RT_OK)
+            rt_image_format_from_path(out, &settings->format, NULL) != RT_OK)
             return cli_usage_error(program, "cannot tell the image format "
                                    "from the name '%s': expected .png, "
                                    ".ppm or .pnm, or --format p3, p6 or "

@@ -83,13 +83,10 @@ static rt_status render_band(const farm_job *job, int band,
     rt_image view = {width, rows, (size_t)width * 3, pixels};
     struct timespec begin;
     clock_gettime(CLOCK_MONOTONIC, &begin);
-    rt_status status = rt_render(job->scene, &options, &view);
+    rt_status status = rt_render(job->scene, &options, &view, NULL);
     if (status != RT_OK)
         return status;
-    double seconds = seconds_since(&begin);
-    if (seconds / rows > report->slowest_row_seconds)
-        report->slowest_row_seconds = seconds / rows;
-    report->busy_seconds += seconds;
+    report->busy_seconds += seconds_since(&begin);
     report->finish_seconds = seconds_since(start);
     report->bands++;
     report->rows += rows;

@@ -337,7 +337,7 @@ static void take_termination_signal(view_app *app)
 static rt_status copy_finished_rows(view_app *app, rt_image *copy, int *rows)
 {
     const rt_image *image = view_session_image(app->session);
-    rt_status status = rt_image_init(copy, image->width, image->height);
+    rt_status status = rt_image_init(copy, image->width, image->height, NULL);
     *rows = 0;
     if (status != RT_OK)
         return status;

@@ -74,7 +74,7 @@ static void *worker_main(void *arg)
     options.user = session;
     options.cancel = session->cancel;
     rt_status status = rt_render_rows(session->scene, &options, 0,
-                                      session->image.height, &session->image);
+                                      session->image.height, &session->image, NULL);
 
     pthread_mutex_lock(&session->lock);
     session->status = status;
@@ -136,7 +136,7 @@ rt_status view_session_create(rt_scene *scene,
     session->cancel = rt_cancel_create();
     atomic_init(&session->wake_pending, 0);
 
-    status = rt_image_init(&session->image, width, height);
+    status = rt_image_init(&session->image, width, height, NULL);
     if (status == RT_OK) {
         session->done = calloc((size_t)height, 1);
         session->fresh = calloc((size_t)height, 1);

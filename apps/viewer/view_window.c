@@ -278,7 +278,7 @@ int view_window_read(view_window *window, rt_image *out)
     int width, height;
     if (SDL_GetRendererOutputSize(window->renderer, &width, &height) != 0)
         return 0;
-    if (rt_image_init(out, width, height) != RT_OK)
+    if (rt_image_init(out, width, height, NULL) != RT_OK)
         return 0;
     render(window);
     int ok = SDL_RenderReadPixels(window->renderer, NULL,

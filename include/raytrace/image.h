@@ -48,6 +48,8 @@
 #ifndef RAYTRACE_IMAGE_H
 #define RAYTRACE_IMAGE_H
 
+#include "raytrace/export.h"
+
 #include <stddef.h>
 #include <stdio.h>
 
@@ -69,13 +71,17 @@ typedef enum rt_ppm_format {
     RT_PPM_P6 = 6           /* binary */
 } rt_ppm_format;
 
-/* Allocates a black width x height image with stride 3 * width.  Sides must
- * be in 1..RT_MAX_IMAGE_SIDE.  On failure image->pixels is NULL. */
-rt_status rt_image_init(rt_image *image, int width, int height);
+/* Fills the caller's `image` with a black width x height image (stride
+ * 3 * width) whose pixels it allocates; rt_image_release frees them.  Sides
+ * must be in 1..RT_MAX_IMAGE_SIDE.  RT_OK, RT_ERR_ARGUMENT or RT_ERR_NOMEM
+ * with the reason in *error (may be NULL); on failure image->pixels is
+ * NULL.  Thread-safe on distinct images. */
+RT_API rt_status rt_image_init(rt_image *image, int width, int height,
+                               rt_error *error);
 
-/* Frees what rt_image_init allocated and zeroes the view; a zeroed image
- * is a no-op. */
-void rt_image_release(rt_image *image);
+/* Frees the pixels rt_image_init or rt_ppm_parse allocated and zeroes the
+ * view; a zeroed image is a no-op. */
+RT_API void rt_image_release(rt_image *image);
 
 /* Pointer to pixel (x, y). */
 static inline unsigned char *rt_image_pixel(const rt_image *image, int x,
@@ -94,20 +100,22 @@ typedef enum rt_image_format {
 
 /* Non-zero when this build can write `format` (PNG needs libpng).
  * Thread-safe. */
-int rt_image_format_supported(rt_image_format format);
+RT_API int rt_image_format_supported(rt_image_format format);
 
 /* The lower-case name of a format ("p3", "p6", "png"); "unknown" for any
  * other value.  Thread-safe. */
-const char *rt_image_format_name(rt_image_format format);
+RT_API const char *rt_image_format_name(rt_image_format format);
 
 /*
  * The format a path's extension asks for, case-insensitively: ".png" PNG,
  * ".ppm" and ".pnm" binary P6 (P3 is never chosen by extension: it is asked
  * for by name).  Returns RT_OK, or RT_ERR_FORMAT for any other extension or
- * none (*format untouched).  Does not look at the file.  Thread-safe.
+ * none (*format untouched) with a message naming the path in *error (may be
+ * NULL).  Does not look at the file.  Thread-safe.
  */
-rt_status rt_image_format_from_path(const char *path,
-                                    rt_image_format *format);
+RT_API rt_status rt_image_format_from_path(const char *path,
+                                           rt_image_format *format,
+                                           rt_error *error);
 
 /* Receives `size` bytes of output; returns non-zero on success. */
 typedef int (*rt_write_func)(void *user, const void *data, size_t size);
@@ -118,15 +126,15 @@ typedef int (*rt_write_func)(void *user, const void *data, size_t size);
  * message says why), RT_ERR_IO (the sink returned 0) or RT_ERR_NOMEM.  A
  * NULL `error` is allowed.  Thread-safe on distinct sinks.
  */
-rt_status rt_image_write_to(rt_write_func write, void *user,
-                            const rt_image *image, rt_image_format format,
-                            rt_error *error);
+RT_API rt_status rt_image_write_to(rt_write_func write, void *user,
+                                   const rt_image *image,
+                                   rt_image_format format, rt_error *error);
 
 /* The same to a stdio stream, flushed at the end (a full device is an
  * RT_ERR_IO).  The stream is not closed.  Thread-safe on distinct
  * streams. */
-rt_status rt_image_write_file(FILE *file, const rt_image *image,
-                              rt_image_format format, rt_error *error);
+RT_API rt_status rt_image_write_file(FILE *file, const rt_image *image,
+                                     rt_image_format format, rt_error *error);
 
 /*
  * Saves `image` in `format` at `path` following the rule at the top of this
@@ -136,8 +144,8 @@ rt_status rt_image_write_file(FILE *file, const rt_image *image,
  * RT_ERR_INTERRUPTED (a signal arrived: nothing was changed); or
  * RT_ERR_ARGUMENT.  Thread-safe on distinct paths.
  */
-rt_status rt_image_save(const char *path, const rt_image *image,
-                        rt_image_format format, rt_error *error);
+RT_API rt_status rt_image_save(const char *path, const rt_image *image,
+                               rt_image_format format, rt_error *error);
 
 /*
  * Checks, without rendering anything, that rt_image_save could write at
@@ -148,24 +156,28 @@ rt_status rt_image_save(const char *path, const rt_image *image,
  * messages.  Programs call it before a long render so that a bad output
  * fails in milliseconds.  Thread-safe.
  */
-rt_status rt_image_save_check(const char *path, rt_error *error);
+RT_API rt_status rt_image_save_check(const char *path, rt_error *error);
 
 /* PPM writers (P3 lines are at most 70 characters); the same as the
- * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6. */
-rt_status rt_ppm_write_to(rt_write_func write, void *user,
-                          const rt_image *image, rt_ppm_format format);
-rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
-                            rt_ppm_format format);
+ * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6, the same statuses
+ * and messages (a format other than P3 or P6: RT_ERR_FORMAT). */
+RT_API rt_status rt_ppm_write_to(rt_write_func write, void *user,
+                                 const rt_image *image, rt_ppm_format format,
+                                 rt_error *error);
+RT_API rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
+                                   rt_ppm_format format, rt_error *error);
 
 /* rt_image_save with RT_IMAGE_P3 or RT_IMAGE_P6. */
-rt_status rt_ppm_save(const char *path, const rt_image *image,
-                      rt_ppm_format format, rt_error *error);
+RT_API rt_status rt_ppm_save(const char *path, const rt_image *image,
+                             rt_ppm_format format, rt_error *error);
 
 /* Parses a P3 or P6 image from memory into a new image (free it with
  * rt_image_release).  `name` is used in messages ("<memory>" when NULL). */
-rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
-                       rt_image *image, rt_error *error);
-rt_status rt_ppm_load(const char *path, rt_image *image, rt_error *error);
+RT_API rt_status rt_ppm_parse(const void *data, size_t length,
+                              const char *name, rt_image *image,
+                              rt_error *error);
+RT_API rt_status rt_ppm_load(const char *path, rt_image *image,
+                             rt_error *error);
 
 #ifdef __cplusplus
 }

@@ -16,6 +16,9 @@
 #ifndef RAYTRACE_RENDER_H
 #define RAYTRACE_RENDER_H
 
+#include "raytrace/export.h"
+
+#include <stddef.h>
 #include <stdint.h>
 
 #include "raytrace/image.h"
@@ -135,11 +138,11 @@ typedef enum rt_accel {
  */
 typedef struct rt_cancel rt_cancel;
 
-rt_cancel *rt_cancel_create(void);      /* NULL when out of memory */
-void rt_cancel_destroy(rt_cancel *cancel); /* NULL: no-op */
-void rt_cancel_request(rt_cancel *cancel);
-void rt_cancel_reset(rt_cancel *cancel);
-int rt_cancel_requested(const rt_cancel *cancel);
+RT_API rt_cancel *rt_cancel_create(void);      /* NULL when out of memory */
+RT_API void rt_cancel_destroy(rt_cancel *cancel); /* NULL: no-op */
+RT_API void rt_cancel_request(rt_cancel *cancel);
+RT_API void rt_cancel_reset(rt_cancel *cancel);
+RT_API int rt_cancel_requested(const rt_cancel *cancel);
 
 /*
  * A rectangle of pixels of the image: columns x0 <= x < x1, rows
@@ -150,7 +153,23 @@ typedef struct rt_region {
     int x0, y0, x1, y1;
 } rt_region;
 
+/*
+ * What a render does (rt_render_options_init sets every default).
+ *
+ * How the option structs grow (rt_render_options here, rt_load_options in
+ * raytrace/scene.h): the first field, `size`, is sizeof the struct as the
+ * caller was compiled, set by the _init function.  New fields are only ever
+ * appended.  The library reads the fields that lie wholly within `size`;
+ * every later field keeps its default, so a program built against an older
+ * header keeps working with a newer library.  A size of 0 (a struct that was
+ * never initialised) or larger than the library knows (a program built
+ * against a newer header than the library it runs with) is refused with
+ * RT_ERR_ARGUMENT and a message giving both sizes.  Always call the _init
+ * function, then set fields by name.
+ */
 typedef struct rt_render_options {
+    size_t size;                /* sizeof(rt_render_options); set by
+                                   rt_render_options_init */
     int max_depth;              /* reflections after a primary ray; default 5 */
     int threads;                /* 0: one per online core (default); 1: the
                                    calling thread only */
@@ -186,11 +205,11 @@ typedef struct rt_render_options {
                                Zero (the default): the whole image */
 } rt_render_options;
 
-/* Sets the defaults: max_depth 5, all cores, double precision, exact
- * square root, one sample per pixel, no callback, no stats, the fastest
- * kernel, the octree chosen by facet count, the scene's image size, the
- * whole image.  Thread-safe. */
-void rt_render_options_init(rt_render_options *options);
+/* Sets size to sizeof(rt_render_options) and the defaults: max_depth 5,
+ * all cores, double precision, exact square root, one sample per pixel, no
+ * callback, no stats, the fastest kernel, the octree chosen by facet count,
+ * the scene's image size, the whole image.  Thread-safe. */
+RT_API void rt_render_options_init(rt_render_options *options);
 
 /*
  * The size of the image a render of `scene` with `options` (NULL: the
@@ -200,24 +219,27 @@ void rt_render_options_init(rt_render_options *options);
  * 1..RT_MAX_IMAGE_SIDE or the region is empty or reaches outside the
  * image; *width and *height are then 0.  Thread-safe.
  */
-rt_status rt_render_image_size(const rt_scene *scene,
-                               const rt_render_options *options, int *width,
-                               int *height, rt_error *error);
+RT_API rt_status rt_render_image_size(const rt_scene *scene,
+                                      const rt_render_options *options,
+                                      int *width, int *height,
+                                      rt_error *error);
 
 /*
  * Renders the image (or its region) into `image`, which must have the size
  * rt_render_image_size gives: the scene's width x height by default (see
- * rt_image_init).  Returns RT_OK, RT_ERR_ARGUMENT (wrong image size, a
- * bad size or region, negative depth, samples not a square in 1..1024),
- * RT_ERR_RANGE (a
- * float render of a scene float cannot hold or resolve: see
- * rt_scene_check_precision), RT_ERR_NOMEM
- * (nothing is rendered) or RT_ERR_CANCELLED (some rows are finished, the
- * others hold whatever they held before).  Thread-safe as long as no two
- * calls write the same rows of the same image.
+ * rt_image_init).  Returns RT_OK, RT_ERR_ARGUMENT (the image's size is not
+ * the render's, a bad size or region, a negative depth, samples not a square
+ * in 1..1024, bad option values or size), RT_ERR_RANGE (a float render of a
+ * scene float cannot hold or resolve: see rt_scene_check_precision),
+ * RT_ERR_NOMEM (nothing is rendered) or RT_ERR_CANCELLED (some rows are
+ * finished, the others hold whatever they held before); *error (may be
+ * NULL) then says what was wrong ("the image is 400 x 300 but the render
+ * writes 200 x 100").  Thread-safe as long as no two calls write the same
+ * rows of the same image.
  */
-rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
-                    rt_image *image);
+RT_API rt_status rt_render(const rt_scene *scene,
+                           const rt_render_options *options, rt_image *image,
+                           rt_error *error);
 
 /* A float render refuses a scene whose vertices and camera points reach
  * more than this many times the extent of its vertices (the largest side
@@ -233,18 +255,20 @@ rt_status rt_render(const rt_scene *scene, const rt_render_options *options,
  * points reaching beyond RT_FLOAT_SPREAD_MAX times the vertices' extent.
  * Double holds every scene the loader accepts.  Thread-safe.
  */
-rt_status rt_scene_check_precision(const rt_scene *scene,
-                                   rt_precision precision, rt_error *error);
+RT_API rt_status rt_scene_check_precision(const rt_scene *scene,
+                                          rt_precision precision,
+                                          rt_error *error);
 
 /*
  * Renders rows [row_begin, row_end) of `image` (of the size rt_render
  * takes; with a region, row 0 is the region's top row); other rows are not
- * touched, and on_row reports rows of `image`.  Same results and status as
- * rt_render.  Thread-safe on disjoint bands.
+ * touched, and on_row reports rows of `image`.  Same results, status and
+ * messages as rt_render.  Thread-safe on disjoint bands.
  */
-rt_status rt_render_rows(const rt_scene *scene,
-                         const rt_render_options *options, int row_begin,
-                         int row_end, rt_image *image);
+RT_API rt_status rt_render_rows(const rt_scene *scene,
+                                const rt_render_options *options,
+                                int row_begin, int row_end, rt_image *image,
+                                rt_error *error);
 
 /*
  * The real-valued colour carried by `ray` (docs/rendering-model.md, "What a
@@ -252,11 +276,11 @@ rt_status rt_render_rows(const rt_scene *scene,
  * most `max_depth` reflections; the direction need not be unit length.
  * The value is not clamped.  Thread-safe.
  */
-rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth);
+RT_API rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth);
 
 /* The 8-bit value a real channel is written as: clamped to [0, 255] and
  * rounded to nearest, halves away from zero; NaN gives 0.  Thread-safe. */
-unsigned char rt_channel_to_byte(double value);
+RT_API unsigned char rt_channel_to_byte(double value);
 
 #ifdef __cplusplus
 }

@@ -15,6 +15,8 @@
 #ifndef RAYTRACE_SCENE_H
 #define RAYTRACE_SCENE_H
 
+#include "raytrace/export.h"
+
 #include <stddef.h>
 
 #include "raytrace/image.h"
@@ -135,8 +137,8 @@ typedef struct rt_scene_desc {
  * camera that is not degenerate.  Messages have no file position; zero-area
  * facets give warnings.  Thread-safe.
  */
-rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
-                          rt_error *error);
+RT_API rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
+                                 rt_error *error);
 
 /*
  * Parses a scene from `length` bytes at `text` (no terminating NUL needed).
@@ -144,13 +146,15 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
  * Numbers are read in the C locale whatever the process's locale.
  * Thread-safe.
  */
-rt_status rt_scene_parse(const char *text, size_t length, const char *name,
-                         rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_parse(const char *text, size_t length,
+                                const char *name, rt_scene **scene,
+                                rt_error *error);
 
 /* Reads the file at `path` and parses it in the format its extension
  * names (see rt_scene_format_from_path; .scn when it names none);
  * messages name `path`.  Thread-safe. */
-rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_load(const char *path, rt_scene **scene,
+                               rt_error *error);
 
 /* The scene file formats the loader reads. */
 typedef enum rt_scene_format {
@@ -172,8 +176,13 @@ typedef enum rt_scene_format {
  * position only gives a direction and the end of a shadow ray. */
 #define RT_MAX_COORDINATE 1e152
 
-/* How to read a scene, for the formats that leave room. */
+/* How to read a scene, for the formats that leave room.  It grows by the
+ * rule of raytrace/render.h: `size` first, set by rt_load_options_init;
+ * fields beyond it keep their defaults; 0 or a size larger than the
+ * library's is refused with RT_ERR_ARGUMENT. */
 typedef struct rt_load_options {
+    size_t size;                /* sizeof(rt_load_options); set by
+                                   rt_load_options_init */
     rt_scene_format format;     /* default RT_SCENE_FORMAT_AUTO */
     double tessellation;        /* NFF spheres, cylinders and cones: the
                                    largest distance between the surface and
@@ -195,18 +204,20 @@ typedef struct rt_load_options {
     int light_count;
 } rt_load_options;
 
-/* Sets the defaults above.  Thread-safe. */
-void rt_load_options_init(rt_load_options *options);
+/* Sets size to sizeof(rt_load_options) and the defaults above.
+ * Thread-safe. */
+RT_API void rt_load_options_init(rt_load_options *options);
 
 /* The format a path's extension names, case-insensitively (.scn, .nff,
- * .obj); RT_ERR_FORMAT for another or none (*format untouched).
- * Thread-safe. */
-rt_status rt_scene_format_from_path(const char *path,
-                                    rt_scene_format *format);
+ * .obj); RT_ERR_FORMAT for another or none (*format untouched), with a
+ * message naming the path in *error (may be NULL).  Thread-safe. */
+RT_API rt_status rt_scene_format_from_path(const char *path,
+                                           rt_scene_format *format,
+                                           rt_error *error);
 
 /* The lower-case name of a format ("scn", "nff", "obj"; "auto").
  * Thread-safe. */
-const char *rt_scene_format_name(rt_scene_format format);
+RT_API const char *rt_scene_format_name(rt_scene_format format);
 
 /*
  * Parses a scene in any format from memory, as rt_scene_parse does for
@@ -215,42 +226,43 @@ const char *rt_scene_format_name(rt_scene_format format);
  * RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension (.scn when
  * it has none).  `options` may be NULL (the defaults).  Thread-safe.
  */
-rt_status rt_scene_parse_with(const char *text, size_t length,
-                              const char *name,
-                              const rt_load_options *options,
-                              rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
+                                     const char *name,
+                                     const rt_load_options *options,
+                                     rt_scene **scene, rt_error *error);
 
 /* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
  * the first NUL byte, which no scene file holds) and parses it with
  * rt_scene_parse_with.  Thread-safe. */
-rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
-                             rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_load_with(const char *path,
+                                    const rt_load_options *options,
+                                    rt_scene **scene, rt_error *error);
 
-/* Frees a scene.  rt_scene_destroy(NULL) does nothing.  Not thread-safe on the
- * same scene (no other call may be using it). */
-void rt_scene_destroy(rt_scene *scene);
+/* Frees a scene.  rt_scene_destroy(NULL) does nothing.  Not thread-safe on
+ * the same scene (no other call may be using it). */
+RT_API void rt_scene_destroy(rt_scene *scene);
 
 /* Fills `info`.  Thread-safe. */
-void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
+RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 
 /* The i-th vertex (0-based, i < vertex_count).  Thread-safe. */
-rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
+RT_API rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
 
 /* The i-th facet record (0-based, i < facet_count).  Thread-safe. */
-void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
+RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 
 /* The i-th light (0-based, i < light_count; 0 is the first).
  * Thread-safe. */
-void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
+RT_API void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
 
 /* The i-th warning (0-based, i < warning_count).  Thread-safe. */
-const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
+RT_API const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
 
 /* The primary ray of pixel (column i, row j from the top) of the camera's
  * width x height image, as docs/rendering-model.md ("The camera") defines
  * it: from the observer through the pixel's centre; direction not
  * normalised.  Thread-safe. */
-rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
+RT_API rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
 
 /* A ray-facet intersection. */
 typedef struct rt_hit {
@@ -266,16 +278,16 @@ typedef struct rt_hit {
  * the same t the facet that comes first in the file wins.  Returns non-zero
  * and fills `hit` when there is one.  Thread-safe.
  */
-int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
-                         rt_hit *hit);
+RT_API int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray,
+                                double t_max, rt_hit *hit);
 
 /*
  * Non-zero when some facet lies strictly between `from` and `to` (an any-hit
  * query that stops at the first blocker).  `skip_facet` (or -1) is a facet to
  * ignore: the one `from` lies on.  Thread-safe.
  */
-int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
-                      int skip_facet);
+RT_API int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
+                             int skip_facet);
 
 /* What a handout .scn file cannot hold (rt_scene_write_scn's *dropped,
  * bits): lights beyond the first, transparency and refractive indices, a
@@ -294,15 +306,16 @@ int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
  * what the file could not hold.  Returns RT_OK, RT_ERR_IO (the sink
  * refused) or RT_ERR_ARGUMENT.  Thread-safe.
  */
-rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
-                             rt_write_func write, void *user,
-                             unsigned *dropped, rt_error *error);
+RT_API rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
+                                    rt_write_func write, void *user,
+                                    unsigned *dropped, rt_error *error);
 
 /* The same saved at `path` by the rule of raytrace/image.h (atomic
  * replacement, streams written directly).  Thread-safe on distinct
  * paths. */
-rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
-                            int extended, unsigned *dropped, rt_error *error);
+RT_API rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
+                                   int extended, unsigned *dropped,
+                                   rt_error *error);
 
 #ifdef __cplusplus
 }

@@ -11,6 +11,8 @@
 #ifndef RAYTRACE_STATUS_H
 #define RAYTRACE_STATUS_H
 
+#include "raytrace/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -53,7 +55,7 @@ typedef struct rt_error {
 
 /* A short English description of status ("syntax error").  Never NULL; an
  * unknown value gives "unknown status".  Thread-safe. */
-const char *rt_status_string(rt_status status);
+RT_API const char *rt_status_string(rt_status status);
 
 #ifdef __cplusplus
 }

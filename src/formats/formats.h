@@ -51,6 +51,11 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error);
 
+/* Encodes `image` as PPM to the sink: RT_OK or the bare status (the
+ * callers write the message). */
+rt_status rt__ppm_write_to(rt_write_func write, void *user,
+                           const rt_image *image, rt_ppm_format format);
+
 #if RAYTRACE_HAVE_PNG
 /* Encodes `image` (valid) as an 8-bit RGB PNG to the sink. */
 rt_status rt__png_write_to(rt_write_func write, void *user,

@@ -45,21 +45,24 @@ static int extension_is(const char *extension, const char *wanted)
     return *extension == '\0' && *wanted == '\0';
 }
 
-rt_status rt_image_format_from_path(const char *path, rt_image_format *format)
+rt_status rt_image_format_from_path(const char *path, rt_image_format *format,
+                                    rt_error *error)
 {
-    if (path == NULL)
-        return RT_ERR_ARGUMENT;
+    if (path == NULL || format == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a path and a format to fill");
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     const char *dot = strrchr(base, '.');
-    if (dot == NULL || dot == base)
-        return RT_ERR_FORMAT;
-    if (extension_is(dot, ".png"))
+    if (dot != NULL && dot != base && extension_is(dot, ".png"))
         *format = RT_IMAGE_PNG;
-    else if (extension_is(dot, ".ppm") || extension_is(dot, ".pnm"))
+    else if (dot != NULL && dot != base &&
+             (extension_is(dot, ".ppm") || extension_is(dot, ".pnm")))
         *format = RT_IMAGE_P6;
     else
-        return RT_ERR_FORMAT;
+        return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
+                             "cannot tell the image format: expected the "
+                             "extension .png, .ppm or .pnm");
     return RT_OK;
 }
 
@@ -91,7 +94,7 @@ rt_status rt_image_write_to(rt_write_func write, void *user,
         return rt__png_write_to(write, user, image, error);
 #endif
     rt_status status =
-        rt_ppm_write_to(write, user, image, (rt_ppm_format)format);
+        rt__ppm_write_to(write, user, image, (rt_ppm_format)format);
     if (status != RT_OK)
         return rt__error_set(error, status, NULL, 0, 0,
                              "cannot write the image: %s",

@@ -6,6 +6,7 @@
  */
 #include <ctype.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,7 +21,33 @@
 void rt_load_options_init(rt_load_options *options)
 {
     memset(options, 0, sizeof *options);
+    options->size = sizeof *options;
     options->format = RT_SCENE_FORMAT_AUTO;
+}
+
+/* Copies the caller's options into *out as far as the caller's size
+ * reaches; later fields keep their defaults (raytrace/render.h's rule for
+ * growing option structs).  NULL: the defaults. */
+static rt_status take_options(const rt_load_options *in, rt_load_options *out,
+                              const char *name, rt_error *error)
+{
+    rt_load_options_init(out);
+    if (in == NULL)
+        return RT_OK;
+    if (in->size == 0 || in->size > sizeof *out)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "load options of %zu bytes: expected 1..%zu "
+                             "(set by rt_load_options_init)",
+                             in->size, sizeof *out);
+#define TAKE(field)                                                          \
+    if (offsetof(rt_load_options, field) + sizeof in->field <= in->size)      \
+        out->field = in->field;
+    TAKE(format) TAKE(tessellation) TAKE(width) TAKE(height)
+    TAKE(look_from_given) TAKE(look_at_given) TAKE(up_given) TAKE(fov_given)
+    TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)
+    TAKE(light_count)
+#undef TAKE
+    return RT_OK;
 }
 
 const char *rt_scene_format_name(rt_scene_format format)
@@ -38,15 +65,24 @@ const char *rt_scene_format_name(rt_scene_format format)
     return "auto";
 }
 
-rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format)
+static rt_status refuse_scene_extension(const char *path, rt_error *error)
 {
-    if (path == NULL)
-        return RT_ERR_ARGUMENT;
+    return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
+                         "cannot tell the scene format: expected the "
+                         "extension .scn, .nff or .obj");
+}
+
+rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
+                                    rt_error *error)
+{
+    if (path == NULL || format == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a path and a format to fill");
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     const char *dot = strrchr(base, '.');
     if (dot == NULL || dot == base || strlen(dot) != 4)
-        return RT_ERR_FORMAT;
+        return refuse_scene_extension(path, error);
     char extension[4];
     for (int i = 0; i < 3; i++)
         extension[i] = (char)tolower((unsigned char)dot[1 + i]);
@@ -62,7 +98,7 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format)
             *format = known[i].format;
             return RT_OK;
         }
-    return RT_ERR_FORMAT;
+    return refuse_scene_extension(path, error);
 }
 
 #define PI 3.14159265358979323846
@@ -154,14 +190,14 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
     if (scene == NULL)
         return RT_ERR_ARGUMENT;
     *scene = NULL;
-    rt_load_options defaults;
-    if (options == NULL) {
-        rt_load_options_init(&defaults);
-        options = &defaults;
-    }
+    rt_load_options taken;
+    rt_status status = take_options(options, &taken, name, error);
+    if (status != RT_OK)
+        return status;
+    options = &taken;
     rt_scene_format format = options->format;
     if (format == RT_SCENE_FORMAT_AUTO &&
-        (name == NULL || rt_scene_format_from_path(name, &format) != RT_OK))
+        (name == NULL || rt_scene_format_from_path(name, &format, NULL) != RT_OK))
         format = RT_SCENE_FORMAT_SCN;
     switch (format) {
     case RT_SCENE_FORMAT_SCN:

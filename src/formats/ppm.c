@@ -15,6 +15,7 @@
 
 #include "error.h"
 #include "file.h"
+#include "formats.h"
 #include "raytrace/image.h"
 #include "raytrace/scene.h"
 
@@ -53,8 +54,8 @@ static rt_status write_p3_pixels(rt_write_func write, void *user,
     return write(user, line, used) ? RT_OK : RT_ERR_IO;
 }
 
-rt_status rt_ppm_write_to(rt_write_func write, void *user,
-                          const rt_image *image, rt_ppm_format format)
+rt_status rt__ppm_write_to(rt_write_func write, void *user,
+                           const rt_image *image, rt_ppm_format format)
 {
     if (!valid_image(image) || write == NULL)
         return RT_ERR_ARGUMENT;
@@ -74,21 +75,28 @@ rt_status rt_ppm_write_to(rt_write_func write, void *user,
     return RT_OK;
 }
 
-static int write_to_file(void *user, const void *data, size_t size)
+static rt_status refuse_ppm_format(rt_ppm_format format, rt_error *error)
 {
-    return fwrite(data, 1, size, (FILE *)user) == size;
+    return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
+                         "expected P3 or P6, found format %d", (int)format);
+}
+
+rt_status rt_ppm_write_to(rt_write_func write, void *user,
+                          const rt_image *image, rt_ppm_format format,
+                          rt_error *error)
+{
+    if (format != RT_PPM_P3 && format != RT_PPM_P6)
+        return refuse_ppm_format(format, error);
+    return rt_image_write_to(write, user, image, (rt_image_format)format,
+                             error);
 }
 
 rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
-                            rt_ppm_format format)
+                            rt_ppm_format format, rt_error *error)
 {
-    if (file == NULL)
-        return RT_ERR_ARGUMENT;
-    rt_status status = rt_ppm_write_to(write_to_file, file, image, format);
-    /* A full device shows up only when the buffer is flushed. */
-    if (status == RT_OK && (fflush(file) != 0 || ferror(file)))
-        status = RT_ERR_IO;
-    return status;
+    if (format != RT_PPM_P3 && format != RT_PPM_P6)
+        return refuse_ppm_format(format, error);
+    return rt_image_write_file(file, image, (rt_image_format)format, error);
 }
 
 rt_status rt_ppm_save(const char *path, const rt_image *image,
@@ -225,7 +233,7 @@ rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
                              "expected %zu pixel values, found a file too "
                              "short to hold them", bytes);
     }
-    status = rt_image_init(image, (int)width, (int)height);
+    status = rt_image_init(image, (int)width, (int)height, NULL);
     if (status != RT_OK)
         return rt__error_set(error, status, r.name, 0, 0, "out of memory");
     if (binary) {

@@ -93,9 +93,9 @@ int renderToPPM(const scene *s, const char *ppmFile)
         return (int)status;
 
     rt_image image;
-    status = rt_image_init(&image, s->width, s->height);
+    status = rt_image_init(&image, s->width, s->height, NULL);
     if (status == RT_OK)
-        status = rt_render(built, NULL, &image);
+        status = rt_render(built, NULL, &image, NULL);
     rt_error error;
     if (status == RT_OK) {
         status = rt_ppm_save(ppmFile, &image, RT_PPM_P3, &error);

@@ -54,11 +54,11 @@ int main(void)
         fprintf(stderr, "consumer: %s\n", error.message);
         return 1;
     }
-    status = rt_image_init(&image, 8, 6);
+    status = rt_image_init(&image, 8, 6, NULL);
     if (status == RT_OK)
-        status = rt_render(scene, NULL, &image);
+        status = rt_render(scene, NULL, &image, NULL);
     if (status == RT_OK)
-        status = rt_ppm_write_to(append, &out, &image, RT_PPM_P6);
+        status = rt_ppm_write_to(append, &out, &image, RT_PPM_P6, NULL);
     rt_image_release(&image);
     rt_scene_destroy(scene);
     if (status != RT_OK) {

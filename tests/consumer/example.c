@@ -20,18 +20,15 @@ int main(int argc, char **argv)
         return 1;
     }
     rt_scene_get_info(scene, &info);
-    status = rt_image_init(&image, info.width, info.height);
+    status = rt_image_init(&image, info.width, info.height, &error);
     if (status == RT_OK)
-        status = rt_render(scene, NULL, &image);     /* default options */
-    if (status == RT_OK) {
+        status = rt_render(scene, NULL, &image, &error);  /* default options */
+    if (status == RT_OK)
         status = rt_ppm_save(argv[2], &image, RT_PPM_P6, &error);
-        if (status == RT_OK)
-            printf("%s\n", argv[2]);
-        else
-            fprintf(stderr, "%s: %s\n", argv[0], error.message);
-    } else {
-        fprintf(stderr, "%s: %s\n", argv[0], rt_status_string(status));
-    }
+    if (status == RT_OK)
+        printf("%s\n", argv[2]);
+    else
+        fprintf(stderr, "%s: %s\n", argv[0], error.message);
     rt_image_release(&image);
     rt_scene_destroy(scene);
     return status == RT_OK ? 0 : 1;

@@ -46,7 +46,7 @@ static int append(void *context, const void *data, size_t size)
 static void round_trip(const rt_image *image, rt_ppm_format format)
 {
     buffer out = {NULL, 0, 0};
-    require(rt_ppm_write_to(append, &out, image, format) == RT_OK);
+    require(rt_ppm_write_to(append, &out, image, format, NULL) == RT_OK);
     rt_image again;
     rt_error error;
     require(rt_ppm_parse(out.bytes, out.used, "again", &again, &error) ==

@@ -576,7 +576,7 @@ static rt_image render_view(const rb_mesh *base, const rb_view *base_view,
         rb_mesh_free(&m);
         return image;
     }
-    rt_image_init(&image, view.width, view.height);
+    rt_image_init(&image, view.width, view.height, NULL);
     rb_engine *e = rb_engine_create(scene, method, precision);
     *nans = rb_engine_render(e, 5, 2, &image);
     rb_engine_free(e);
@@ -886,7 +886,7 @@ static void case_c1(rb_method method, rt_precision precision, rb_result *r)
             r->failures++;
         }
         rt_image image;
-        rt_image_init(&image, 64, 64);
+        rt_image_init(&image, 64, 64, NULL);
         r->nans += rb_engine_render(e, 5, 1, &image);
         rt_image_release(&image);
         rb_engine_free(e);
@@ -1011,7 +1011,7 @@ static void naive_render_child(void *arg)
     rt_image image;
     rt_scene_info info;
     (void)info;
-    rt_image_init(&image, 4, 4);
+    rt_image_init(&image, 4, 4, NULL);
     long nans = rb_engine_render(job->engine, job->depth, 1, &image);
     int bad = nans != 0;
     for (int j = 0; j < 4; j++)
@@ -1046,14 +1046,14 @@ static void case_r1(rb_method method, rt_precision precision, rb_result *r)
         int depths[2] = {depth / 10, depth};
         for (int run = 0; run < 2; run++) {
             rt_image image;
-            rt_image_init(&image, 4, 4);
+            rt_image_init(&image, 4, 4, NULL);
             rt_render_options options;
             rt_render_options_init(&options);
             options.max_depth = depths[run];
             options.precision = precision;
             options.accel = rb_accel();
             options.stats = &stats[run];
-            if (rt_render(scene, &options, &image) != RT_OK)
+            if (rt_render(scene, &options, &image, NULL) != RT_OK)
                 r->failures = 16;
             for (int j = 0; j < 4 && run == 1; j++)
                 for (int i = 0; i < 4; i++)
@@ -1317,7 +1317,7 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
         r->nans += rb_color_has_nan(rb_engine_trace(e, ray, 3));
     }
     rt_image image;
-    rt_image_init(&image, 64, 64);
+    rt_image_init(&image, 64, 64, NULL);
     long render_nans = rb_engine_render(e, 5, 2, &image);
     if (render_nans < 0 && method == RB_OURS && !is_double(precision))
         /* Decided: float cannot resolve facets 3 wide at 1e8 (its rule,
@@ -2109,7 +2109,7 @@ static void render_with(const rt_scene *scene, rt_precision precision,
     options.threads = threads;
     options.kernel = kernel;
     options.accel = rb_accel();
-    rt_render(scene, &options, image);
+    rt_render(scene, &options, image, NULL);
 }
 
 /* Thread counts 1, 2, 3 and 8, and the scalar and AVX2 loops, give the
@@ -2132,8 +2132,8 @@ static void determinism(rb_method method, rt_precision precision, rb_result *r,
             continue;
         }
         rt_image reference, other;
-        rt_image_init(&reference, 64, 64);
-        rt_image_init(&other, 64, 64);
+        rt_image_init(&reference, 64, 64, NULL);
+        rt_image_init(&other, 64, 64, NULL);
         render_with(scene, precision, 1, RT_KERNEL_SCALAR, &reference);
         static const int threads[4] = {1, 2, 3, 8};
         for (int k = 0; k < 4; k++) {

@@ -173,7 +173,7 @@ long rb_engine_render(const rb_engine *e, int depth, int threads,
         options.threads = threads;
         options.precision = e->precision;
         options.accel = rb_accel();
-        if (rt_render(e->scene, &options, image) != RT_OK)
+        if (rt_render(e->scene, &options, image, NULL) != RT_OK)
             return -1;
     }
     for (int j = 0; j < info.height; j++) {
