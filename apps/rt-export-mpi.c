@@ -14,9 +14,11 @@
  * A rank that dies: Open MPI ends the job, nothing is saved.  Exit status
  * as rt-export's: 0 success, 1 bad input or a failed write, 2 bad usage.
  */
+#define _GNU_SOURCE /* sched_getaffinity: the cores mpirun or srun gave */
 #include <errno.h>
 #include <fcntl.h>
 #include <mpi.h>
+#include <sched.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -282,8 +284,10 @@ static void print_ranks(const farm_job *job, const farm_rank_report *reports,
     for (int rank = 0; rank < ranks; rank++) {
         const farm_rank_report *r = &reports[rank];
         fprintf(stderr, "rt-export-mpi: rank %d: %d bands, %d rows, %.3f s "
-                        "rendering, last band done at %.3f s\n", rank,
-                r->bands, r->rows, r->busy_seconds, r->finish_seconds);
+                        "rendering (%.4f s a row, %.4f in its slowest band), "
+                        "last band done at %.3f s\n", rank, r->bands, r->rows,
+                r->busy_seconds, r->rows ? r->busy_seconds / r->rows : 0.0,
+                r->slowest_row_seconds, r->finish_seconds);
         total += r->busy_seconds;
         most = r->busy_seconds > most ? r->busy_seconds : most;
         if (r->bands > 0) {
@@ -405,6 +409,27 @@ static int parse_everywhere(int argc, char **argv, cli_settings *s, int rank)
     return code;
 }
 
+/*
+ * -j 0 means the cores this rank may run on, not the machine's: mpirun
+ * binds each rank to one core by default when it starts one or two, and
+ * srun to --cpus-per-task, so the machine's count would put every thread
+ * on one core.  A -j above them gets a warning from rank 0.
+ */
+static void fit_threads(cli_settings *s, int rank)
+{
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) != 0)
+        return;
+    int cores = CPU_COUNT(&set);
+    if (s->render.threads == 0)
+        s->render.threads = cores;
+    else if (s->render.threads > cores && rank == 0)
+        fprintf(stderr, "rt-export-mpi: warning: -j %d, but rank 0 may run "
+                        "on %d core%s (mpirun binds ranks to cores: see "
+                        "--bind-to none in docs/mpi.md)\n", s->render.threads,
+                cores, cores == 1 ? "" : "s");
+}
+
 int main(int argc, char **argv)
 {
     int provided, rank, ranks;
@@ -419,8 +444,10 @@ int main(int argc, char **argv)
     plan p;
     memset(&p, 0, sizeof p);
     int code = parse_everywhere(argc, argv, &s, rank);
-    if (code == CLI_CONTINUE)
+    if (code == CLI_CONTINUE) {
+        fit_threads(&s, rank);
         code = share_scene(&s, &p, rank);
+    }
     if (code == CLI_CONTINUE) {
         farm_job job = make_job(&p, &s, ranks);
         if (rank == 0) {

@@ -15,15 +15,6 @@
 #include "raytracer.h"
 #include "testutil.h"
 
-/* Writes `text` to the file `name` (in the test's working directory). */
-static void write_file(const char *name, const char *text)
-{
-    FILE *file = fopen(name, "wb");
-    ck_assert_ptr_nonnull(file);
-    fputs(text, file);
-    ck_assert_int_eq(fclose(file), 0);
-}
-
 /* What a call wrote on stderr: stderr goes to a temporary file meanwhile.
  * Each Check test runs in its own process, so this cannot leak. */
 static char captured[4096];
@@ -192,15 +183,15 @@ END_TEST
 
 START_TEST(parse_reads_what_the_core_reads_crlf_bom_and_separators)
 {
-    write_file("in104_crlf.scn",
-               "\xEF\xBB\xBF# BOM, CRLF, spaces and commas mixed\r\n"
-               "0 0 10\r\n"
-               "0,0,5 , 1 0 5, 8., 6.0\r\n"
-               "\r\n"
-               "3\r\n-1 -1 0\r\n1,-1,0\r\n0 1 0   # a comment\r\n"
-               "1\r\n1 2 3 0.25 10 20 30\r\n"
-               "1 2 3\r\n"
-               "0 0 10 255 255 255\r\n");
+    rt_test_write_file("in104_crlf.scn",
+                       "\xEF\xBB\xBF# BOM, CRLF, spaces and commas mixed\r\n"
+                       "0 0 10\r\n"
+                       "0,0,5 , 1 0 5, 8., 6.0\r\n"
+                       "\r\n"
+                       "3\r\n-1 -1 0\r\n1,-1,0\r\n0 1 0   # a comment\r\n"
+                       "1\r\n1 2 3 0.25 10 20 30\r\n"
+                       "1 2 3\r\n"
+                       "0 0 10 255 255 255\r\n");
     scene s;
     ck_assert_int_eq(parse("in104_crlf.scn", &s), 0);
     ck_assert_int_eq(s.width, 8);
@@ -217,7 +208,7 @@ END_TEST
 START_TEST(parse_prints_the_loaders_message_and_returns_nonzero)
 {
     const char *text = "0 0 10\n0 0 5 1 0 5 8 6\n1\n0 0 zero\n";
-    write_file("in104_bad.scn", text);
+    rt_test_write_file("in104_bad.scn", text);
     rt_scene *core = NULL;
     rt_error error;
     rt_status expected = rt_scene_load("in104_bad.scn", &core, &error);
@@ -258,7 +249,7 @@ START_TEST(parse_refuses_a_file_that_uses_the_extensions)
                  "0 0 10\n%s\n3\n-1 -1 0\n1 -1 0\n0 1 0\n1\n%s\n1 2 3\n"
                  "0 0 10 255 255 255\n%s\n",
                  cases[i].screen, cases[i].facet, cases[i].more_light);
-        write_file("in104_extended.scn", text);
+        rt_test_write_file("in104_extended.scn", text);
         scene s;
         capture_begin();
         int status = parse("in104_extended.scn", &s);
@@ -274,7 +265,8 @@ END_TEST
 
 START_TEST(parse_reports_a_missing_record_and_a_missing_file)
 {
-    write_file("in104_short.scn", "0 0 10\n0 0 5 1 0 5 8 6\n0\n0\n1 2 3\n");
+    rt_test_write_file("in104_short.scn",
+                       "0 0 10\n0 0 5 1 0 5 8 6\n0\n0\n1 2 3\n");
     scene s;
     capture_begin();
     int status = parse("in104_short.scn", &s);
@@ -309,11 +301,11 @@ END_TEST
 
 START_TEST(parse_keeps_a_zero_area_facet_with_a_warning)
 {
-    write_file("in104_flat.scn",
-               "0 0 10\n0 0 5 1 0 5 8 6\n"
-               "3\n0 0 0\n1 1 0\n2 2 0\n"
-               "1\n1 2 3 0 255 0 0\n"
-               "0 0 0\n0 0 10 255 255 255\n");
+    rt_test_write_file("in104_flat.scn",
+                       "0 0 10\n0 0 5 1 0 5 8 6\n"
+                       "3\n0 0 0\n1 1 0\n2 2 0\n"
+                       "1\n1 2 3 0 255 0 0\n"
+                       "0 0 0\n0 0 10 255 255 255\n");
     scene s;
     capture_begin();
     int status = parse("in104_flat.scn", &s);

@@ -722,14 +722,6 @@ static void make_temp_dir(char *path, size_t size)
     ck_assert_ptr_nonnull(mkdtemp(path));
 }
 
-static void write_file(const char *path, const char *text)
-{
-    FILE *file = fopen(path, "wb");
-    ck_assert_ptr_nonnull(file);
-    ck_assert_int_eq(fputs(text, file) >= 0, 1);
-    ck_assert_int_eq(fclose(file), 0);
-}
-
 START_TEST(load_reads_a_file_and_names_it_in_errors)
 {
     char dir[64], good[128], bad[128];
@@ -738,10 +730,10 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
     snprintf(bad, sizeof bad, "%s/bad.scn", dir);
     char text[2048];
     build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
-    write_file(good, text);
+    rt_test_write_file(good, text);
     build_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
                 "\n");
-    write_file(bad, text);
+    rt_test_write_file(bad, text);
 
     rt_scene *scene = NULL;
     rt_error error;

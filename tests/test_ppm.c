@@ -1,9 +1,9 @@
 /*
- * test_ppm.c - PPM output and input (docs/formats.md): P3 and P6 written
- * to a memory sink read back identical, P3 lines of at most 70 characters,
- * strided images, the atomic save (a complete file, nothing left behind on
- * success or failure), comments in headers, truncated or unsupported input
- * refused with a message.
+ * test_ppm.c - PPM output and input (docs/rendering-model.md, "The image"):
+ * P3 and P6 written to a memory sink read back identical, P3 lines of at
+ * most 70 characters, strided images, the atomic save (a complete file,
+ * nothing left behind on success or failure), comments in headers,
+ * truncated or unsupported input refused with a message.
  */
 #include "testutil.h"
 

@@ -12,16 +12,6 @@
 
 #define COLOR_TOL 1e-9
 
-static void assert_color(rt_color c, double r, double g, double b,
-                         double tol, const char *what)
-{
-    ck_assert_msg(fabs(c.r - r) <= tol && fabs(c.g - g) <= tol &&
-                      fabs(c.b - b) <= tol,
-                  "%s: (%.12g, %.12g, %.12g), expected (%.12g, %.12g, %.12g) "
-                  "within %g",
-                  what, c.r, c.g, c.b, r, g, b, tol);
-}
-
 /* Colours of the mirror scene. */
 static const double CS[3] = {200, 220, 240}; /* light */
 static const double CF[3] = {100, 150, 250}; /* the facet in the mirror */
@@ -63,12 +53,12 @@ START_TEST(perfect_mirror_shows_the_facet_it_faces)
     rt_scene *scene = mirror_scene(1.0);
     rt_color c = rt_trace(scene, to_mirror, RT_DEFAULT_DEPTH);
     /* C = 1 * C_R = C_S C_F / 255 */
-    assert_color(c, CS[0] * CF[0] / 255, CS[1] * CF[1] / 255,
-                 CS[2] * CF[2] / 255, COLOR_TOL, "k = 1");
+    rt_test_assert_color(c, CS[0] * CF[0] / 255, CS[1] * CF[1] / 255,
+                         CS[2] * CF[2] / 255, COLOR_TOL, "k = 1");
     /* what the facet looks like when seen directly from the mirror point */
     rt_ray direct = {{5, 0, 0}, {1, 0, 1}};
-    assert_color(rt_trace(scene, direct, RT_DEFAULT_DEPTH), c.r, c.g, c.b,
-                 COLOR_TOL, "facet seen directly");
+    rt_test_assert_color(rt_trace(scene, direct, RT_DEFAULT_DEPTH), c.r, c.g,
+                         c.b, COLOR_TOL, "facet seen directly");
     /* and through a render: the one pixel */
     rt_image image = rt_test_render(scene, RT_DEFAULT_DEPTH, 1);
     const unsigned char *p = rt_image_pixel(&image, 0, 0);
@@ -91,8 +81,8 @@ START_TEST(half_mirror_mixes_reflection_and_own_colour)
             e[ch] = k * CS[ch] * CF[ch] / 255 + (1 - k) * CS[ch] * CM[ch] / 255;
         char what[32];
         snprintf(what, sizeof what, "k = %g", k);
-        assert_color(rt_trace(scene, to_mirror, RT_DEFAULT_DEPTH), e[0], e[1],
-                     e[2], COLOR_TOL, what);
+        rt_test_assert_color(rt_trace(scene, to_mirror, RT_DEFAULT_DEPTH),
+                             e[0], e[1], e[2], COLOR_TOL, what);
         rt_scene_destroy(scene);
     }
 }
@@ -101,10 +91,11 @@ END_TEST
 START_TEST(depth_zero_follows_no_reflection)
 {
     rt_scene *scene = mirror_scene(1.0);
-    assert_color(rt_trace(scene, to_mirror, 0), 0, 0, 0, 0.0, "k = 1, depth 0");
-    assert_color(rt_trace(scene, to_mirror, 1), CS[0] * CF[0] / 255,
-                 CS[1] * CF[1] / 255, CS[2] * CF[2] / 255, COLOR_TOL,
-                 "k = 1, depth 1");
+    rt_test_assert_color(rt_trace(scene, to_mirror, 0), 0, 0, 0, 0.0,
+                         "k = 1, depth 0");
+    rt_test_assert_color(rt_trace(scene, to_mirror, 1), CS[0] * CF[0] / 255,
+                         CS[1] * CF[1] / 255, CS[2] * CF[2] / 255, COLOR_TOL,
+                         "k = 1, depth 1");
     rt_image image = rt_test_render(scene, 0, 1);
     const unsigned char *p = rt_image_pixel(&image, 0, 0);
     ck_assert_msg(p[0] == 0 && p[1] == 0 && p[2] == 0,
@@ -113,9 +104,10 @@ START_TEST(depth_zero_follows_no_reflection)
     rt_image_release(&image);
     rt_scene_destroy(scene);
     scene = mirror_scene(0.5);
-    assert_color(rt_trace(scene, to_mirror, 0), 0.5 * CS[0] * CM[0] / 255,
-                 0.5 * CS[1] * CM[1] / 255, 0.5 * CS[2] * CM[2] / 255,
-                 COLOR_TOL, "k = 0.5, depth 0");
+    rt_test_assert_color(rt_trace(scene, to_mirror, 0),
+                         0.5 * CS[0] * CM[0] / 255, 0.5 * CS[1] * CM[1] / 255,
+                         0.5 * CS[2] * CM[2] / 255, COLOR_TOL,
+                         "k = 0.5, depth 0");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -134,8 +126,9 @@ START_TEST(reflection_that_misses_brings_background_weighted_by_k)
         double e[3];
         for (int ch = 0; ch < 3; ch++)
             e[ch] = k * BG[ch] + (1 - k) * ns * CS[ch] * CM[ch] / 255;
-        assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
-                     COLOR_TOL, k == 1 ? "k = 1" : "k = 0.5");
+        rt_test_assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0],
+                             e[1], e[2], COLOR_TOL,
+                             k == 1 ? "k = 1" : "k = 0.5");
         rt_scene_destroy(scene);
     }
 }
@@ -155,8 +148,8 @@ START_TEST(mirror_works_at_every_scale_of_coordinates)
             e[ch] = 0.5 * CS[ch] * CF[ch] / 255 + 0.5 * CS[ch] * CM[ch] / 255;
         char what[32];
         snprintf(what, sizeof what, "scale %g", scales[i]);
-        assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0], e[1], e[2],
-                     1e-6, what);
+        rt_test_assert_color(rt_trace(scene, ray, RT_DEFAULT_DEPTH), e[0],
+                             e[1], e[2], 1e-6, what);
         rt_scene_destroy(scene);
     }
 }
@@ -189,13 +182,13 @@ START_TEST(depth_limit_counts_reflections_exactly)
     for (int depth = 0; depth <= 3; depth++) {
         char what[32];
         snprintf(what, sizeof what, "depth %d", depth);
-        assert_color(rt_trace(scene, ray, depth), 0, 0, 0, 0.0, what);
+        rt_test_assert_color(rt_trace(scene, ray, depth), 0, 0, 0, 0.0, what);
     }
     for (int depth = 4; depth <= 8; depth++) {
         char what[32];
         snprintf(what, sizeof what, "depth %d", depth);
-        assert_color(rt_trace(scene, ray, depth), BG[0], BG[1], BG[2],
-                     COLOR_TOL, what);
+        rt_test_assert_color(rt_trace(scene, ray, depth), BG[0], BG[1], BG[2],
+                             COLOR_TOL, what);
     }
     rt_image image = rt_test_render(scene, 4, 1);
     const unsigned char *p = rt_image_pixel(&image, 0, 0);
@@ -220,7 +213,8 @@ START_TEST(parallel_mirrors_terminate_at_any_depth)
     for (size_t i = 0; i < sizeof depths / sizeof depths[0]; i++) {
         char what[32];
         snprintf(what, sizeof what, "depth %d", depths[i]);
-        assert_color(rt_trace(scene, ray, depths[i]), 0, 0, 0, 0.0, what);
+        rt_test_assert_color(rt_trace(scene, ray, depths[i]), 0, 0, 0, 0.0,
+                             what);
     }
     rt_scene_destroy(scene);
     /* half mirrors: the value stays finite and within [0, 255] */

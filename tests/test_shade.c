@@ -16,16 +16,6 @@
  * products of numbers <= 255). */
 #define COLOR_TOL 1e-9
 
-static void assert_color(rt_color c, double r, double g, double b,
-                         double tol, const char *what)
-{
-    ck_assert_msg(fabs(c.r - r) <= tol && fabs(c.g - g) <= tol &&
-                      fabs(c.b - b) <= tol,
-                  "%s: (%.12g, %.12g, %.12g), expected (%.12g, %.12g, %.12g) "
-                  "within %g",
-                  what, c.r, c.g, c.b, r, g, b, tol);
-}
-
 /* A large facet in the plane z = 0 (times `s`), colour C_F = (200, 100, 50),
  * background (10, 20, 30), light of colour C_S = (255, 128, 64) at
  * (lx, ly, lz) (times `s`), plus an optional second facet `extra` given as
@@ -66,8 +56,8 @@ START_TEST(light_straight_above_gives_full_diffuse_light_times_facet_colour)
     rt_scene *scene = diffuse_scene(1, 0, 0, 10, NULL, 0);
     rt_color c = rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH);
     /* N.S = 1, E = 1: C_S C_F / 255 */
-    assert_color(c, 255.0 * 200 / 255, 128.0 * 100 / 255, 64.0 * 50 / 255,
-                 COLOR_TOL, "light above");
+    rt_test_assert_color(c, 255.0 * 200 / 255, 128.0 * 100 / 255,
+                         64.0 * 50 / 255, COLOR_TOL, "light above");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -77,20 +67,20 @@ START_TEST(diffuse_term_scales_with_cosine_of_light_angle)
     /* hit (1, 2, 0), light (4, 2, 4): S = (3, 0, 4)/5, N.S = 0.8 */
     rt_scene *scene = diffuse_scene(1, 4, 2, 4, NULL, 0);
     rt_color c = rt_trace(scene, down_from(1, 2, 5), RT_DEFAULT_DEPTH);
-    assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
-                 0.8 * 64.0 * 50 / 255, COLOR_TOL, "N.S = 0.8");
+    rt_test_assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
+                         0.8 * 64.0 * 50 / 255, COLOR_TOL, "N.S = 0.8");
     rt_scene_destroy(scene);
     /* hit (0, 0, 0), light (10, 0, 10): N.S = 1/sqrt(2) */
     scene = diffuse_scene(1, 10, 0, 10, NULL, 0);
     c = rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH);
     double f = 1 / sqrt(2.0);
-    assert_color(c, f * 200, f * 128.0 * 100 / 255, f * 64.0 * 50 / 255,
-                 COLOR_TOL, "N.S = cos 45");
+    rt_test_assert_color(c, f * 200, f * 128.0 * 100 / 255,
+                         f * 64.0 * 50 / 255, COLOR_TOL, "N.S = cos 45");
     /* the viewing direction plays no part (Lambert) */
     rt_ray oblique = {{3, -2, 5}, {-3, 2, -5}};
     c = rt_trace(scene, oblique, RT_DEFAULT_DEPTH);
-    assert_color(c, f * 200, f * 128.0 * 100 / 255, f * 64.0 * 50 / 255,
-                 COLOR_TOL, "oblique view");
+    rt_test_assert_color(c, f * 200, f * 128.0 * 100 / 255,
+                         f * 64.0 * 50 / 255, COLOR_TOL, "oblique view");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -101,8 +91,8 @@ START_TEST(grazing_light_still_lights_without_self_shadowing)
     rt_scene *scene = diffuse_scene(1, 100, 0, 1, NULL, 0);
     rt_color c = rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH);
     double f = 1 / sqrt(10001.0);
-    assert_color(c, f * 200, f * 128.0 * 100 / 255, f * 64.0 * 50 / 255,
-                 COLOR_TOL, "grazing light");
+    rt_test_assert_color(c, f * 200, f * 128.0 * 100 / 255,
+                         f * 64.0 * 50 / 255, COLOR_TOL, "grazing light");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -111,7 +101,7 @@ START_TEST(light_behind_the_facet_gives_black)
 {
     rt_scene *scene = diffuse_scene(1, 0, 0, -10, NULL, 0);
     rt_color c = rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH);
-    assert_color(c, 0, 0, 0, 0.0, "light behind");
+    rt_test_assert_color(c, 0, 0, 0, 0.0, "light behind");
     rt_image image = rt_test_render(scene, RT_DEFAULT_DEPTH, 1);
     for (int y = 0; y < 3; y++)
         for (int x = 0; x < 3; x++) {
@@ -132,18 +122,19 @@ START_TEST(facet_seen_from_its_back_is_lit_when_light_is_on_viewer_side)
         /* viewer below, light below */
         rt_scene *scene = diffuse_scene(1, 0, 0, -10, NULL, reverse);
         rt_ray up = {{0, 0, -5}, {0, 0, 1}};
-        assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), full[0], full[1],
-                     full[2], COLOR_TOL,
-                     reverse ? "back side, reversed winding" : "back side");
+        rt_test_assert_color(
+            rt_trace(scene, up, RT_DEFAULT_DEPTH), full[0], full[1], full[2],
+            COLOR_TOL, reverse ? "back side, reversed winding" : "back side");
         /* viewer below, light above: dark */
         rt_scene_destroy(scene);
         scene = diffuse_scene(1, 0, 0, 10, NULL, reverse);
-        assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), 0, 0, 0, 0.0,
-                     "back side, light on the other side");
+        rt_test_assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), 0, 0, 0,
+                             0.0, "back side, light on the other side");
         /* viewer above, light above */
-        assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH),
-                     full[0], full[1], full[2], COLOR_TOL,
-                     reverse ? "front, reversed winding" : "front");
+        rt_test_assert_color(
+            rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), full[0],
+            full[1], full[2], COLOR_TOL,
+            reverse ? "front, reversed winding" : "front");
         rt_scene_destroy(scene);
     }
 }
@@ -155,19 +146,19 @@ START_TEST(facet_between_hit_point_and_light_casts_a_shadow)
      * primary ray starts at z = 5, below it */
     const double blocker[10] = {-1, -1, 7, 1, -1, 7, 0, 1, 7, 0};
     rt_scene *scene = diffuse_scene(1, 0, 0, 10, blocker, 0);
-    assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), 0, 0,
-                 0, 0.0, "in the shadow");
+    rt_test_assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH),
+                         0, 0, 0, 0.0, "in the shadow");
     /* beside the shadow: lit */
-    assert_color(rt_trace(scene, down_from(10, 0, 5), RT_DEFAULT_DEPTH),
-                 200 * 10 / sqrt(200.0), 128.0 * 100 / 255 * 10 / sqrt(200.0),
-                 64.0 * 50 / 255 * 10 / sqrt(200.0), COLOR_TOL,
-                 "beside the shadow");
+    rt_test_assert_color(
+        rt_trace(scene, down_from(10, 0, 5), RT_DEFAULT_DEPTH),
+        200 * 10 / sqrt(200.0), 128.0 * 100 / 255 * 10 / sqrt(200.0),
+        64.0 * 50 / 255 * 10 / sqrt(200.0), COLOR_TOL, "beside the shadow");
     rt_scene_destroy(scene);
     /* a mirror casts a shadow too */
     const double mirror[10] = {-1, -1, 7, 1, -1, 7, 0, 1, 7, 1};
     scene = diffuse_scene(1, 0, 0, 10, mirror, 0);
-    assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), 0, 0,
-                 0, 0.0, "in the shadow of a mirror");
+    rt_test_assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH),
+                         0, 0, 0, 0.0, "in the shadow of a mirror");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -176,9 +167,9 @@ START_TEST(facet_beyond_the_light_casts_no_shadow)
 {
     const double beyond[10] = {-1, -1, 12, 1, -1, 12, 0, 1, 12, 0};
     rt_scene *scene = diffuse_scene(1, 0, 0, 10, beyond, 0);
-    assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH), 200,
-                 128.0 * 100 / 255, 64.0 * 50 / 255, COLOR_TOL,
-                 "blocker beyond the light");
+    rt_test_assert_color(rt_trace(scene, down_from(0, 0, 5), RT_DEFAULT_DEPTH),
+                         200, 128.0 * 100 / 255, 64.0 * 50 / 255, COLOR_TOL,
+                         "blocker beyond the light");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -187,10 +178,11 @@ START_TEST(ray_that_hits_nothing_returns_the_background)
 {
     rt_scene *scene = diffuse_scene(1, 0, 0, 10, NULL, 0);
     rt_ray up = {{0, 0, 5}, {0, 0, 1}};
-    assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), 10, 20, 30, 0.0,
-                 "miss");
+    rt_test_assert_color(rt_trace(scene, up, RT_DEFAULT_DEPTH), 10, 20, 30,
+                         0.0, "miss");
     rt_ray beside = {{100, 0, 5}, {0, 0, -1}};
-    assert_color(rt_trace(scene, beside, 0), 10, 20, 30, 0.0, "miss beside");
+    rt_test_assert_color(rt_trace(scene, beside, 0), 10, 20, 30, 0.0,
+                         "miss beside");
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -208,8 +200,8 @@ START_TEST(shading_does_not_depend_on_the_scale_of_coordinates)
         char what[64];
         snprintf(what, sizeof what, "scale %g", s);
         /* relative tolerance 1e-9 on values ~100 */
-        assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
-                     0.8 * 64.0 * 50 / 255, 1e-7, what);
+        rt_test_assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
+                             0.8 * 64.0 * 50 / 255, 1e-7, what);
         rt_scene_destroy(scene);
     }
 }
@@ -241,8 +233,8 @@ START_TEST(shading_far_from_the_origin_has_no_self_shadowing)
         snprintf(what, sizeof what, "offset %g", d);
         /* tolerance 1e-3: the coordinates themselves are rounded to
          * 1e-7 (at 1e9) of distances ~10 */
-        assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
-                     0.8 * 64.0 * 50 / 255, 1e-3, what);
+        rt_test_assert_color(c, 0.8 * 200, 0.8 * 128.0 * 100 / 255,
+                             0.8 * 64.0 * 50 / 255, 1e-3, what);
         rt_scene_destroy(scene);
     }
 }

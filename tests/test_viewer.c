@@ -844,18 +844,6 @@ START_TEST(watch_reloads_when_the_file_changes_and_only_then)
 }
 END_TEST
 
-/* The file's bytes, or fails. */
-static char *read_file(const char *path, size_t *size)
-{
-    FILE *file = fopen(path, "rb");
-    ck_assert_msg(file != NULL, "cannot read %s", path);
-    char *data = malloc(1 << 20);
-    ck_assert(data != NULL);
-    *size = fread(data, 1, 1 << 20, file);
-    fclose(file);
-    return data;
-}
-
 START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
 {
     remove("viewer-save-1.ppm");
@@ -871,17 +859,20 @@ START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
     ck_assert(view_app_save(app, path, sizeof path));
     ck_assert_str_eq(path, "viewer-save-2.ppm");
     size_t first_size;
-    char *first = read_file(path, &first_size);
+    char *first = rt_test_read_file(path, &first_size);
+    ck_assert_ptr_nonnull(first);
 
     edit_and_reload(app, "viewer-save.scn", 200, 10, 10);
     ck_assert(view_app_save(app, path, sizeof path));
     ck_assert_str_eq(path, "viewer-save-3.ppm");
     size_t again_size;
-    char *again = read_file("viewer-save-2.ppm", &again_size);
+    char *again = rt_test_read_file("viewer-save-2.ppm", &again_size);
+    ck_assert_ptr_nonnull(again);
     ck_assert(first_size == again_size &&
               memcmp(first, again, first_size) == 0);
     free(again);
-    again = read_file("viewer-save-1.ppm", &again_size);
+    again = rt_test_read_file("viewer-save-1.ppm", &again_size);
+    ck_assert_ptr_nonnull(again);
     ck_assert(strstr(again, "not an image") != NULL);
 
     rt_image saved;
@@ -917,7 +908,8 @@ START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
     ck_assert_str_eq(path, "viewer-out-1.ppm");
     close_app(app);
     size_t first_size;
-    char *first = read_file("viewer-out.ppm", &first_size);
+    char *first = rt_test_read_file("viewer-out.ppm", &first_size);
+    ck_assert_ptr_nonnull(first);
 
     /* 1024 rays a pixel on one thread, stopped at once: surely unfinished
      * when S is pressed. */
@@ -931,7 +923,8 @@ START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
     ck_assert(view_app_save(app, path, sizeof path));
     ck_assert_str_eq(path, "viewer-out-partial-1.ppm");
     size_t again_size;
-    char *again = read_file("viewer-out.ppm", &again_size);
+    char *again = rt_test_read_file("viewer-out.ppm", &again_size);
+    ck_assert_ptr_nonnull(again);
     ck_assert(first_size == again_size &&
               memcmp(first, again, first_size) == 0);
     free(first);
@@ -1004,7 +997,8 @@ START_TEST(without_a_display_rt_view_says_so_and_exits_1_at_once)
                   "status %d after %.2f s", status, seconds);
     ck_assert_msg(seconds < 2.0, "took %.2f s", seconds);
     size_t size;
-    char *message = read_file("viewer-nodisplay.txt", &size);
+    char *message = rt_test_read_file("viewer-nodisplay.txt", &size);
+    ck_assert_ptr_nonnull(message);
     message[size] = '\0';
     ck_assert_msg(strstr(message, "rt-view: cannot open a window: ") ==
                           message &&

@@ -3,6 +3,7 @@
  */
 #include "testutil.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,4 +129,22 @@ char *rt_test_read_file(const char *path, size_t *size)
     if (size != NULL)
         *size = used;
     return data;
+}
+
+void rt_test_write_file(const char *path, const char *text)
+{
+    FILE *file = fopen(path, "wb");
+    ck_assert_msg(file != NULL, "cannot write %s", path);
+    ck_assert_int_eq(fputs(text, file) >= 0, 1);
+    ck_assert_int_eq(fclose(file), 0);
+}
+
+void rt_test_assert_color(rt_color c, double r, double g, double b,
+                          double tol, const char *what)
+{
+    ck_assert_msg(fabs(c.r - r) <= tol && fabs(c.g - g) <= tol &&
+                      fabs(c.b - b) <= tol,
+                  "%s: (%.12g, %.12g, %.12g), expected (%.12g, %.12g, %.12g) "
+                  "within %g",
+                  what, c.r, c.g, c.b, r, g, b, tol);
 }

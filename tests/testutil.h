@@ -58,4 +58,13 @@ long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff);
  * be opened.  Fails the test when out of memory. */
 char *rt_test_read_file(const char *path, size_t *size);
 
+/* Writes `text` to the file at `path`, replacing it; fails the test when it
+ * cannot. */
+void rt_test_write_file(const char *path, const char *text);
+
+/* Fails the test unless every channel of `c` is within `tol` of (r, g, b);
+ * `what` names the colour in the message. */
+void rt_test_assert_color(rt_color c, double r, double g, double b,
+                          double tol, const char *what);
+
 #endif /* RAYTRACE_TESTUTIL_H */

@@ -86,7 +86,10 @@ static rt_status render_band(const farm_job *job, int band,
     rt_status status = rt_render(job->scene, &options, &view, NULL);
     if (status != RT_OK)
         return status;
-    report->busy_seconds += seconds_since(&begin);
+    double seconds = seconds_since(&begin);
+    if (seconds / rows > report->slowest_row_seconds)
+        report->slowest_row_seconds = seconds / rows;
+    report->busy_seconds += seconds;
     report->finish_seconds = seconds_since(start);
     report->bands++;
     report->rows += rows;

@@ -41,6 +41,7 @@ typedef struct farm_rank_report {
     int bands, rows;
     double busy_seconds;        /* inside rt_render */
     double finish_seconds;      /* from the start to its last band done */
+    double slowest_row_seconds; /* its slowest band's time over its rows */
     rt_render_stats stats;      /* the counters of its bands, summed */
 } farm_rank_report;
 

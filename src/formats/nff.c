@@ -1,8 +1,7 @@
 /*
  * nff.c - Eric Haines' Neutral File Format (the NFF.TXT of his Standard
  * Procedural Databases), read from memory into an rt_scene_desc and handed
- * to the scene builder.  What
- * each entity becomes is in docs/formats.md.
+ * to the scene builder.  What each entity becomes is in docs/formats.md.
  *
  * NFF is a stream of white-space separated values (the SPD generators put
  * a cone's eight values on one line or on two), so the reader goes token by

@@ -25,19 +25,6 @@ static inline void rb_check_case(const char *id, rt_precision precision)
                   r.failures, r.total, c->criterion, r.nans, r.note, c->setup);
 }
 
-/* Two tests, <name>_in_double and <name>_in_float, for case `id`. */
-#define RB_CASE_TESTS(name, id)                                              \
-    START_TEST(name##_in_double) { rb_check_case(id, RT_PRECISION_DOUBLE); } \
-    END_TEST                                                                 \
-    START_TEST(name##_in_float) { rb_check_case(id, RT_PRECISION_FLOAT); }   \
-    END_TEST
-
-#define RB_ADD_TESTS(tcase, name)                                            \
-    do {                                                                     \
-        tcase_add_test(tcase, name##_in_double);                             \
-        tcase_add_test(tcase, name##_in_float);                              \
-    } while (0)
-
 /* A test case with room for slow machines and sanitizers. */
 static inline TCase *rb_tcase(const char *name)
 {

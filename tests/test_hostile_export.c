@@ -1,0 +1,362 @@
+/*
+ * test_hostile_export.c - rt-export and rt-bench under faults: exit codes
+ * that say what went wrong, a refusal to write over the scene, a destination
+ * that cannot be written and SIGKILL mid-render each keep the previous
+ * image.
+ *
+ * Tests that need a child process fork one themselves, so that they also
+ * hold under CK_FORK=no (valgrind).
+ */
+#define _GNU_SOURCE 1
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <math.h>
+#include <sched.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mount.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "hostile_util.h"
+
+/* ------------------------------------------------------------------ */
+/* rt-export: exit codes, refusals, interruptions                        */
+
+/*
+ * Runs rt-export with `args` (NULL-terminated) in `dir`, stdout and stderr
+ * to files there (removed afterwards, their text in *out and *err).  A
+ * non-negative `kill_after` sends SIGKILL once the process has used that
+ * much CPU time.  Returns the exit status, or 128 + signal.
+ */
+static int run_program(const char *program, const char *dir,
+                       const char *const *args, double kill_after,
+                       rlim_t file_size_limit, char **out, char **err)
+{
+    char *out_path = join(dir, "..stdout"), *err_path = join(dir, "..stderr");
+    fflush(NULL);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        if (chdir(dir) != 0)
+            _exit(126);
+        int o = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int e = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0)
+            _exit(126);
+        if (file_size_limit != RLIM_INFINITY) {
+            signal(SIGXFSZ, SIG_IGN);
+            struct rlimit limit = {file_size_limit, file_size_limit};
+            if (setrlimit(RLIMIT_FSIZE, &limit) != 0)
+                _exit(126);
+        }
+        char *argv[16];
+        int argc = 0;
+        argv[argc++] = (char *)program;
+        for (int i = 0; args[i] && argc < 15; i++)
+            argv[argc++] = (char *)args[i];
+        argv[argc] = NULL;
+        execv(program, argv);
+        _exit(127);
+    }
+    int status;
+    if (kill_after >= 0) {
+        char stat_path[64];
+        snprintf(stat_path, sizeof stat_path, "/proc/%d/stat", (int)pid);
+        long ticks = sysconf(_SC_CLK_TCK);
+        double start = now_seconds();
+        for (;;) {
+            if (waitpid(pid, &status, WNOHANG) == pid)
+                goto finished;
+            FILE *file = fopen(stat_path, "r");
+            unsigned long user = 0, system = 0;
+            if (file != NULL) {
+                /* fields 14 and 15; the name (2) is in parentheses */
+                char line[1024];
+                if (fgets(line, sizeof line, file)) {
+                    char *p = strrchr(line, ')');
+                    if (p == NULL ||
+                        sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u "
+                                      "%*u %*u %lu %lu", &user, &system) != 2)
+                        user = system = 0;
+                }
+                fclose(file);
+            }
+            double cpu = (double)(user + system) / (double)ticks;
+            if (cpu >= kill_after || now_seconds() - start > 30)
+                break;
+            struct timespec pause = {0, 5000000};
+            nanosleep(&pause, NULL);
+        }
+        kill(pid, SIGKILL);
+    }
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+finished:
+    *out = rt_test_read_file(out_path, NULL);
+    *err = rt_test_read_file(err_path, NULL);
+    ck_assert_ptr_nonnull(*out);
+    ck_assert_ptr_nonnull(*err);
+    unlink(out_path);
+    unlink(err_path);
+    free(out_path);
+    free(err_path);
+    return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
+}
+
+static int run_export(const char *dir, const char *const *args,
+                      double kill_after, rlim_t file_size_limit, char **out,
+                      char **err)
+{
+    return run_program(RT_EXPORT_PATH, dir, args, kill_after,
+                       file_size_limit, out, err);
+}
+
+START_TEST(export_refuses_to_write_over_its_own_scene)
+{
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "scene.scn");
+    write_bytes(scene, small_scene, strlen(small_scene));
+    char *out, *err;
+    /* the same file by its name, another spelling, and a symbolic link */
+    const char *outputs[] = {"scene.scn", "./scene.scn", "link.scn"};
+    char *link_path = join(dir, "link.scn");
+    ck_assert_int_eq(symlink("scene.scn", link_path), 0);
+    for (int i = 0; i < 3; i++) {
+        const char *args[] = {"scene.scn", "-o", outputs[i], "--format",
+                              "p6", "-q", NULL};
+        int code = run_export(dir, args, -1, RLIM_INFINITY, &out, &err);
+        ck_assert_int_eq(code, 1);
+        char expected[256];
+        snprintf(expected, sizeof expected,
+                 "rt-export: %s: refusing to write the image over the scene "
+                 "it was rendered from\n", outputs[i]);
+        ck_assert_str_eq(err, expected);
+        ck_assert_str_eq(out, "");
+        free(out);
+        free(err);
+        size_t size;
+        char *data = rt_test_read_file(scene, &size);
+        ck_assert_str_eq(data, small_scene);
+        free(data);
+        assert_dir_holds(dir, "link.scn scene.scn");
+    }
+    free(link_path);
+    free(scene);
+    remove_dir(dir);
+}
+END_TEST
+
+START_TEST(export_exit_codes_say_what_went_wrong)
+{
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "scene.scn");
+    write_bytes(scene, small_scene, strlen(small_scene));
+    char *bad = join(dir, "bad.scn");
+    write_bytes(bad, "0 0 10\n0 0 5 4 0 5 8 8\n3\n", 25);
+    char *out, *err;
+    struct {
+        const char *args[6];
+        int code;
+        const char *message;
+    } cases[] = {
+        {{"bad.scn", "-q", NULL}, 1,
+         "rt-export: bad.scn:3:1: expected a vertex count of at most 0 (the "
+         "lines left in the file), found `3`\n"},
+        {{"absent.scn", NULL}, 1,
+         "rt-export: absent.scn: cannot open: No such file or directory\n"},
+        {{"scene.scn", "-o", "no/such/dir/x.ppm", "-q", NULL}, 1,
+         "rt-export: no/such/dir/x.ppm: cannot write the image: the "
+         "folder no/such/dir/ does not exist\n"},
+        {{"scene.scn", "--depth", "-1", NULL}, 2,
+         "rt-export: --depth: expected an integer in 0..1000000, found "
+         "'-1'\n"
+         "Try 'rt-export --help'.\n"},
+        {{NULL}, 2,
+         "rt-export: expected a scene file\nTry 'rt-export --help'.\n"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        int code = run_export(dir, cases[i].args, -1, RLIM_INFINITY, &out,
+                              &err);
+        ck_assert_msg(code == cases[i].code, "case %zu: exit %d, expected %d",
+                      i, code, cases[i].code);
+        ck_assert_str_eq(err, cases[i].message);
+        ck_assert_str_eq(out, "");
+        free(out);
+        free(err);
+    }
+    assert_dir_holds(dir, "bad.scn scene.scn");
+    free(bad);
+    free(scene);
+    remove_dir(dir);
+}
+END_TEST
+
+START_TEST(export_that_cannot_write_keeps_the_previous_image)
+{
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "scene.scn");
+    write_bytes(scene, small_scene, strlen(small_scene));
+    char *image = join(dir, "out.ppm");
+    write_bytes(image, previous_ppm, sizeof previous_ppm - 1);
+    char *out, *err;
+    /* the 40 x 30 P3 image is about 10 KB: a 2 KB limit stops it */
+    const char *args[] = {"scene.scn", "-o", "out.ppm", "--format", "p3",
+                          NULL};
+    int code = run_export(dir, args, -1, 2048, &out, &err);
+    ck_assert_int_eq(code, 1);
+    ck_assert_str_eq(err, "rt-export: out.ppm: cannot write the image: File "
+                          "too large\n");
+    ck_assert_str_eq(out, "");
+    free(out);
+    free(err);
+    assert_previous_intact(image);
+    assert_dir_holds(dir, "out.ppm scene.scn");
+    free(image);
+    free(scene);
+    remove_dir(dir);
+}
+END_TEST
+
+/* A scene that takes seconds to render: a wide image of many reflective
+ * facets facing the camera. */
+static char *slow_scene(void)
+{
+    int facets = 3000;
+    size_t capacity = 256 + (size_t)facets * 120;
+    char *text = malloc(capacity);
+    ck_assert_ptr_nonnull(text);
+    size_t n = (size_t)sprintf(text, "0 0 10\n0 0 5 4 0 5 2048 2048\n%d\n",
+                               facets * 3);
+    for (int i = 0; i < facets; i++) {
+        double x = -8.0 + 16.0 * (double)(i % 60) / 60.0;
+        double y = -8.0 + 16.0 * (double)(i / 60) / 50.0;
+        double z = -(double)(i % 7) * 0.1;
+        n += (size_t)sprintf(text + n, "%g %g %g\n%g %g %g\n%g %g %g\n", x,
+                             y, z, x + 0.5, y, z + 0.2, x, y + 0.5, z - 0.2);
+    }
+    n += (size_t)sprintf(text + n, "%d\n", facets);
+    for (int i = 0; i < facets; i++)
+        n += (size_t)sprintf(text + n, "%d %d %d 0.5 200 150 100\n",
+                             3 * i + 1, 3 * i + 2, 3 * i + 3);
+    sprintf(text + n, "20 20 20\n0 0 20 255 255 255\n");
+    return text;
+}
+
+START_TEST(export_killed_mid_render_keeps_the_previous_image)
+{
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "slow.scn");
+    char *text = slow_scene();
+    write_bytes(scene, text, strlen(text));
+    free(text);
+    char *image = join(dir, "out.ppm");
+    write_bytes(image, previous_ppm, sizeof previous_ppm - 1);
+    char *out, *err;
+    const char *args[] = {"slow.scn", "-o", "out.ppm", "-q", NULL};
+    int code = run_export(dir, args, 0.3, RLIM_INFINITY, &out, &err);
+    ck_assert_msg(code == 128 + SIGKILL,
+                  "rt-export finished (exit %d) before it was killed: the "
+                  "scene is not slow enough; stderr: %s", code, err);
+    free(out);
+    free(err);
+    assert_previous_intact(image);
+    assert_dir_holds(dir, "out.ppm slow.scn");
+    free(image);
+    free(scene);
+    remove_dir(dir);
+}
+END_TEST
+
+/*
+ * rt-bench's files (two CSV files and an SVG plot) follow the same rule as
+ * images: a run that cannot write them leaves the previous ones whole.
+ */
+START_TEST(bench_that_cannot_write_keeps_the_previous_files)
+{
+#ifndef RT_BENCH_PATH
+    fprintf(stderr, "test_hostile_export: rt-bench is not built; skipped\n");
+#else
+    char *dir = make_temp_dir();
+    char *scene = join(dir, "scene.scn");
+    write_bytes(scene, small_scene, strlen(small_scene));
+    const char *args[] = {"scene.scn", "--size", "16x12", "--runs", "5",
+                          "--ref-samples", "16", "--max-samples", "4",
+                          "--threads", "1", "-q", NULL};
+    char *out, *err;
+    int code = run_program(RT_BENCH_PATH, dir, args, -1, RLIM_INFINITY, &out,
+                           &err);
+    ck_assert_msg(code == 0, "rt-bench failed (%d): %s", code, err);
+    free(out);
+    free(err);
+    static const char *const files[] = {"accuracy-scene-16x12.csv",
+                                        "accuracy-scene-16x12-depth.csv",
+                                        "accuracy-scene-16x12.svg"};
+    char *before[3];
+    size_t sizes[3];
+    for (int i = 0; i < 3; i++) {
+        char *path = join(dir, files[i]);
+        before[i] = rt_test_read_file(path, &sizes[i]);
+        ck_assert_msg(before[i] != NULL, "rt-bench wrote no %s", files[i]);
+        free(path);
+    }
+    char *listing = list_dir(dir);
+    /* every file is larger than 100 bytes: a 100-byte limit fails each
+     * write; then one that lets the small depth CSV through */
+    rlim_t limits[2] = {100, 1024};
+    for (int l = 0; l < 2; l++) {
+        code = run_program(RT_BENCH_PATH, dir, args, -1, limits[l], &out,
+                           &err);
+        ck_assert_msg(code == 1, "rt-bench exit %d with a %d-byte file "
+                      "limit, expected 1", code, (int)limits[l]);
+        for (int i = 0; i < 3; i++) {
+            char *path = join(dir, files[i]);
+            size_t size;
+            char *now = rt_test_read_file(path, &size);
+            ck_assert_msg(now != NULL && size == sizes[i] &&
+                              memcmp(now, before[i], size) == 0,
+                          "%s was changed by a run that failed to write "
+                          "(%zu bytes, was %zu)", files[i],
+                          now ? size : 0, sizes[i]);
+            free(now);
+            free(path);
+        }
+        char *names = list_dir(dir);
+        ck_assert_msg(strcmp(names, listing) == 0,
+                      "the directory holds `%s`, was `%s`", names, listing);
+        free(names);
+        ck_assert_msg(strstr(err, "File too large") != NULL,
+                      "the message does not say why: %s", err);
+        free(out);
+        free(err);
+    }
+    free(listing);
+    for (int i = 0; i < 3; i++)
+        free(before[i]);
+    free(scene);
+    remove_dir(dir);
+#endif
+}
+
+static Suite *hostile_export_suite(void)
+{
+    Suite *s = suite_create("hostile_export");
+    TCase *tc = tcase_create("rt-export");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, export_refuses_to_write_over_its_own_scene);
+    tcase_add_test(tc, export_exit_codes_say_what_went_wrong);
+    tcase_add_test(tc, export_that_cannot_write_keeps_the_previous_image);
+    tcase_add_test(tc, export_killed_mid_render_keeps_the_previous_image);
+    tcase_add_test(tc, bench_that_cannot_write_keeps_the_previous_files);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+RT_CHECK_MAIN(hostile_export_suite)
