@@ -1,4 +1,4 @@
-# rt-view, the SDL2 viewer (issue 4).
+# rt-view, the SDL2 viewer.
 #
 # RAYTRACE_VIEWER: AUTO builds it when SDL2 is found, ON requires SDL2, OFF
 # skips it.  SDL2 comes from the system: its CMake package (Debian's
@@ -49,7 +49,7 @@ elseif(_rt_viewer_mode STREQUAL "ON")
     "nor pkg-config's sdl2).  Install SDL2's development files "
     "(Debian/Ubuntu: apt-get install libsdl2-dev), point SDL2_DIR at "
     "sdl2-config.cmake, or configure with -DRAYTRACE_VIEWER=OFF.")
-elseif(_rt_viewer_mode STREQUAL "AUTO")
+elseif(_rt_viewer_mode STREQUAL "AUTO" AND RAYTRACE_TOP_LEVEL)
   message(STATUS "viewer disabled: SDL2 not found")
 endif()
 add_feature_info(rt-view RAYTRACE_VIEWER_ENABLED
@@ -65,16 +65,9 @@ if(RAYTRACE_VIEWER_ENABLED)
     viewer/view_window.c)
   target_include_directories(raytrace_viewer PUBLIC
     "${CMAKE_CURRENT_SOURCE_DIR}/viewer")
-  target_compile_definitions(raytrace_viewer PRIVATE _POSIX_C_SOURCE=200809L)
-  find_library(RAYTRACE_VIEWER_LIBM m)
   target_link_libraries(raytrace_viewer PUBLIC raytrace::raytrace
-    ${RAYTRACE_SDL2_TARGET} Threads::Threads
-    $<$<BOOL:${RAYTRACE_VIEWER_LIBM}>:${RAYTRACE_VIEWER_LIBM}>)
+    ${RAYTRACE_SDL2_TARGET} Threads::Threads)
   raytrace_set_warnings(raytrace_viewer)
 
-  add_executable(rt-view rt-view.c)
-  target_link_libraries(rt-view PRIVATE raytrace_viewer raytrace_cli)
-  target_compile_definitions(rt-view PRIVATE _POSIX_C_SOURCE=200809L)
-  raytrace_set_warnings(rt-view)
-  install(TARGETS rt-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  raytrace_add_program(rt-view rt-view.c LIBS raytrace_viewer raytrace_cli)
 endif()

@@ -1,8 +1,8 @@
 # Install rules: the library, its public headers, the exported CMake package
 # (find_package(raytrace) -> raytrace::raytrace) and raytrace.pc.
 #
-# Included at the end of the top-level CMakeLists.txt, after every
-# add_subdirectory, so that other libraries of the project can join the same
+# Included at the end of the top-level CMakeLists.txt when RAYTRACE_INSTALL
+# is on (by default only at the top level), after every add_subdirectory, so that other libraries of the project can join the same
 # export set with install(TARGETS <lib> EXPORT raytraceTargets ...): this file
 # installs that set, once, under the namespace raytrace::.
 #
@@ -10,6 +10,8 @@
 #   lib/libraytrace.{a,so*}            include/raytrace/*.h (+ version.h)
 #   lib/cmake/raytrace/raytrace{Config,ConfigVersion,Targets*}.cmake
 #   lib/pkgconfig/raytrace.pc          (relocatable: paths from ${pcfiledir})
+#   share/doc/raytrace/LICENSE         share/man/man1/rt-export.1, rt-view.1
+#   share/raytrace/scenes/            bin/rt-export ... (RAYTRACE_APPS)
 include(CMakePackageConfigHelpers)
 
 set(RAYTRACE_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/raytrace"
@@ -62,25 +64,33 @@ install(FILES
   "${PROJECT_BINARY_DIR}/raytraceConfigVersion.cmake"
   DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")
 
-# raytrace.pc finds the prefix from its own place (${pcfiledir}), so that a
-# tree installed with `cmake --install build --prefix DIR`, or moved, still
-# works.  Absolute install directories are written as they are.
-set(RAYTRACE_PC_DIR "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
-if(IS_ABSOLUTE "${RAYTRACE_PC_DIR}")
-  set(RAYTRACE_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+# raytrace.pc (relocatable, cmake/RaytracePkgConfig.cmake).  What a program
+# needs after -lraytrace: a shared libraytrace brings libm, threads and
+# libpng itself, so they are private; a static one needs them on the link
+# line, and `pkg-config --libs` without --static reads only Libs and
+# Requires, so there they are public.
+if(BUILD_SHARED_LIBS)
+  set(RAYTRACE_PC_REQUIRES "")
+  set(RAYTRACE_PC_LIBS "")
+  set(RAYTRACE_PC_LIBS_PRIVATE "-lm -pthread")
 else()
-  file(RELATIVE_PATH RAYTRACE_PC_UP "/prefix/${RAYTRACE_PC_DIR}" "/prefix")
-  string(REGEX REPLACE "/$" "" RAYTRACE_PC_UP "${RAYTRACE_PC_UP}")
-  set(RAYTRACE_PC_PREFIX "\${pcfiledir}/${RAYTRACE_PC_UP}")
+  set(RAYTRACE_PC_REQUIRES "${RAYTRACE_PC_REQUIRES_PRIVATE}")
+  set(RAYTRACE_PC_REQUIRES_PRIVATE "")
+  set(RAYTRACE_PC_LIBS " -lm -pthread")
+  set(RAYTRACE_PC_LIBS_PRIVATE "")
 endif()
-foreach(dir LIBDIR INCLUDEDIR)
-  if(IS_ABSOLUTE "${CMAKE_INSTALL_${dir}}")
-    set(RAYTRACE_PC_${dir} "${CMAKE_INSTALL_${dir}}")
-  else()
-    set(RAYTRACE_PC_${dir} "\${prefix}/${CMAKE_INSTALL_${dir}}")
+raytrace_install_pkgconfig(raytrace "${PROJECT_SOURCE_DIR}/cmake/raytrace.pc.in")
+
+# The package: the licence, the programs' manual pages, the scenes.
+install(FILES "${PROJECT_SOURCE_DIR}/LICENSE"
+  DESTINATION "${CMAKE_INSTALL_DOCDIR}")
+if(RAYTRACE_APPS)
+  install(FILES "${PROJECT_SOURCE_DIR}/man/rt-export.1"
+    DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+  if(TARGET raytrace_rt_view)
+    install(FILES "${PROJECT_SOURCE_DIR}/man/rt-view.1"
+      DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
   endif()
-endforeach()
-configure_file("${PROJECT_SOURCE_DIR}/cmake/raytrace.pc.in"
-               "${PROJECT_BINARY_DIR}/raytrace.pc" @ONLY)
-install(FILES "${PROJECT_BINARY_DIR}/raytrace.pc"
-  DESTINATION "${RAYTRACE_PC_DIR}")
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/scenes/"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/raytrace/scenes")
+endif()

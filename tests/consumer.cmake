@@ -1,8 +1,12 @@
-# The installed package, as its users see it (tests/consumer/): install this
-# build into a fresh prefix under the build tree, then build and run a small
-# program against it with find_package(raytrace) and with pkg-config; and
-# keep README.md's example identical to tests/consumer/example.c, which is
-# compiled and run here.  Steps: tests/consumer/steps.cmake.
+# libraytrace as its users see it (tests/consumer/): install this build into
+# a fresh prefix under the build tree, then build and run a small program
+# against it with find_package(raytrace) and with the plain pkg-config
+# line; embed the source tree in a parent project with add_subdirectory and
+# with FetchContent; build it shared, install it into a prefix and run its
+# programs from there; and keep README.md's example identical to
+# tests/consumer/example.c, which is compiled and run here.  Steps:
+# tests/consumer/steps.cmake.  Labelled consumer: they build and link
+# without the sanitizers, so .ci/sanitize and .ci/memcheck leave them out.
 set(RT_CONSUMER_STEPS "${CMAKE_CURRENT_SOURCE_DIR}/consumer/steps.cmake")
 set(RT_CONSUMER_ARGS
   "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
@@ -12,7 +16,8 @@ set(RT_CONSUMER_ARGS
   "-DCONFIG=$<CONFIG>"
   "-DGENERATOR=${CMAKE_GENERATOR}"
   "-DC_COMPILER=${CMAKE_C_COMPILER}"
-  "-DPKG_CONFIG=${PKG_CONFIG_EXECUTABLE}")
+  "-DPKG_CONFIG=${PKG_CONFIG_EXECUTABLE}"
+  "-DNM=${CMAKE_NM}")
 
 function(raytrace_add_consumer_test name step)
   add_test(NAME ${name} COMMAND "${CMAKE_COMMAND}" ${RT_CONSUMER_ARGS}
@@ -30,6 +35,25 @@ raytrace_add_consumer_test(readme_example_renders_one_facet_scene example
   FIXTURES_REQUIRED consumer_built)
 raytrace_add_consumer_test(readme_example_is_tests_consumer_example_c readme)
 if(PKG_CONFIG_EXECUTABLE)
-  raytrace_add_consumer_test(pkg_config_consumer_builds_and_renders
+  raytrace_add_consumer_test(pkg_config_plain_line_builds_and_renders
     pkg-config FIXTURES_REQUIRED raytrace_installed)
+endif()
+
+# A parent project with its own test_parse and no build type.
+raytrace_add_consumer_test(add_subdirectory_parent_gets_only_the_libraries
+  subdirectory)
+raytrace_add_consumer_test(fetchcontent_parent_gets_only_the_libraries
+  fetchcontent)
+
+# A shared build in a prefix of its own.
+raytrace_add_consumer_test(shared_build_installs_into_a_prefix shared-install
+  FIXTURES_SETUP raytrace_shared_installed)
+raytrace_add_consumer_test(shared_build_programs_run_from_a_moved_prefix
+  shared-run FIXTURES_REQUIRED raytrace_shared_installed)
+raytrace_add_consumer_test(shared_library_exports_only_the_rt_api
+  shared-symbols FIXTURES_REQUIRED raytrace_shared_installed
+  SKIP_REGULAR_EXPRESSION "CONSUMER-SKIP: ")
+if(PKG_CONFIG_EXECUTABLE)
+  raytrace_add_consumer_test(shared_build_pkg_config_plain_line_links
+    shared-pkg-config FIXTURES_REQUIRED raytrace_shared_installed)
 endif()

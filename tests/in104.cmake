@@ -1,4 +1,4 @@
-# The course's API (issue 3): the Check suites of the in104 layer, the
+# The course's API: the Check suites of the in104 layer, the
 # student-style program built with the course's warning flags, and the same
 # program compiled with the plain command line a student would type.
 
@@ -8,13 +8,15 @@ raytrace_add_shared_test(test_in104_scene)
 
 # in104_student.c uses nothing but the handout's headers and standard C; its
 # exit status is its number of failed checks.
-add_executable(in104_student in104_student.c)
-target_link_libraries(in104_student PRIVATE raytrace::in104)
+add_executable(raytrace_in104_student in104_student.c)
+set_target_properties(raytrace_in104_student PROPERTIES
+  OUTPUT_NAME in104_student)
+target_link_libraries(raytrace_in104_student PRIVATE raytrace::in104)
 if(CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
-  target_compile_options(in104_student PRIVATE -Wall -Wextra -Werror)
+  target_compile_options(raytrace_in104_student PRIVATE -Wall -Wextra -Werror)
 endif()
 add_test(NAME in104_student_program_gets_the_spec_results
-         COMMAND in104_student "${PROJECT_SOURCE_DIR}/scenes/cubes.scn"
+         COMMAND raytrace_in104_student "${PROJECT_SOURCE_DIR}/scenes/cubes.scn"
          WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
 
 # The plain command line of docs/in104.md, against the build tree:
@@ -48,46 +50,49 @@ cd "$workdir" && "$program"
 endif()
 
 # The example program of apps/ renders a scene, and fails on a bad one.
-if(TARGET in104-render)
+if(TARGET raytrace_in104_render)
   add_test(NAME in104_render_example_renders_a_scene
-           COMMAND in104-render "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn"
+           COMMAND raytrace_in104_render "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn"
                    in104-render-one-facet.ppm
            WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
   add_test(NAME in104_render_example_fails_on_a_missing_scene
-           COMMAND in104-render no-such-scene.scn
+           COMMAND raytrace_in104_render no-such-scene.scn
            WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
   set_tests_properties(in104_render_example_fails_on_a_missing_scene
                        PROPERTIES WILL_FAIL TRUE)
 endif()
 
-# The course's libutil (issue 18): splitLine and fastInvSqrt.
+# The course's libutil: splitLine and fastInvSqrt.
 raytrace_add_suite(test_in104_util LIBS raytrace::util)
 
 # kit_ppm: the image checks of the kit's tests (here and tests/kit.cmake).
-add_executable(kit_ppm kit_ppm.c)
-raytrace_set_warnings(kit_ppm)
+add_executable(raytrace_kit_ppm kit_ppm.c)
+set_target_properties(raytrace_kit_ppm PROPERTIES OUTPUT_NAME kit_ppm)
+raytrace_set_warnings(raytrace_kit_ppm)
 
-# The course's libimgsdl (issue 18), when SDL2 is found: a tests_imgsdl-style
+# The course's libimgsdl, when SDL2 is found: a tests_imgsdl-style
 # program whose main() is the library's, on SDL's dummy video driver.
 if(TARGET raytrace::imgsdl)
-  add_executable(in104_imgsdl_student in104_imgsdl_student.c)
-  target_link_libraries(in104_imgsdl_student PRIVATE raytrace::imgsdl)
-  raytrace_set_warnings(in104_imgsdl_student)
+  add_executable(raytrace_in104_imgsdl_student in104_imgsdl_student.c)
+  set_target_properties(raytrace_in104_imgsdl_student PROPERTIES
+    OUTPUT_NAME in104_imgsdl_student)
+  target_link_libraries(raytrace_in104_imgsdl_student PRIVATE raytrace::imgsdl)
+  raytrace_set_warnings(raytrace_in104_imgsdl_student)
   set(imgsdl_env SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy)
   set(imgsdl_out "${CMAKE_CURRENT_BINARY_DIR}/imgsdl-gradient.ppm")
   add_test(NAME imgsdl_main_draws_the_scene_and_writes_IMGSDL_OUTPUT
-           COMMAND in104_imgsdl_student "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn")
+           COMMAND raytrace_in104_imgsdl_student "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn")
   set_tests_properties(imgsdl_main_draws_the_scene_and_writes_IMGSDL_OUTPUT
     PROPERTIES ENVIRONMENT "${imgsdl_env};IMGSDL_OUTPUT=${imgsdl_out}"
                FIXTURES_SETUP imgsdl_drawn)
   add_test(NAME imgsdl_output_is_the_picture_traceSDLScene_drew
-           COMMAND kit_ppm gradient "${imgsdl_out}" 40 30)
+           COMMAND raytrace_kit_ppm gradient "${imgsdl_out}" 40 30)
   set_tests_properties(imgsdl_output_is_the_picture_traceSDLScene_drew
     PROPERTIES FIXTURES_REQUIRED imgsdl_drawn)
   add_test(NAME imgsdl_main_without_a_scene_prints_its_usage
-           COMMAND in104_imgsdl_student)
+           COMMAND raytrace_in104_imgsdl_student)
   add_test(NAME imgsdl_main_stops_when_parse_fails
-           COMMAND in104_imgsdl_student no-such-scene.scn)
+           COMMAND raytrace_in104_imgsdl_student no-such-scene.scn)
   set_tests_properties(imgsdl_main_without_a_scene_prints_its_usage
     PROPERTIES ENVIRONMENT "${imgsdl_env}"
                PASS_REGULAR_EXPRESSION "usage: [^\n]* SCENE\\.scn")

@@ -1,4 +1,4 @@
-# The course's whole kit (issue 18): a student project written in the
+# The course's whole kit: a student project written in the
 # course's layout (tests/student/: its own src/, include/, tests/ and a
 # course-style Makefile) is built with make against the libraries
 # installed in a fresh prefix, as a student would: `make all`, `make
@@ -24,7 +24,7 @@ function(raytrace_add_kit_test name step)
     "-DLIBDIR=${CMAKE_INSTALL_LIBDIR}"
     "-DWORK_DIR=${RT_KIT_DIR}"
     "-DC_COMPILER=${CMAKE_C_COMPILER}"
-    "-DKIT_PPM=$<TARGET_FILE:kit_ppm>"
+    "-DKIT_PPM=$<TARGET_FILE:raytrace_kit_ppm>"
     "-DPKG_CONFIG=${PKG_CONFIG_EXECUTABLE}"
     "-DGENERATOR=${CMAKE_GENERATOR}"
     -DSTEP=${step} -P "${CMAKE_CURRENT_SOURCE_DIR}/kit_steps.cmake")

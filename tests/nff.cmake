@@ -1,5 +1,5 @@
 # The NFF reader and the tessellation of its spheres, cones and polygons
-# (issue 15), tests/test_nff.c.  Included from tests/CMakeLists.txt.  The
+# tests/test_nff.c.  Included from tests/CMakeLists.txt.  The
 # SPD scenes of ../shared/formats are loaded when ../shared is there (the
 # test prints that it skipped them otherwise).
 raytrace_add_suite(test_nff)

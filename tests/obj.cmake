@@ -1,4 +1,4 @@
-# The Wavefront OBJ reader (issue 15): index forms, triangulation,
+# The Wavefront OBJ reader: index forms, triangulation,
 # materials, the automatic camera, refusals.  Included from
 # tests/CMakeLists.txt, which defines raytrace_add_suite().
 raytrace_add_suite(test_obj)

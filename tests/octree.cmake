@@ -1,12 +1,9 @@
-# The octree against brute force (issue 12).  Included from
+# The octree against brute force.  Included from
 # tests/CMakeLists.txt; uses the benchmark's scene generators.  The scenes
 # of ../shared get their own entry, skipped (exit 77) when it is absent.
 raytrace_add_suite(test_octree
   SOURCES "${PROJECT_SOURCE_DIR}/bench/bench_scenes.c")
-target_include_directories(test_octree PRIVATE "${PROJECT_SOURCE_DIR}/bench")
-find_library(RAYTRACE_OCTREE_TEST_LIBM m)
-if(RAYTRACE_OCTREE_TEST_LIBM)
-  target_link_libraries(test_octree PRIVATE ${RAYTRACE_OCTREE_TEST_LIBM})
-endif()
+target_include_directories(raytrace_test_octree PRIVATE
+  "${PROJECT_SOURCE_DIR}/bench")
 set_tests_properties(test_octree PROPERTIES TIMEOUT 900)
 raytrace_add_shared_test(test_octree TIMEOUT 900)

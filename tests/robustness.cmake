@@ -16,9 +16,11 @@ if(RAYTRACE_ROBUST_LIBM)
   target_link_libraries(raytrace_robust PUBLIC m)
 endif()
 
-add_executable(robustness-report robust/robustness_report.c)
-target_link_libraries(robustness-report PRIVATE raytrace_robust)
-raytrace_set_warnings(robustness-report)
+add_executable(raytrace_robustness_report robust/robustness_report.c)
+set_target_properties(raytrace_robustness_report PROPERTIES
+  OUTPUT_NAME robustness-report)
+target_link_libraries(raytrace_robustness_report PRIVATE raytrace_robust)
+raytrace_set_warnings(raytrace_robustness_report)
 
 # One suite, tests/test_robust.c, a table of groups: each group is a ctest
 # entry of its own (test_robust_<group>, label robustness), run with the
@@ -42,7 +44,7 @@ foreach(group
     if(accel STREQUAL "octree")
       string(APPEND name _octree)
     endif()
-    add_test(NAME ${name} COMMAND test_robust ${group}
+    add_test(NAME ${name} COMMAND raytrace_test_robust ${group}
              WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
     set_tests_properties(${name} PROPERTIES LABELS robustness TIMEOUT 300
                          ENVIRONMENT RT_TEST_ACCEL=${accel})

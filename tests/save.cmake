@@ -1,4 +1,4 @@
-# rt_image_save, rt_image_save_check and the image formats (issue 11),
+# rt_image_save, rt_image_save_check and the image formats,
 # tests/test_save.c.  test_save runs what any user can check;
 # test_save_privileged runs the same program with the argument `privileged`:
 # the cases that need root in a private mount namespace (a /dev of its own,
@@ -8,14 +8,14 @@ raytrace_add_suite(test_save)
 # The PNG round trip decodes with libpng, when the library was built with it
 # (PNG::PNG is made a global imported target in src/CMakeLists.txt).
 if(RAYTRACE_HAVE_PNG AND TARGET PNG::PNG)
-  target_link_libraries(test_save PRIVATE PNG::PNG)
-  target_compile_definitions(test_save PRIVATE RT_TEST_HAVE_LIBPNG=1)
+  target_link_libraries(raytrace_test_save PRIVATE PNG::PNG)
+  target_compile_definitions(raytrace_test_save PRIVATE RT_TEST_HAVE_LIBPNG=1)
 else()
-  target_compile_definitions(test_save PRIVATE RT_TEST_HAVE_LIBPNG=0)
+  target_compile_definitions(raytrace_test_save PRIVATE RT_TEST_HAVE_LIBPNG=0)
 endif()
 set_tests_properties(test_save PROPERTIES TIMEOUT 600)
 
-add_test(NAME test_save_privileged COMMAND test_save privileged
+add_test(NAME test_save_privileged COMMAND raytrace_test_save privileged
          WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
 set_tests_properties(test_save_privileged PROPERTIES
   SKIP_RETURN_CODE 77

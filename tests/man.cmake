@@ -1,0 +1,23 @@
+# The manual pages of man/: each renders without a warning from groff, and
+# names every long option its program's --help lists, so that page and
+# program cannot drift apart (tests/man_check.cmake).  Without groff
+# (Debian: groff-base, which .ci/install-deps installs) the rendering check
+# is a visible skip.
+foreach(program rt-export rt-view)
+  string(REPLACE "-" "_" target "raytrace_${program}")
+  if(NOT TARGET ${target})
+    continue()
+  endif()
+  string(REPLACE "-" "_" name "man_page_${program}")
+  add_test(NAME ${name}_names_every_option_of_its_help
+    COMMAND "${CMAKE_COMMAND}" -DSTEP=options
+            "-DPROGRAM=$<TARGET_FILE:${target}>"
+            "-DPAGE=${PROJECT_SOURCE_DIR}/man/${program}.1"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
+  add_test(NAME ${name}_renders_without_warnings
+    COMMAND "${CMAKE_COMMAND}" -DSTEP=render
+            "-DPAGE=${PROJECT_SOURCE_DIR}/man/${program}.1"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
+  set_tests_properties(${name}_renders_without_warnings PROPERTIES
+    SKIP_REGULAR_EXPRESSION "MAN-SKIP: ")
+endforeach()
