@@ -50,7 +50,8 @@ static const cli_program program = {
     "the others, the bands of rows go to whichever rank is free, each rank\n"
     "renders with all its cores (-j), and rank 0 saves the image - byte for\n"
     "byte the one rt-export writes - and prints its path.  SCENE `-' reads\n"
-    "rank 0's standard input (then -o is needed).  --stats adds a line a\n"
+    "rank 0's standard input (then -o is needed); -o - is refused (mpirun\n"
+    "passes standard output through a terminal).  --stats adds a line a\n"
     "rank: its bands, rows and busy time, and the imbalance.",
     "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage; a\n"
     "rank that dies ends the job, and no image is written.",
@@ -141,8 +142,7 @@ typedef struct plan {
     scene_text text;
     rt_scene *scene;
     char *default_path;         /* allocated when -o was not given */
-    const char *output;         /* where the image goes; "-": stdout */
-    int to_stdout;
+    const char *output;         /* where the image goes */
     double load_seconds;
 } plan;
 
@@ -153,22 +153,20 @@ static int prepare(cli_settings *s, plan *p)
 {
     rt_error error;
     const char *path = s->operands[0];
-    p->to_stdout = s->output != NULL && !strcmp(s->output, "-");
+    /* mpirun hands rank 0 a pseudo-terminal for its standard output,
+     * whose line discipline may turn \n into \r\n: no image goes there */
+    if (s->output != NULL && !strcmp(s->output, "-"))
+        return cli_usage_error(&program, "-o -: the image cannot go to "
+                               "standard output under MPI (mpirun passes it "
+                               "through a terminal); name a file");
     if (!strcmp(path, "-") && s->output == NULL)
-        return cli_usage_error(&program, "expected -o OUT (or -o - for "
-                               "standard output) with a scene read from "
-                               "standard input");
+        return cli_usage_error(&program, "expected -o OUT with a scene "
+                               "read from standard input");
     if (!rt_image_format_supported(s->format)) {
         fprintf(stderr, "rt-export-mpi: cannot write %s: this build has no "
                         "PNG support (it was built without libpng); use "
                         "--format p6 or p3\n", s->output ? s->output : "PNG");
         return EXIT_BAD_INPUT;
-    }
-    if (p->to_stdout && s->format != RT_IMAGE_P3 && isatty(STDOUT_FILENO)) {
-        fprintf(stderr, "rt-export-mpi: refusing to write a binary image to "
-                        "a terminal; redirect standard output, or use "
-                        "--format p3\n");
-        return CLI_EXIT_USAGE;
     }
     struct timespec start;
     clock_gettime(CLOCK_MONOTONIC, &start);
@@ -192,7 +190,7 @@ static int prepare(cli_settings *s, plan *p)
         fprintf(stderr, "rt-export-mpi: out of memory\n");
         return EXIT_BAD_INPUT;
     }
-    if (strcmp(path, "-") != 0 && !p->to_stdout && same_file(p->output, path)) {
+    if (strcmp(path, "-") != 0 && same_file(p->output, path)) {
         fprintf(stderr, "rt-export-mpi: %s: refusing to write the image over "
                         "the scene it was rendered from\n", p->output);
         return EXIT_BAD_INPUT;
@@ -203,7 +201,7 @@ static int prepare(cli_settings *s, plan *p)
         return code;
     if (rt_scene_check_precision(p->scene, s->render.precision, &error) !=
             RT_OK ||
-        (!p->to_stdout && rt_image_save_check(p->output, &error) != RT_OK)) {
+        rt_image_save_check(p->output, &error) != RT_OK) {
         fprintf(stderr, "rt-export-mpi: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
@@ -350,13 +348,10 @@ static int render_and_save(const farm_job *job, cli_settings *s,
     struct timespec write_start;
     clock_gettime(CLOCK_MONOTONIC, &write_start);
     rt_error error;
-    status = p->to_stdout
-                 ? rt_image_write_file(stdout, &image, s->format, &error)
-                 : rt_image_save(p->output, &image, s->format, &error);
+    status = rt_image_save(p->output, &image, s->format, &error);
     int code = EXIT_BAD_INPUT;
     if (status != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: %s%s\n",
-                p->to_stdout ? "<stdout>: " : "", error.message);
+        fprintf(stderr, "rt-export-mpi: %s\n", error.message);
     } else {
         report.write_seconds = cli_seconds_since(&write_start);
         if (s->stats != CLI_STATS_NONE)
@@ -365,8 +360,7 @@ static int render_and_save(const farm_job *job, cli_settings *s,
             cli_print_stats_text(stderr, &stats, &report);
         else if (s->stats == CLI_STATS_JSON)
             cli_print_stats_json(stderr, &stats, &report);
-        if (!p->to_stdout)
-            printf("%s\n", p->output);
+        printf("%s\n", p->output);
         code = EXIT_SUCCESS;
     }
     rt_image_release(&image);

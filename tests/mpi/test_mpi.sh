@@ -3,6 +3,7 @@
 #   test_mpi.sh exact N      -np N gives rt-export's image, byte for byte
 #   test_mpi.sh bad-scene    one message, from rank 0, naming line and
 #                            column; the job fails; no image
+#   test_mpi.sh usage        a usage error: one message, exit status 2
 #   test_mpi.sh killed-rank  kill -9 of a worker mid-render fails the job
 #                            and leaves no image and no temporary file
 # The environment gives the programs: RT_EXPORT, RT_EXPORT_MPI, MPIEXEC,
@@ -49,6 +50,13 @@ exact)
     same cubes.png "$np" "$scenes/cubes.scn" --samples 4 \
         --sampling stratified --region 37,50,201,203 -j 1
     bands=1 same glass.ppm "$np" "$scenes/glass.scn" --size 123x77 --depth 3
+    # the scene from rank 0's standard input
+    timeout 60 "${launcher[@]}" -np "$np" "$RT_EXPORT_MPI" -q - \
+        --size 90x70 -o stdin.ppm < "$scenes/cubes.scn" >/dev/null ||
+        fail "-np $np: a scene from standard input"
+    "$RT_EXPORT" -q "$scenes/cubes.scn" --size 90x70 -o ref-stdin.ppm
+    cmp -s ref-stdin.ppm stdin.ppm || fail "-np $np: standard input differs"
+    echo "ok: -np $np a scene from standard input"
     ;;
 bad-scene)
     printf '8,-8,-3\n3,-3,-1, 3,-9,0, 40,40\n3\n-1,-1,0\n1,x,0\n0,1,0\n' \
@@ -59,6 +67,19 @@ bad-scene)
     count=$(grep -c 'bad.scn:5:3:' err.txt)
     [ "$count" -eq 1 ] || fail "expected one bad.scn:5:3 message, found $count"
     [ ! -e bad.ppm ] || fail "an image was written"
+    ;;
+usage)
+    # usage errors: one message (rank 0's), exit status 2, no image
+    for args in "--depth x" "-o -" "--band-rows -1"; do
+        # shellcheck disable=SC2086
+        timeout 60 "${launcher[@]}" -np 3 "$RT_EXPORT_MPI" $args \
+            "$scenes/cubes.scn" >out.txt 2>err.txt && fail "$args exited 0"
+        count=$(grep -c '^rt-export-mpi: ' err.txt)
+        [ "$count" -eq 1 ] || { cat err.txt; fail "$args: $count messages"; }
+        grep -q "Exit code: *2" err.txt || { cat err.txt; fail "$args: not 2"; }
+        [ ! -e cubes.ppm ] || fail "$args: an image was written"
+        echo "ok: $args: $(head -n 1 err.txt)"
+    done
     ;;
 killed-rank)
     # about 20 s of work for 3 ranks on 2 cores: the kill comes long before
@@ -90,7 +111,7 @@ killed-rank)
     [ -z "$leftovers" ] || fail "left behind: $leftovers"
     ;;
 *)
-    echo "usage: test_mpi.sh exact N | bad-scene | killed-rank" >&2
+    echo "usage: test_mpi.sh exact N | bad-scene | usage | killed-rank" >&2
     exit 2
     ;;
 esac
