@@ -39,7 +39,7 @@ static int band_rows_option; /* --band-rows, 0: farm_default_band_rows */
 static const cli_option mpi_options[] = {
     {"band-rows", 0, "N", CLI_INT, 0, RT_MAX_IMAGE_SIDE, &band_rows_option,
      "rows of the image in each band handed out to a rank; 0 (the "
-     "default): about 12 bands a rank, at most 32 rows each"},
+     "default): about 32 bands a rank, at most 32 rows each"},
     {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
 };
 

@@ -15,8 +15,10 @@
 #   ALPHA   seconds of latency a message (2e-6: InfiniBand; 5e-5: TCP)
 #   BETA    bytes a second through one node's link (1e10: 100 Gb/s)
 #   CORES   cores (threads) a node; ROWS, WIDTH: the image
+#   BAND    rows a band (--band-rows); unset: rt-export-mpi's default
 # The model (docs/mpi.md says why each term):
-#   band   = min(32, max(1, ceil(ROWS / (12 P)))) rows, the default
+#   band   = BAND rows if set, else the default:
+#            min(32, max(1, ceil(ROWS / (32 P)))) rows
 #   render = ROWS T_ROW / (P CORES) + band T_ROW PEAK / CORES
 #            (dynamic scheduling: the mean, plus at most one band late;
 #            one node has no other to wait for)
@@ -30,10 +32,12 @@ set -euo pipefail
 : "${ROWS:=2160}" "${WIDTH:=3840}"
 awk -v t_row="$T_ROW" -v peak="$PEAK" -v setup="$SETUP" -v scene="$SCENE" \
     -v save="$SAVE" -v alpha="$ALPHA" -v beta="$BETA" -v cores="$CORES" \
-    -v rows="$ROWS" -v width="$WIDTH" -v nodes="${*:-1 8 64 512}" '
+    -v rows="$ROWS" -v width="$WIDTH" -v fixed_band="${BAND:-0}" \
+    -v nodes="${*:-1 8 64 512}" '
 function ceil(x) { return x == int(x) ? x : int(x) + 1 }
 function model(p,   band, bands, render, bcast, gather, t) {
-    band = ceil(rows / (12 * p)); band = band < 1 ? 1 : band > 32 ? 32 : band
+    band = ceil(rows / (32 * p)); band = band < 1 ? 1 : band > 32 ? 32 : band
+    if (fixed_band > 0) band = fixed_band
     bands = ceil(rows / band)
     render = rows * t_row / (p * cores) + (p > 1 ? band * t_row * peak / cores : 0)
     bcast = p > 1 ? ceil(log(p) / log(2)) * (alpha + scene / beta) : 0

@@ -327,7 +327,7 @@ rt_status farm_work(const farm_job *job, MPI_Comm comm)
 
 int farm_default_band_rows(int rows, int ranks)
 {
-    int bands = 12 * (ranks > 0 ? ranks : 1);
+    int bands = 32 * (ranks > 0 ? ranks : 1);
     int band_rows = (rows + bands - 1) / bands;
     return band_rows < 1 ? 1 : band_rows > 32 ? 32 : band_rows;
 }

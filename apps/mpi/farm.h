@@ -65,7 +65,7 @@ rt_status farm_serve(const farm_job *job, MPI_Comm comm, rt_image *image,
  * aborts the job. */
 rt_status farm_work(const farm_job *job, MPI_Comm comm);
 
-/* The rows a band gets when none are asked for: about 12 bands a rank,
+/* The rows a band gets when none are asked for: about 32 bands a rank,
  * between 1 and 32 rows. */
 int farm_default_band_rows(int rows, int ranks);
 
