@@ -36,18 +36,11 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     rt_render_options_init(&options);
     options.width = size->width;
     options.height = size->height;
-    rt_image image;
-    int width, height;
-    ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
-                                          NULL),
-                     RT_OK);
-    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
     options.precision = precision;
     options.kernel = kernel;
     options.threads = threads;
     options.stats = stats;
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_OK);
-    return image;
+    return rt_test_render_with(scene, &options);
 }
 
 /* Scalar on one thread is the reference; the fast kernel on 1 and 2

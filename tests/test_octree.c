@@ -43,20 +43,12 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     rt_render_options_init(&options);
     options.width = size->width;
     options.height = size->height;
-    rt_image image;
-    int width, height;
-    ck_assert_int_eq(rt_render_image_size(scene, &options, &width, &height,
-                                          NULL),
-                     RT_OK);
-    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
     options.precision = precision;
     options.accel = accel;
     options.threads = threads;
     options.samples = samples;
     options.stats = stats;
-    rt_status status = rt_render(scene, &options, &image, NULL);
-    ck_assert_int_eq(status, RT_OK);
-    return image;
+    return rt_test_render_with(scene, &options);
 }
 
 /* Brute force on one thread against the octree on 1 and 3 threads, with 1

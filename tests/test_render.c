@@ -57,17 +57,6 @@ static rt_scene *load_scene(const char *path)
     return scene;
 }
 
-static rt_image render_with(const rt_scene *scene, rt_render_options *options)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL), RT_OK);
-    rt_status status = rt_render(scene, options, &image, NULL);
-    ck_assert_msg(status == RT_OK, "render: %s", rt_status_string(status));
-    return image;
-}
-
 /* Renders scenes/<name>.scn with `samples` rays per pixel and compares it
  * with tests/expected/<expected_name>.ppm, exactly; on a mismatch says
  * where and writes the actual image beside the test. */
@@ -80,7 +69,7 @@ static void check_expected_image(const char *name, int samples,
     rt_render_options options;
     rt_render_options_init(&options);
     options.samples = samples;
-    rt_image actual = render_with(scene, &options);
+    rt_image actual = rt_test_render_with(scene, &options);
 
     snprintf(relative, sizeof relative, "tests/expected/%s.ppm",
              expected_name);
@@ -209,11 +198,11 @@ START_TEST(one_thread_and_two_threads_give_identical_images)
     rt_render_options options;
     rt_render_options_init(&options);
     options.threads = 1;
-    rt_image one = render_with(scene, &options);
+    rt_image one = rt_test_render_with(scene, &options);
     options.threads = 2;
-    rt_image two = render_with(scene, &options);
+    rt_image two = rt_test_render_with(scene, &options);
     options.threads = 7;
-    rt_image seven = render_with(scene, &options);
+    rt_image seven = rt_test_render_with(scene, &options);
     ck_assert_int_eq(memcmp(one.pixels, two.pixels,
                             one.stride * (size_t)one.height),
                      0);
@@ -233,9 +222,9 @@ START_TEST(scalar_and_automatic_kernels_give_identical_images)
     rt_render_options options;
     rt_render_options_init(&options);
     options.kernel = RT_KERNEL_SCALAR;
-    rt_image scalar = render_with(scene, &options);
+    rt_image scalar = rt_test_render_with(scene, &options);
     options.kernel = RT_KERNEL_AUTO;
-    rt_image automatic = render_with(scene, &options);
+    rt_image automatic = rt_test_render_with(scene, &options);
     int worst;
     long differing = rt_test_image_diff(&scalar, &automatic, &worst);
     ck_assert_msg(differing == 0, "%ld pixels differ (max %d)", differing,
@@ -251,7 +240,7 @@ START_TEST(two_bands_rendered_apart_equal_the_whole_render)
     rt_scene *scene = busy_scene();
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
-    rt_image whole = render_with(scene, NULL);
+    rt_image whole = rt_test_render_with(scene, NULL);
     rt_image bands;
     ck_assert_int_eq(rt_image_init(&bands, info.width, info.height, NULL), RT_OK);
     int split = info.height / 3;
@@ -299,7 +288,7 @@ START_TEST(on_row_is_called_once_per_row)
         options.threads = threads;
         options.on_row = log_row;
         options.user = &log;
-        rt_image image = render_with(scene, &options);
+        rt_image image = rt_test_render_with(scene, &options);
         ck_assert_int_eq(log.calls, info.height);
         for (int y = 0; y < info.height; y++)
             ck_assert_msg(log.seen[y] == 1, "row %d reported %d times", y,
@@ -444,7 +433,7 @@ START_TEST(stats_count_one_camera_ray_per_pixel)
     rt_render_options options;
     rt_render_options_init(&options);
     options.stats = &stats;
-    rt_image image = render_with(scene, &options);
+    rt_image image = rt_test_render_with(scene, &options);
     uint64_t pixels = (uint64_t)info.width * (uint64_t)info.height;
     ck_assert_uint_eq(stats.pixels, pixels);
     ck_assert_uint_eq(stats.camera_rays, pixels);
@@ -463,7 +452,7 @@ static void check_not_all_background(const char *name)
     rt_scene *scene = load_scene(path);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
-    rt_image image = render_with(scene, NULL);
+    rt_image image = rt_test_render_with(scene, NULL);
     long other = 0;
     for (int y = 0; y < image.height; y++)
         for (int x = 0; x < image.width; x++) {
