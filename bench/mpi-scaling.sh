@@ -21,7 +21,8 @@ build=${1:-$here/build}
 scene=${2:-$here/../shared/spd-scenes/balls-s2.scn}
 size=${3:-1920x1080}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_plm_rsh_agent=false
+export OMPI_MCA_plm_rsh_agent=false  # local ranks only: never called
+export OMPI_MCA_btl_vader_single_copy_mechanism=none  # containers: no CMA
 [ -r "$scene" ] || { echo "mpi-scaling.sh: cannot read $scene" >&2; exit 1; }
 cores=$(nproc)
 width=${size%x*} height=${size#*x}
