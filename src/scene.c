@@ -97,11 +97,6 @@ static rt_vec3 exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
               orient2d(a.x, a.y, b.x, b.y, c.x, c.y));
 }
 
-int rt__points_collinear(rt_vec3 a, rt_vec3 b, rt_vec3 c)
-{
-    return v3_max_abs(exact_cross(a, b, c)) == 0.0;
-}
-
 /* Unit normal in the direction of (b - a) x (c - a), accurate for any
  * shape (slivers and needles included); zero for a zero-area facet. */
 static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)

@@ -65,8 +65,4 @@ void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
  * until the scene is freed; NULL when out of memory. */
 const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene);
 
-/* Exact test: non-zero when the three points are collinear (including
- * coincident), evaluated without rounding error. */
-int rt__points_collinear(rt_vec3 a, rt_vec3 b, rt_vec3 c);
-
 #endif /* RAYTRACE_SCENE_INTERNAL_H */

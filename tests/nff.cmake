@@ -2,6 +2,6 @@
 # tests/test_nff.c.  Included from tests/CMakeLists.txt.  The
 # SPD scenes of ../shared/formats are loaded when ../shared is there (the
 # test prints that it skipped them otherwise).
-raytrace_add_suite(test_nff)
+raytrace_add_suite(test_nff INTERNAL)
 set_tests_properties(test_nff PROPERTIES TIMEOUT 300)
 raytrace_add_shared_test(test_nff)

@@ -1,7 +1,7 @@
 # The octree against brute force.  Included from
 # tests/CMakeLists.txt; uses the benchmark's scene generators.  The scenes
 # of ../shared get their own entry, skipped (exit 77) when it is absent.
-raytrace_add_suite(test_octree
+raytrace_add_suite(test_octree INTERNAL
   SOURCES "${PROJECT_SOURCE_DIR}/bench/bench_scenes.c")
 target_include_directories(raytrace_test_octree PRIVATE
   "${PROJECT_SOURCE_DIR}/bench")

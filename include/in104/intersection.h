@@ -21,6 +21,7 @@
 #define IN104_INTERSECTION_H
 
 #include "geometry.h"
+#include "in104_export.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -33,7 +34,7 @@ extern "C" {
  * the zero vector (0, 0, 0); the facet is otherwise returned as given.
  * Example: createFacet((0,0,0), (1,0,0), (0,1,0)).n == (0, 0, 1).
  */
-facet createFacet(point a, point b, point c);
+IN104_API facet createFacet(point a, point b, point c);
 
 /*
  * The point where the line of r (all of it: o + t.v for every real t) meets
@@ -49,7 +50,7 @@ facet createFacet(point a, point b, point c);
  * (nearly parallel, beyond the range of double), every coordinate of the
  * result is NaN.  Test it with isnan(p.x); isInFacet() returns 0 for it.
  */
-point computeIntersection(ray r, facet f);
+IN104_API point computeIntersection(ray r, facet f);
 
 /*
  * The coordinates (u, v, w) of p in the facet's frame:
@@ -65,7 +66,7 @@ point computeIntersection(ray r, facet f);
  * aspect ratio up to 1e12 and beyond) still has a frame and gives finite
  * results, accurate to a few roundings for points in its plane.
  */
-point changeCoord(point p, facet f);
+IN104_API point changeCoord(point p, facet f);
 
 /*
  * Non-zero when p lies in the triangle f.a, f.b, f.c or on its border,
@@ -84,7 +85,7 @@ point changeCoord(point p, facet f);
  * docs/rendering-model.md) and for a point with a NaN or infinite
  * coordinate (such as computeIntersection()'s answer for a parallel ray).
  */
-int isInFacet(point p, facet f);
+IN104_API int isInFacet(point p, facet f);
 
 #ifdef __cplusplus
 }

@@ -21,6 +21,7 @@
 #define IN104_RAYTRACER_H
 
 #include "geometry.h"
+#include "in104_export.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -57,7 +58,7 @@ extern "C" {
  *     freeScene(&s);
  *     if (0 != parse(name, &s)) ...
  */
-int parse(char *fname, scene *s);
+IN104_API int parse(char *fname, scene *s);
 
 #ifndef IN104_NO_EXTENSIONS
 
@@ -66,7 +67,7 @@ int parse(char *fname, scene *s);
  * sets them to NULL and their counts to 0; calling it again, or on a zeroed
  * scene, does nothing.  freeScene(NULL) does nothing.
  */
-void freeScene(scene *s);
+IN104_API void freeScene(scene *s);
 
 /*
  * Extension: renders *s with libraytrace (docs/rendering-model.md: Whitted ray
@@ -81,7 +82,7 @@ void freeScene(scene *s);
  * Returns 0 on success; otherwise non-zero (an rt_status code) with one
  * line on stderr naming what was wrong, and the file is left untouched.
  */
-int renderToPPM(const scene *s, const char *ppmFile);
+IN104_API int renderToPPM(const scene *s, const char *ppmFile);
 
 #endif /* IN104_NO_EXTENSIONS */
 

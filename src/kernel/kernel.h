@@ -100,7 +100,6 @@ typedef struct rt_kernel_hit {
     rt_kernel_eye_##suffix *rt__kernel_##suffix##_eye_create(                \
         const rt_kernel_##suffix *kernel, rt_vec3 eye);                      \
     void rt__kernel_##suffix##_eye_free(rt_kernel_eye_##suffix *eye);        \
-    int rt__kernel_##suffix##_live_count(const rt_kernel_##suffix *kernel);  \
     rt_color rt__kernel_##suffix##_trace(                                    \
         const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \
         rt_vec3 direction, const rt_trace_settings *settings,                \

@@ -227,11 +227,6 @@ void KERNEL(eye_free)(KERNEL_EYE_T *eye)
     free(eye);
 }
 
-int KERNEL(live_count)(const KERNEL_T *k)
-{
-    return k->count;
-}
-
 int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
                         rt_kernel_hit *out)
 {
