@@ -14,16 +14,21 @@
  *     rt_scene_info info;
  *     rt_scene_get_info(scene, &info);
  *     rt_image image;
- *     rt_image_init(&image, info.width, info.height);
- *     rt_render(scene, NULL, &image);            (NULL: default options)
- *     rt_ppm_save("cubes.ppm", &image, RT_PPM_P6, &error);
+ *     if (rt_image_init(&image, info.width, info.height, &error) != RT_OK ||
+ *         rt_render(scene, NULL, &image, &error) != RT_OK ||  (NULL: defaults)
+ *         rt_ppm_save("cubes.ppm", &image, RT_PPM_P6, &error) != RT_OK)
+ *         fprintf(stderr, "%s\n", error.message);
  *     rt_image_release(&image);
  *     rt_scene_destroy(scene);
  *
- * Rules that hold everywhere: public names start with rt_ / RT_; fallible
- * functions return rt_status and fill an optional rt_error; out-pointers are
- * NULL after a failure and nothing leaks; the library has no global mutable
- * state, never prints, never exits; each function states its thread-safety.
+ * Rules that hold everywhere (docs/api.md): public names start with rt_ /
+ * RT_; _create/_destroy for objects the library allocates, _init/_release
+ * for storage the caller owns; fallible functions return rt_status and take
+ * a last rt_error * (may be NULL) that they fill with a message saying what
+ * was wrong; out-pointers are NULL after a failure and nothing leaks; option
+ * structs carry their size (raytrace/render.h); the library has no global
+ * mutable state, never prints, never exits; each function states its
+ * thread-safety.
  */
 #ifndef RAYTRACE_RAYTRACE_H
 #define RAYTRACE_RAYTRACE_H
