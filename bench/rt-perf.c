@@ -228,7 +228,8 @@ int main(int argc, char **argv)
         rt_image images[SETTING_COUNT] = {{0}};
         int ok = 1, first = en->octree_only ? FIRST_OCTREE : 0;
         for (int s = first; s < SETTING_COUNT && ok; s++)
-            ok = rt_image_init(&images[s], en->width, en->height, NULL) == RT_OK;
+            ok = rt_image_init(&images[s], en->width, en->height,
+                               NULL) == RT_OK;
         /* round robin, so that a change of load on the machine hits every
          * setting alike */
         for (int run = 0; run < runs && ok; run++) {

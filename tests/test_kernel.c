@@ -364,7 +364,8 @@ START_TEST(an_unknown_kernel_choice_is_an_argument_error)
     rt_render_options_init(&options);
     ck_assert_int_eq(options.kernel, RT_KERNEL_AUTO);
     options.kernel = (rt_kernel_choice)7;
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                     RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

@@ -528,7 +528,8 @@ START_TEST(the_default_is_auto_and_an_unknown_choice_is_an_argument_error)
     rt_render_options_init(&options);
     ck_assert_int_eq(options.accel, RT_ACCEL_AUTO);
     options.accel = (rt_accel)9;
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                     RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

@@ -109,7 +109,8 @@ START_TEST(p6_output_is_header_then_exactly_the_pixels)
     unsigned char *memory;
     rt_image image = make_pattern(4, 3, 7, &memory);
     buffer out = {NULL, 0, 0, -1};
-    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6, NULL),
+    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6,
+                                     NULL),
                      RT_OK);
     const char *header = "P6\n4 3\n255\n";
     size_t header_size = strlen(header);
@@ -138,7 +139,8 @@ START_TEST(p3_lines_are_at_most_70_characters)
                 memset(rt_image_pixel(&image, 0, y), 255, 40 * 3);
         buffer out = {NULL, 0, 0, -1};
         ck_assert_int_eq(
-            rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3, NULL), RT_OK);
+            rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3,
+                            NULL), RT_OK);
         size_t line_length = 0, longest = 0, lines = 0;
         for (size_t i = 0; i < out.size; i++) {
             if (out.data[i] == '\n') {
@@ -167,7 +169,8 @@ START_TEST(failing_sink_makes_the_writer_fail)
         for (int after = 0; after < 3; after++) {
             buffer out = {NULL, 0, 0, after};
             rt_status status = rt_ppm_write_to(
-                buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3, NULL);
+                buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3,
+                NULL);
             /* a writer that made fewer calls than `after` + 1 has not met
              * the failure */
             if (out.fail_after == 0)
@@ -376,7 +379,8 @@ START_TEST(image_create_and_destroy_follow_the_contract)
     rt_image_release(&image); /* a zeroed image is a no-op */
     ck_assert_int_ne(rt_image_init(&image, 0, 2, NULL), RT_OK);
     ck_assert_ptr_null(image.pixels);
-    ck_assert_int_ne(rt_image_init(&image, 2, RT_MAX_IMAGE_SIDE + 1, NULL), RT_OK);
+    ck_assert_int_ne(rt_image_init(&image, 2, RT_MAX_IMAGE_SIDE + 1, NULL),
+                     RT_OK);
     ck_assert_ptr_null(image.pixels);
 }
 END_TEST

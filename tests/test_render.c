@@ -242,15 +242,18 @@ START_TEST(two_bands_rendered_apart_equal_the_whole_render)
     rt_scene_get_info(scene, &info);
     rt_image whole = rt_test_render_with(scene, NULL);
     rt_image bands;
-    ck_assert_int_eq(rt_image_init(&bands, info.width, info.height, NULL), RT_OK);
+    ck_assert_int_eq(rt_image_init(&bands, info.width, info.height, NULL),
+                     RT_OK);
     int split = info.height / 3;
-    ck_assert_int_eq(rt_render_rows(scene, NULL, split, info.height, &bands, NULL),
+    ck_assert_int_eq(rt_render_rows(scene, NULL, split, info.height, &bands,
+                                    NULL),
                      RT_OK);
     /* rows before the band are untouched (still black from create) */
     for (int y = 0; y < split; y++)
         for (int x = 0; x < info.width * 3; x++)
             ck_assert_int_eq(bands.pixels[(size_t)y * bands.stride + x], 0);
-    ck_assert_int_eq(rt_render_rows(scene, NULL, 0, split, &bands, NULL), RT_OK);
+    ck_assert_int_eq(rt_render_rows(scene, NULL, 0, split, &bands, NULL),
+                     RT_OK);
     ck_assert_int_eq(memcmp(whole.pixels, bands.pixels,
                             whole.stride * (size_t)whole.height),
                      0);
@@ -316,7 +319,8 @@ START_TEST(cancel_from_on_row_returns_cancelled)
         rt_image image;
         ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL),
                          RT_OK);
-        ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_CANCELLED);
+        ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                         RT_ERR_CANCELLED);
         ck_assert_msg(log.calls < info.height,
                       "%d threads: %d rows reported after the cancel",
                       threads, log.calls);
@@ -347,7 +351,8 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     ck_assert_ptr_nonnull(token);
     ck_assert_int_eq(rt_cancel_requested(token), 0);
     rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL),
+                     RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     options.cancel = token;
@@ -358,7 +363,8 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     memset(image.pixels, 7, image.stride * (size_t)image.height);
     for (int threads = 1; threads <= 2; threads++) {
         options.threads = threads;
-        ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_CANCELLED);
+        ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                         RT_ERR_CANCELLED);
     }
     for (size_t i = 0; i < image.stride * (size_t)image.height; i++)
         ck_assert_msg(image.pixels[i] == 7, "byte %zu written", i);
@@ -370,7 +376,8 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     options.threads = 1;
     options.on_row = raise_token;
     options.user = token;
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_CANCELLED);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                     RT_ERR_CANCELLED);
     int untouched_rows = 0;
     for (int y = 0; y < image.height; y++)
         untouched_rows += rt_image_pixel(&image, 0, y)[0] == 7 &&
@@ -400,11 +407,13 @@ START_TEST(render_refuses_wrong_image_size_and_negative_depth)
                      RT_OK);
     ck_assert_int_eq(rt_render(scene, NULL, &image, NULL), RT_ERR_ARGUMENT);
     rt_image_release(&image);
-    ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL), RT_OK);
+    ck_assert_int_eq(rt_image_init(&image, info.width, info.height, NULL),
+                     RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     options.max_depth = -1;
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                     RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

@@ -239,8 +239,10 @@ START_TEST(bands_of_a_region_and_its_progress_are_in_its_own_rows)
     rt_image part;
     ck_assert_int_eq(rt_image_init(&part, 40, 25, NULL), RT_OK);
     /* two bands, rendered apart, make up the region */
-    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 11, &part, NULL), RT_OK);
-    ck_assert_int_eq(rt_render_rows(scene, &options, 11, 25, &part, NULL), RT_OK);
+    ck_assert_int_eq(rt_render_rows(scene, &options, 0, 11, &part, NULL),
+                     RT_OK);
+    ck_assert_int_eq(rt_render_rows(scene, &options, 11, 25, &part, NULL),
+                     RT_OK);
     ck_assert_int_eq(log.count, 25);
     ck_assert_int_eq(log.low, 0);
     ck_assert_int_eq(log.high, 24);
@@ -326,7 +328,8 @@ START_TEST(bad_sizes_and_regions_are_refused_with_a_reason)
     options.width = 200;
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 400, 400, NULL), RT_OK);
-    ck_assert_int_eq(rt_render(scene, &options, &image, NULL), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_render(scene, &options, &image, NULL),
+                     RT_ERR_ARGUMENT);
     rt_image_release(&image);
     rt_scene_destroy(scene);
 }

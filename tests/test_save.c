@@ -1214,7 +1214,8 @@ START_TEST(the_format_comes_from_the_extension_whatever_its_case)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         rt_image_format format = (rt_image_format)12345;
-        rt_status status = rt_image_format_from_path(cases[i].path, &format, NULL);
+        rt_status status = rt_image_format_from_path(cases[i].path, &format,
+                                                     NULL);
         ck_assert_msg(status == cases[i].status, "%s: %s", cases[i].path,
                       rt_status_string(status));
         rt_image_format expected = status == RT_OK ? cases[i].format

@@ -74,7 +74,8 @@ static void *worker_main(void *arg)
     options.user = session;
     options.cancel = session->cancel;
     rt_status status = rt_render_rows(session->scene, &options, 0,
-                                      session->image.height, &session->image, NULL);
+                                      session->image.height, &session->image,
+                                      NULL);
 
     pthread_mutex_lock(&session->lock);
     session->status = status;

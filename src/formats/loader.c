@@ -197,7 +197,8 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
     options = &taken;
     rt_scene_format format = options->format;
     if (format == RT_SCENE_FORMAT_AUTO &&
-        (name == NULL || rt_scene_format_from_path(name, &format, NULL) != RT_OK))
+        (name == NULL || rt_scene_format_from_path(name, &format,
+                                                   NULL) != RT_OK))
         format = RT_SCENE_FORMAT_SCN;
     switch (format) {
     case RT_SCENE_FORMAT_SCN:
