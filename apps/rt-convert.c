@@ -41,9 +41,9 @@ static int usage_error(const char *message, const char *value)
     return 2;
 }
 
-static int write_to_stdout(void *context, const void *data, size_t size)
+static int write_to_stdout(void *user, const void *data, size_t size)
 {
-    (void)context;
+    (void)user;
     return fwrite(data, 1, size, stdout) == size;
 }
 

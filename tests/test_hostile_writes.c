@@ -38,9 +38,9 @@ typedef struct failing_sink {
     size_t bytes;
 } failing_sink;
 
-static int failing_write(void *context, const void *data, size_t size)
+static int failing_write(void *user, const void *data, size_t size)
 {
-    failing_sink *s = context;
+    failing_sink *s = user;
     (void)data;
     if (s->calls > s->fail_at)
         s->calls_after_failure++;

@@ -716,9 +716,9 @@ typedef struct buffer {
     size_t length;
 } buffer;
 
-static int append(void *context, const void *data, size_t size)
+static int append(void *user, const void *data, size_t size)
 {
-    buffer *b = context;
+    buffer *b = user;
     char *grown = realloc(b->data, b->length + size + 1);
     if (grown == NULL)
         return 0;

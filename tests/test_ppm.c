@@ -21,9 +21,9 @@ typedef struct buffer {
     int fail_after; /* calls before the sink fails; < 0 never */
 } buffer;
 
-static int buffer_write(void *context, const void *data, size_t size)
+static int buffer_write(void *user, const void *data, size_t size)
 {
-    buffer *b = context;
+    buffer *b = user;
     if (b->fail_after == 0)
         return 0;
     if (b->fail_after > 0)

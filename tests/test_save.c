@@ -189,9 +189,9 @@ typedef struct bytes {
     size_t size, capacity;
 } bytes;
 
-static int bytes_add(void *context, const void *data, size_t size)
+static int bytes_add(void *user, const void *data, size_t size)
 {
-    bytes *b = context;
+    bytes *b = user;
     if (b->size + size > b->capacity) {
         size_t capacity = 2 * (b->size + size) + 256;
         unsigned char *grown = realloc(b->data, capacity);
@@ -205,10 +205,10 @@ static int bytes_add(void *context, const void *data, size_t size)
     return 1;
 }
 
-static int count_bytes(void *context, const void *data, size_t size)
+static int count_bytes(void *user, const void *data, size_t size)
 {
     (void)data;
-    *(size_t *)context += size;
+    *(size_t *)user += size;
     return 1;
 }
 

@@ -163,13 +163,13 @@ static rt_scene *heavy_scene(int count, int width, int height)
 }
 
 static view_session *new_session(rt_scene *scene, int threads,
-                                 view_notify_func notify, void *context)
+                                 view_notify_func notify, void *user)
 {
     view_session_options options;
     view_session_options_init(&options);
     options.render.threads = threads;
     options.notify = notify;
-    options.notify_context = context;
+    options.notify_user = user;
     view_session *session = NULL;
     ck_assert_int_eq(view_session_create(scene, &options, &session, NULL),
                      RT_OK);
@@ -330,9 +330,9 @@ typedef struct gate {
     sem_t resume;
 } gate;
 
-static void gate_notify(void *context)
+static void gate_notify(void *user)
 {
-    gate *g = context;
+    gate *g = user;
     sem_post(&g->paused);
     sem_wait(&g->resume);
 }

@@ -56,9 +56,9 @@ void view_app_options_init(view_app_options *options)
 }
 
 /* The session's notify hook: wakes the event loop (any thread). */
-static void wake(void *context)
+static void wake(void *user)
 {
-    const view_app *app = context;
+    const view_app *app = user;
     SDL_Event event;
     SDL_zero(event);
     event.type = app->wake_event;
@@ -201,7 +201,7 @@ static view_session *new_session(view_app *app, rt_scene *scene,
     view_session_options_init(&options);
     options.render = render_options(app, scene);
     options.notify = wake;
-    options.notify_context = app;
+    options.notify_user = app;
     view_session *session;
     rt_error error;
     memset(&error, 0, sizeof error);

@@ -45,7 +45,7 @@ static double now_seconds(void)
 static void notify(view_session *session)
 {
     if (session->options.notify)
-        session->options.notify(session->options.notify_context);
+        session->options.notify(session->options.notify_user);
 }
 
 /* The library's row callback: runs on rendering threads, serialised. */

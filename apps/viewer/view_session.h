@@ -35,7 +35,7 @@ typedef struct view_session view_session;
  * until the controlling thread takes them) and when a render ends.  It must
  * not call back into the session; pushing an event or posting a semaphore
  * is what it is for. */
-typedef void (*view_notify_func)(void *context);
+typedef void (*view_notify_func)(void *user);
 
 typedef struct view_session_options {
     rt_render_options render;   /* every render option: depth (at most
@@ -43,7 +43,7 @@ typedef struct view_session_options {
                                    region ...; on_row, user and cancel are
                                    the session's own and ignored here */
     view_notify_func notify;    /* optional */
-    void *notify_context;
+    void *notify_user;
 } view_session_options;
 
 typedef enum view_state {

@@ -24,9 +24,9 @@ typedef struct buffer {
     size_t size;
 } buffer;
 
-static int append(void *context, const void *data, size_t size)
+static int append(void *user, const void *data, size_t size)
 {
-    buffer *out = context;
+    buffer *out = user;
 
     if (size > sizeof out->data - out->size)
         return 0;

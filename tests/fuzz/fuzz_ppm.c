@@ -27,9 +27,9 @@ typedef struct buffer {
     size_t used, capacity;
 } buffer;
 
-static int append(void *context, const void *data, size_t size)
+static int append(void *user, const void *data, size_t size)
 {
-    buffer *b = context;
+    buffer *b = user;
     if (b->used + size > b->capacity) {
         size_t capacity = (b->used + size) * 2;
         unsigned char *bigger = realloc(b->bytes, capacity);
