@@ -58,12 +58,17 @@ struct rt_cancel {
     atomic_int raised;
 };
 
-rt_cancel *rt_cancel_create(void)
+rt_status rt_cancel_create(rt_cancel **cancel, rt_error *error)
 {
-    rt_cancel *cancel = malloc(sizeof *cancel);
-    if (cancel != NULL)
-        atomic_init(&cancel->raised, 0);
-    return cancel;
+    if (cancel == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a pointer to fill");
+    *cancel = malloc(sizeof **cancel);
+    if (*cancel == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                             "out of memory for a cancellation flag");
+    atomic_init(&(*cancel)->raised, 0);
+    return RT_OK;
 }
 
 void rt_cancel_destroy(rt_cancel *cancel)

@@ -184,7 +184,8 @@ START_TEST(cancelled_render_says_so)
     rt_scene *scene = rt_test_scene_from_string(small_scene);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
-    rt_cancel *cancel = rt_cancel_create();
+    rt_cancel *cancel;
+    ck_assert_int_eq(rt_cancel_create(&cancel, NULL), RT_OK);
     ck_assert_ptr_nonnull(cancel);
     rt_cancel_request(cancel);
     rt_render_options options;

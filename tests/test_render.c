@@ -347,7 +347,8 @@ START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
     rt_scene *scene = busy_scene();
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
-    rt_cancel *token = rt_cancel_create();
+    rt_cancel *token;
+    ck_assert_int_eq(rt_cancel_create(&token, NULL), RT_OK);
     ck_assert_ptr_nonnull(token);
     ck_assert_int_eq(rt_cancel_requested(token), 0);
     rt_image image;

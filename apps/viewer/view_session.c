@@ -134,10 +134,11 @@ rt_status view_session_create(rt_scene *scene,
     session->options = *options;
     session->state = VIEW_IDLE;
     session->status = RT_OK;
-    session->cancel = rt_cancel_create();
     atomic_init(&session->wake_pending, 0);
 
-    status = rt_image_init(&session->image, width, height, NULL);
+    status = rt_cancel_create(&session->cancel, NULL);
+    if (status == RT_OK)
+        status = rt_image_init(&session->image, width, height, NULL);
     if (status == RT_OK) {
         session->done = calloc((size_t)height, 1);
         session->fresh = calloc((size_t)height, 1);

@@ -138,7 +138,9 @@ typedef enum rt_accel {
  */
 typedef struct rt_cancel rt_cancel;
 
-RT_API rt_cancel *rt_cancel_create(void);      /* NULL when out of memory */
+/* A new flag, not raised, in *cancel; RT_ERR_NOMEM (and *cancel NULL)
+ * when out of memory. */
+RT_API rt_status rt_cancel_create(rt_cancel **cancel, rt_error *error);
 RT_API void rt_cancel_destroy(rt_cancel *cancel); /* NULL: no-op */
 RT_API void rt_cancel_request(rt_cancel *cancel);
 RT_API void rt_cancel_reset(rt_cancel *cancel);
