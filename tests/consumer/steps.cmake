@@ -154,14 +154,17 @@ elseif(STEP STREQUAL "subdirectory" OR STEP STREQUAL "fetchcontent")
     message(FATAL_ERROR "libraytrace set ${shared} in the parent's cache")
   endif()
   run("building the parent project" "${CMAKE_COMMAND}" --build "${parent}/build")
-  # Only the libraries: no program, test suite or benchmark of libraytrace.
+  # Only the libraries: no program, test suite or benchmark of libraytrace,
+  # and no libimgsdl, which the parent turned off.
   file(GLOB_RECURSE built LIST_DIRECTORIES false RELATIVE "${parent}/build"
        "${parent}/build/*rt-export*" "${parent}/build/*rt-view*"
        "${parent}/build/*rt-bench*" "${parent}/build/*rt-perf*"
-       "${parent}/build/*in104-render*" "${parent}/build/raytrace/*test_*")
+       "${parent}/build/*in104-render*" "${parent}/build/raytrace/*test_*"
+       "${parent}/build/*raytrace-imgsdl*")
   list(FILTER built EXCLUDE REGEX "CMakeFiles/")
   if(built)
-    message(FATAL_ERROR "the parent's build made libraytrace's programs or tests: ${built}")
+    message(FATAL_ERROR "the parent's build made libraytrace's programs, "
+            "tests or libimgsdl: ${built}")
   endif()
   execute_process(COMMAND "${CMAKE_CTEST_COMMAND}" -N
                   WORKING_DIRECTORY "${parent}/build" OUTPUT_VARIABLE tests)
