@@ -42,6 +42,9 @@ typedef struct job {
     int grid;               /* samples per side of a pixel */
     double aperture;        /* the lens radius of this render (0: pinhole) */
     double focal_distance;  /* the distance in focus, along AO */
+    rt_vec3 view_axis;      /* unit O->A, for the lens (once per render) */
+    rt_vec3 lens_right;     /* unit AB */
+    rt_vec3 lens_up;        /* unit AC */
     rt_image *image;
     int row_end;
     atomic_int next_row;
@@ -207,13 +210,12 @@ static rt_ray lens_ray(const job *j, rt_ray pinhole, double x, double y)
     const rt_camera *camera = &j->camera;
     double u, v;
     square_to_disk(x, y, &u, &v);
-    rt_vec3 w = v3_normalize(v3_sub(camera->screen_center, camera->observer));
     rt_vec3 to_focus = v3_scale(pinhole.direction,
                                 j->focal_distance /
-                                    v3_dot(pinhole.direction, w));
+                                    v3_dot(pinhole.direction, j->view_axis));
     rt_vec3 focus = v3_add(camera->observer, to_focus);
-    rt_vec3 offset = v3_add(v3_scale(v3_normalize(camera->right), u),
-                            v3_scale(v3_normalize(camera->up), v));
+    rt_vec3 offset = v3_add(v3_scale(j->lens_right, u),
+                            v3_scale(j->lens_up, v));
     rt_vec3 lens = v3_add(camera->observer, v3_scale(offset, j->aperture));
     return (rt_ray){lens, v3_sub(focus, lens)};
 }
@@ -623,6 +625,10 @@ rt_status rt_render_rows(const rt_scene *scene,
              .width = width, .image = image,
              .row_end = row_end, .grid = grid, .aperture = aperture,
              .focal_distance = focal_distance,
+             .view_axis = v3_normalize(v3_sub(scene->camera.screen_center,
+                                              scene->camera.observer)),
+             .lens_right = v3_normalize(scene->camera.right),
+             .lens_up = v3_normalize(scene->camera.up),
              .settings = {options->max_depth, options->fast_inv_sqrt != 0,
                           options->kernel, NULL, 0}};
     /* The float kernel is built by the first float render and kept with

@@ -30,10 +30,17 @@ static REAL fast_inv_sqrt(REAL x)
     return (REAL)rt_fast_inv_sqrt((double)x);
 }
 
-/* a / |a| without overflow or underflow; zero stays zero. */
-static vec normalize(vec a, int fast)
+/* fmax(a, b) for a, b >= 0 or NaN, without libm's call: NaN only when
+ * both are (fmax's rule); no signed zeros to order among magnitudes. */
+static inline REAL larger(REAL a, REAL b)
 {
-    REAL m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    return b > a || a != a ? b : a;
+}
+
+/* a / |a| without overflow or underflow; zero stays zero. */
+static inline vec normalize(vec a, int fast)
+{
+    REAL m = larger(fabs(a.x), larger(fabs(a.y), fabs(a.z)));
     if (m == 0)
         return a;
     vec s = scale(a, 1 / m);
@@ -49,17 +56,40 @@ static REAL gamma_bound(int n)
     return n * u / (1 - n * u);
 }
 
-static REAL max3(REAL a, REAL b, REAL c)
+static inline REAL max3(REAL a, REAL b, REAL c)
 {
-    return fmax(fabs(a), fmax(fabs(b), fabs(c)));
+    return larger(fabs(a), larger(fabs(b), fabs(c)));
 }
 
+/* The unsigned integer of REAL's width, for next_toward. */
+#if REAL_IS_FLOAT
+typedef uint32_t real_bits;
+#else
+typedef uint64_t real_bits;
+#endif
 
-static REAL step_away(REAL x, REAL direction)
+/* nextafter(x, up ? +inf : -inf), bit for bit, without libm's call: the
+ * neighbour of x in the representation; a zero of either sign steps to the
+ * smallest subnormal, NaN and the infinity met stay. */
+static inline REAL next_toward(REAL x, int up)
+{
+    if (x != x || x == (up ? (REAL)INFINITY : -(REAL)INFINITY))
+        return x;
+    real_bits bits, sign = (real_bits)1 << (8 * sizeof bits - 1);
+    memcpy(&bits, &x, sizeof bits);
+    if (x == 0)
+        bits = up ? 0 : sign;
+    int grow = x == 0 || (x > 0) == (up != 0);     /* magnitude up? */
+    bits = grow ? bits + 1 : bits - 1;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+static inline REAL step_away(REAL x, REAL direction)
 {
     if (direction > 0)
-        return nextafter(x, (REAL)INFINITY);
+        return next_toward(x, 1);
     if (direction < 0)
-        return nextafter(x, -(REAL)INFINITY);
+        return next_toward(x, 0);
     return x;
 }

@@ -224,7 +224,7 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
         vec mirror = sub(p.incoming, scale(normal, 2 * dot(p.incoming,
                                                            normal)));
         REAL mirror_weight = f->k;
-        vec refracted;
+        vec refracted = mk(0, 0, 0);   /* set when refracts */
         int refracts = f->t > 0 && refract(p.incoming, f->normal, f->n,
                                            &refracted);
         if (f->t > 0 && !refracts) {
