@@ -55,10 +55,18 @@ configure_package_config_file(
   "${PROJECT_SOURCE_DIR}/cmake/raytraceConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/raytraceConfig.cmake"
   INSTALL_DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")
+# Compatible versions follow the soname (src/CMakeLists.txt): before 1.0 a
+# minor release may break the API and ABI, so find_package(raytrace 0.2)
+# takes any 0.2.x and no 0.1 or 0.3; from 1.0 on, the same major version.
+if(PROJECT_VERSION_MAJOR EQUAL 0)
+  set(_rt_compatibility SameMinorVersion)
+else()
+  set(_rt_compatibility SameMajorVersion)
+endif()
 write_basic_package_version_file(
   "${PROJECT_BINARY_DIR}/raytraceConfigVersion.cmake"
   VERSION "${PROJECT_VERSION}"
-  COMPATIBILITY SameMajorVersion)
+  COMPATIBILITY ${_rt_compatibility})
 install(FILES
   "${PROJECT_BINARY_DIR}/raytraceConfig.cmake"
   "${PROJECT_BINARY_DIR}/raytraceConfigVersion.cmake"
