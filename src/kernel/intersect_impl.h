@@ -109,6 +109,8 @@ static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
     bz *= r->sz;
     cz *= r->sz;
     REAL t = b0 * az + b1 * bz + b2 * cz;
+    if (!(t > 0 && t < t_max))
+        return 0;   /* t_error >= 0 (or NaN): the test below fails too */
 
     REAL abs_det = fabs(det);
     REAL max_x = max3(ax, bx, cx), max_y = max3(ay, by, cy);
