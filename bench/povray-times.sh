@@ -6,10 +6,12 @@
 #
 # Default scenes: ../shared/spd-scenes/*.scn.  Each is converted by
 # bench/scn2pov.py (one mesh of triangles, one light, max_trace_level =
-# depth + 1) and rendered by both at 400x400 with 2 threads; the table gives
-# POV-Ray's "Trace Time" and rt-export's render time (--stats) with brute
-# force and with the octree, each the best of RUNS (default 3) runs.  Needs
+# depth + 1) and rendered by both at SIZE (default 400x400) with 2 threads;
+# the table gives POV-Ray's "Trace Time" (its start-up and
+# parsing excluded) and rt-export's render time (--stats) with brute force
+# and with the octree, each the median of RUNS (default 3) runs.  Needs
 # povray (apt-get install povray); without it, prints only ours.
+#   SIZE=1920x1080 RUNS=5 bench/povray-times.sh build scenes/cubes.scn
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:?usage: povray-times.sh BUILD_DIR [SCENE.scn ...]}
@@ -19,29 +21,33 @@ if [ ${#scenes[@]} -eq 0 ]; then
     scenes=("$here"/../../shared/spd-scenes/*.scn)
 fi
 runs=${RUNS:-3}
+size=${SIZE:-400x400}
+width=${size%x*}
+height=${size#*x}
 depth=5
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-best() { sort -g | head -n 1; }
+median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
 ours() {    # scene accel -> seconds of render
     for _ in $(seq "$runs"); do
         "$build/apps/rt-export" "$1" -o "$work/out.ppm" --threads 2 \
-            --accel "$2" --stats -q 2>&1 >/dev/null |
+            --size "${width}x$height" --accel "$2" --stats -q 2>&1 >/dev/null |
             sed -n 's/^time: .*render \([0-9.]*\) s.*/\1/p'
-    done | best
+    done | median
 }
 
 pov() {     # scene -> POV-Ray's trace time
-    python3 "$here/scn2pov.py" "$1" "$depth" 400 400 >"$work/s.pov"
+    python3 "$here/scn2pov.py" "$1" "$depth" "$width" "$height" \
+        >"$work/s.pov"
     for _ in $(seq "$runs"); do
-        povray +I"$work/s.pov" +O"$work/s.png" +W400 +H400 +WT2 -D 2>&1 |
-            sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
-    done | best
+        povray +I"$work/s.pov" +O"$work/s.png" +W"$width" +H"$height" +WT2 -D \
+            2>&1 | sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
+    done | median
 }
 
-echo "| scene (400x400) | facets | POV-Ray trace | brute force | octree | octree vs POV-Ray | octree vs brute force |"
+echo "| scene ($size) | facets | POV-Ray trace | brute force | octree | octree vs POV-Ray | octree vs brute force |"
 echo "|---|--:|--:|--:|--:|--:|--:|"
 for s in "${scenes[@]}"; do
     name=$(basename "$s" .scn)

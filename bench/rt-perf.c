@@ -13,13 +13,27 @@
  * turns so that a change of load affects them alike); the program prints
  * Markdown tables of Mrays/s, G ray-facet tests/s and the ratios, and checks
  * that every setting of one precision gives the same image, byte for byte.
+ * A last table is the per-ray budget of the fast kernel on one thread: rays
+ * by kind, tests per ray, nanoseconds per ray and, where the kernel lets a
+ * process read the hardware counters (Linux perf_event_open), cycles and
+ * instructions per ray; elsewhere those columns say n/a (use
+ * `valgrind --tool=callgrind` for instruction counts then).
  *
  * A program, not a test: it takes minutes.  Run it on an idle machine.
  */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE     /* syscall(), for perf_event_open */
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#if defined(__linux__)
+#include <linux/perf_event.h>
+#include <sys/ioctl.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 #include "bench_scenes.h"
 #include "raytrace/raytrace.h"
@@ -41,25 +55,25 @@ typedef struct entry {
 
 /* Image sizes keep the scalar renders of the big scenes to seconds. */
 static const entry entries[] = {
-    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 400, 400},
-    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 1920, 1080},
-    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 400, 400},
-    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 1920, 1080},
-    {"tetra-s2", FROM_FILE, "tetra-s2.scn", 1, 0, 400, 400},
-    {"tetra-s4", FROM_FILE, "tetra-s4.scn", 1, 0, 400, 400},
-    {"teapot-s2", FROM_FILE, "teapot-s2.scn", 1, 0, 400, 400},
-    {"mount-s2", FROM_FILE, "mount-s2.scn", 1, 0, 400, 400},
-    {"tetra-s6", FROM_FILE, "tetra-s6.scn", 1, 0, 400, 400},
-    {"gears-s2", FROM_FILE, "gears-s2.scn", 1, 0, 400, 400},
-    {"balls-s2", FROM_FILE, "balls-s2.scn", 1, 0, 400, 400},
-    {"sphere-1k", SPHERE, NULL, 0, 1000, 256, 256},
-    {"sphere-10k", SPHERE, NULL, 0, 10000, 128, 128},
-    {"sphere-100k", SPHERE, NULL, 0, 100000, 64, 64},
-    {"sphere-1M", SPHERE, NULL, 0, 1000000, 32, 32},
-    {"soup-1k", SOUP, NULL, 0, 1000, 256, 256},
-    {"soup-10k", SOUP, NULL, 0, 10000, 128, 128},
-    {"soup-100k", SOUP, NULL, 0, 100000, 64, 64},
-    {"soup-1M", SOUP, NULL, 0, 1000000, 32, 32},
+    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 400, 400, 0},
+    {"cubes", FROM_FILE, "scenes/cubes.scn", 0, 0, 1920, 1080, 0},
+    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 400, 400, 0},
+    {"mirror", FROM_FILE, "scenes/mirror.scn", 0, 0, 1920, 1080, 0},
+    {"tetra-s2", FROM_FILE, "tetra-s2.scn", 1, 0, 400, 400, 0},
+    {"tetra-s4", FROM_FILE, "tetra-s4.scn", 1, 0, 400, 400, 0},
+    {"teapot-s2", FROM_FILE, "teapot-s2.scn", 1, 0, 400, 400, 0},
+    {"mount-s2", FROM_FILE, "mount-s2.scn", 1, 0, 400, 400, 0},
+    {"tetra-s6", FROM_FILE, "tetra-s6.scn", 1, 0, 400, 400, 0},
+    {"gears-s2", FROM_FILE, "gears-s2.scn", 1, 0, 400, 400, 0},
+    {"balls-s2", FROM_FILE, "balls-s2.scn", 1, 0, 400, 400, 0},
+    {"sphere-1k", SPHERE, NULL, 0, 1000, 256, 256, 0},
+    {"sphere-10k", SPHERE, NULL, 0, 10000, 128, 128, 0},
+    {"sphere-100k", SPHERE, NULL, 0, 100000, 64, 64, 0},
+    {"sphere-1M", SPHERE, NULL, 0, 1000000, 32, 32, 0},
+    {"soup-1k", SOUP, NULL, 0, 1000, 256, 256, 0},
+    {"soup-10k", SOUP, NULL, 0, 10000, 128, 128, 0},
+    {"soup-100k", SOUP, NULL, 0, 100000, 64, 64, 0},
+    {"soup-1M", SOUP, NULL, 0, 1000000, 32, 32, 0},
     {"sphere-100k", SPHERE, NULL, 0, 100000, 400, 400, 1},
     {"sphere-1M", SPHERE, NULL, 0, 1000000, 400, 400, 1},
     {"soup-1M", SOUP, NULL, 0, 1000000, 400, 400, 1},
@@ -95,7 +109,9 @@ static const setting settings[] = {
 
 typedef struct result {
     double times[MAX_RUNS];
+    double cycles[MAX_RUNS], instructions[MAX_RUNS];    /* < 0: no counter */
     double seconds;         /* median */
+    double median_cycles, median_instructions;
     rt_render_stats stats;  /* of the last run */
 } result;
 
@@ -128,6 +144,55 @@ static rt_status make_scene(const entry *e, const char *shared_dir,
     return rt_scene_load(path, scene, error);
 }
 
+/* A hardware counter of this process's threads (those it starts later
+ * included), or -1 where the kernel does not give one. */
+static int counter_open(uint64_t config)
+{
+#if defined(__linux__)
+    struct perf_event_attr attr;
+    memset(&attr, 0, sizeof attr);
+    attr.size = sizeof attr;
+    attr.type = PERF_TYPE_HARDWARE;
+    attr.config = config;
+    attr.disabled = 1;
+    attr.inherit = 1;
+    attr.exclude_kernel = 1;
+    attr.exclude_hv = 1;
+    return (int)syscall(SYS_perf_event_open, &attr, 0, -1, -1, 0);
+#else
+    (void)config;
+    return -1;
+#endif
+}
+
+static void counter_start(int fd)
+{
+#if defined(__linux__)
+    if (fd >= 0) {
+        ioctl(fd, PERF_EVENT_IOC_RESET, 0);
+        ioctl(fd, PERF_EVENT_IOC_ENABLE, 0);
+    }
+#else
+    (void)fd;
+#endif
+}
+
+/* The count since counter_start, or -1. */
+static double counter_stop(int fd)
+{
+#if defined(__linux__)
+    uint64_t value;
+    if (fd >= 0) {
+        ioctl(fd, PERF_EVENT_IOC_DISABLE, 0);
+        if (read(fd, &value, sizeof value) == (ssize_t)sizeof value)
+            return (double)value;
+    }
+#else
+    (void)fd;
+#endif
+    return -1.0;
+}
+
 /* Renders once with setting *s and adds the time to r->times; 0 on
  * failure. */
 static int measure_once(const rt_scene *scene, const setting *s,
@@ -142,14 +207,26 @@ static int measure_once(const rt_scene *scene, const setting *s,
     options.stats = &r->stats;
     options.width = image->width;
     options.height = image->height;
+    int cycles = counter_open(PERF_COUNT_HW_CPU_CYCLES);
+    int instructions = counter_open(PERF_COUNT_HW_INSTRUCTIONS);
+    counter_start(cycles);
+    counter_start(instructions);
     double start = now();
     rt_status status = rt_render(scene, &options, image, NULL);
+    r->times[run] = now() - start;
+    r->cycles[run] = counter_stop(cycles);
+    r->instructions[run] = counter_stop(instructions);
+#if defined(__linux__)
+    if (cycles >= 0)
+        close(cycles);
+    if (instructions >= 0)
+        close(instructions);
+#endif
     if (status != RT_OK) {
         fprintf(stderr, "\nrt-perf: %s: %s\n", s->name,
                 rt_status_string(status));
         return 0;
     }
-    r->times[run] = now() - start;
     return 1;
 }
 
@@ -244,6 +321,12 @@ int main(int argc, char **argv)
             result *r = &results[e][s];
             qsort(r->times, (size_t)runs, sizeof r->times[0], compare_double);
             r->seconds = r->times[runs / 2];
+            qsort(r->cycles, (size_t)runs, sizeof r->cycles[0],
+                  compare_double);
+            r->median_cycles = r->cycles[runs / 2];
+            qsort(r->instructions, (size_t)runs, sizeof r->instructions[0],
+                  compare_double);
+            r->median_instructions = r->instructions[runs / 2];
         }
         if (ok) {
             done[e] = 1;
@@ -367,6 +450,35 @@ int main(int argc, char **argv)
                (unsigned long long)st->reflection_rays_skipped,
                (unsigned long long)st->ray_facet_tests,
                (unsigned long long)st->ray_facet_tests_skipped);
+    }
+
+    printf("\nPer-ray budget (double, fast kernel, 1 thread, medians): rays "
+           "by kind per camera ray, ray-facet tests per ray, time and, where "
+           "the hardware counters can be read, cycles and instructions per "
+           "ray (all kinds together) and per test.\n\n"
+           "| scene | image | shadow/camera | reflection/camera | tests/ray | "
+           "ns/ray | cycles/ray | instructions/ray | cycles/test |\n"
+           "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    for (int e = 0; e < ENTRY_COUNT; e++) {
+        if (!done[e] || entries[e].octree_only)
+            continue;
+        const result *r = &results[e][1];
+        const rt_render_stats *st = &r->stats;
+        double n = (double)rays(st), camera = (double)st->camera_rays;
+        char cycles[32] = "n/a", instructions[32] = "n/a", per_test[32] = "n/a";
+        if (r->median_cycles >= 0) {
+            snprintf(cycles, sizeof cycles, "%.0f", r->median_cycles / n);
+            snprintf(per_test, sizeof per_test, "%.1f",
+                     r->median_cycles / (double)st->ray_facet_tests);
+        }
+        if (r->median_instructions >= 0)
+            snprintf(instructions, sizeof instructions, "%.0f",
+                     r->median_instructions / n);
+        printf("| %s | %dx%d | %.3f | %.3f | %.1f | %.1f | %s | %s | %s |\n",
+               entries[e].name, entries[e].width, entries[e].height,
+               st->shadow_rays / camera, st->reflection_rays / camera,
+               (double)st->ray_facet_tests / n, r->seconds / n * 1e9, cycles,
+               instructions, per_test);
     }
     return failures ? 1 : 0;
 }
