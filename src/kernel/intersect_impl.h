@@ -13,6 +13,14 @@
  * between two facets that share an edge.
  */
 
+/* The test is inlined into each loop that calls it (the brute-force loops
+ * of a handful of facets call it for most rays). */
+#if defined(__GNUC__)
+#define INTERSECT_INLINE __attribute__((always_inline))
+#else
+#define INTERSECT_INLINE
+#endif
+
 /* A ray prepared for the watertight test. */
 typedef struct ray {
     vec origin;
@@ -84,7 +92,8 @@ typedef struct hit {
  * where two of them have strictly opposite signs: keep both in step, and
  * keep that rejection the first thing this test does with u, v, w.
  */
-static int intersect(const ray *r, const tri *f, REAL t_max, hit *h)
+static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
+                                             REAL t_max, hit *h)
 {
     vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
         c = sub(f->c, r->origin);
