@@ -56,7 +56,7 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
 
 /* The loops a trace uses: AVX2 when the processor has it and the caller
  * did not ask for the scalar ones.  Both give the same hits. */
-static int nearest_brute(const KERNEL_T *k, int simd,
+static inline int nearest_brute(const KERNEL_T *k, int simd,
                          const KERNEL_EYE_T *eye, const ray *r, REAL t_max, int skip, hit *h,
                    uint64_t *tests)
 {
@@ -73,7 +73,7 @@ static int nearest_brute(const KERNEL_T *k, int simd,
     return nearest_scalar(k, r, t_max, skip, h, tests);
 }
 
-static int any_hit_brute(const KERNEL_T *k, int simd, const ray *r,
+static inline int any_hit_brute(const KERNEL_T *k, int simd, const ray *r,
                          REAL t_max, int skip, uint64_t *tests,
                          uint64_t *saved)
 {
@@ -336,7 +336,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
 
 /* The queries a trace makes: through the octree when one is given, else
  * brute force. */
-static int nearest(const KERNEL_T *k, int simd, const octree *tree,
+static inline int nearest(const KERNEL_T *k, int simd, const octree *tree,
                    const KERNEL_EYE_T *eye, const ray *r, REAL t_max,
                    int skip, hit *h, rt_counters *counters)
 {
@@ -345,7 +345,7 @@ static int nearest(const KERNEL_T *k, int simd, const octree *tree,
     return nearest_brute(k, simd, eye, r, t_max, skip, h, &counters->tests);
 }
 
-static int any_hit(const KERNEL_T *k, int simd, const octree *tree,
+static inline int any_hit(const KERNEL_T *k, int simd, const octree *tree,
                    const ray *r, REAL t_max, int skip, rt_counters *counters)
 {
     if (tree != NULL)

@@ -30,7 +30,7 @@
  * normal is accurate for any shape, see scene.c), the plane's point is
  * used instead.  `direction` is the ray's, in the units of t.
  */
-static vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
+static inline vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
                      vec *error_bound)
 {
     vec pa = scale(f->a, h->b0), pb = scale(f->b, h->b1),
