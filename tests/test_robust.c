@@ -183,7 +183,9 @@ END_TEST
 
 static Suite *group_suite(const robust_group *group)
 {
-    char name[64];
+    /* Check keeps the name's pointer until the suite is freed: static,
+     * since one group's suite runs per process. */
+    static char name[64];
     snprintf(name, sizeof name, "robust_%s", group->name);
     Suite *s = suite_create(name);
     TCase *tc = rb_tcase("cases");
