@@ -36,5 +36,5 @@ elseif(NOT RAYTRACE_MPI STREQUAL "OFF")
   message(STATUS "rt-export-mpi disabled: MPI not found "
                  "(Debian: apt-get install libopenmpi-dev openmpi-bin)")
 endif()
-add_feature_info(mpi "TARGET raytrace_rt_export_mpi"
+raytrace_feature_info(mpi "TARGET raytrace_rt_export_mpi"
   "rt-export-mpi, rendering over MPI (RAYTRACE_MPI)")

@@ -52,7 +52,7 @@ elseif(_rt_viewer_mode STREQUAL "ON")
 elseif(_rt_viewer_mode STREQUAL "AUTO" AND RAYTRACE_TOP_LEVEL)
   message(STATUS "viewer disabled: SDL2 not found")
 endif()
-add_feature_info(rt-view RAYTRACE_VIEWER_ENABLED
+raytrace_feature_info(rt-view RAYTRACE_VIEWER_ENABLED
   "SDL2 window showing a render as it happens (RAYTRACE_VIEWER=${_rt_viewer_mode})")
 
 if(RAYTRACE_VIEWER_ENABLED)

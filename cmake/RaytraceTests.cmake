@@ -40,5 +40,5 @@ if(NOT _rt_tests_mode STREQUAL "OFF")
     endif()
   endif()
 endif()
-add_feature_info(tests RAYTRACE_TESTS_ENABLED
+raytrace_feature_info(tests RAYTRACE_TESTS_ENABLED
   "the Check test suites (RAYTRACE_TESTS=${_rt_tests_mode})")
