@@ -60,6 +60,7 @@ if(RAYTRACE_VIEWER_ENABLED)
 
   add_library(raytrace_viewer STATIC
     viewer/view_app.c
+    viewer/view_overlay.c
     viewer/view_scene.c
     viewer/view_session.c
     viewer/view_window.c)
@@ -68,6 +69,34 @@ if(RAYTRACE_VIEWER_ENABLED)
   target_link_libraries(raytrace_viewer PUBLIC raytrace::raytrace
     ${RAYTRACE_SDL2_TARGET} Threads::Threads)
   raytrace_set_warnings(raytrace_viewer)
+
+  # SDL2_ttf, optional: the click overlay's text and the help in the
+  # window (Debian: libsdl2-ttf-dev and fonts-dejavu-core).  Without it
+  # that text goes to standard output only.
+  set(RAYTRACE_VIEWER_TTF_TARGET "")
+  find_package(SDL2_ttf CONFIG QUIET)
+  if(TARGET SDL2_ttf::SDL2_ttf)
+    set(RAYTRACE_VIEWER_TTF_TARGET SDL2_ttf::SDL2_ttf)
+  else()
+    find_package(PkgConfig QUIET)
+    if(PKG_CONFIG_FOUND)
+      pkg_check_modules(RAYTRACE_SDL2_TTF QUIET IMPORTED_TARGET SDL2_ttf)
+      if(RAYTRACE_SDL2_TTF_FOUND)
+        set(RAYTRACE_VIEWER_TTF_TARGET PkgConfig::RAYTRACE_SDL2_TTF)
+      endif()
+    endif()
+  endif()
+  set(RAYTRACE_VIEWER_TTF_ENABLED OFF)
+  if(RAYTRACE_VIEWER_TTF_TARGET)
+    set(RAYTRACE_VIEWER_TTF_ENABLED ON)
+    target_link_libraries(raytrace_viewer PRIVATE
+      ${RAYTRACE_VIEWER_TTF_TARGET})
+    target_compile_definitions(raytrace_viewer PRIVATE RAYTRACE_VIEWER_TTF)
+  elseif(RAYTRACE_TOP_LEVEL)
+    message(STATUS "rt-view text in the window disabled: SDL2_ttf not found")
+  endif()
+  raytrace_feature_info(rt-view-text RAYTRACE_VIEWER_TTF_ENABLED
+    "rt-view shows the ray tree and its help in the window (SDL2_ttf)")
 
   raytrace_add_program(rt-view rt-view.c LIBS raytrace_viewer raytrace_cli)
 endif()

@@ -1009,6 +1009,183 @@ START_TEST(without_a_display_rt_view_says_so_and_exits_1_at_once)
 }
 END_TEST
 
+/* ---- the click overlay: window -> pixel, projection, drawing ---- */
+
+START_TEST(window_point_maps_to_the_image_pixel_under_it)
+{
+    /* A 100x50 image in a 200x200 output: scale 2, letterboxed to rows
+     * 50..149. */
+    int i = -1, j = -1;
+    ck_assert(view_output_to_pixel(100, 50, 200, 200, 0.5, 50.5, &i, &j));
+    ck_assert_int_eq(i, 0);
+    ck_assert_int_eq(j, 0);
+    ck_assert(view_output_to_pixel(100, 50, 200, 200, 199.5, 149.5, &i, &j));
+    ck_assert_int_eq(i, 99);
+    ck_assert_int_eq(j, 49);
+    ck_assert(view_output_to_pixel(100, 50, 200, 200, 21.5, 61.5, &i, &j));
+    ck_assert_int_eq(i, 10);
+    ck_assert_int_eq(j, 5);
+    /* The bands above and below the picture are no pixel. */
+    ck_assert(!view_output_to_pixel(100, 50, 200, 200, 100.5, 49.5, &i, &j));
+    ck_assert(!view_output_to_pixel(100, 50, 200, 200, 100.5, 150.5, &i,
+                                    &j));
+    /* A window showing the image at its own size maps one to one. */
+    rt_scene *scene = load_scene("scenes/cubes.scn");
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    view_window *window = open_window(info.width, info.height);
+    view_session *session = new_session(scene, 1, NULL, NULL);
+    ck_assert(!view_window_pixel_at(window, 3, 4, &i, &j));
+    ck_assert(view_window_attach(window, session, NULL, 0));
+    ck_assert(view_window_pixel_at(window, 3, 4, &i, &j));
+    ck_assert_int_eq(i, 3);
+    ck_assert_int_eq(j, 4);
+    ck_assert(view_window_pixel_at(window, info.width - 1, info.height - 1,
+                                   &i, &j));
+    ck_assert_int_eq(i, info.width - 1);
+    ck_assert_int_eq(j, info.height - 1);
+    view_window_attach(window, NULL, NULL, 0);
+    view_session_destroy(session);
+    close_window(window);
+}
+END_TEST
+
+/* Projection of `scene` at `width` x `height` (0: the scene's) with
+ * `region`. */
+static view_projection projection_of(const rt_scene *scene, int width,
+                                     int height, rt_region region)
+{
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.width = width;
+    options.height = height;
+    options.region = region;
+    view_projection projection;
+    view_projection_init(&projection, scene, &options);
+    return projection;
+}
+
+static rt_vec3 along(rt_ray ray, double t)
+{
+    rt_vec3 p = {ray.origin.x + t * ray.direction.x,
+                 ray.origin.y + t * ray.direction.y,
+                 ray.origin.z + t * ray.direction.z};
+    return p;
+}
+
+START_TEST(camera_ray_of_a_pixel_projects_back_to_its_centre)
+{
+    rt_scene *scene = load_scene("scenes/cubes.scn");
+    const int sizes[][2] = {{0, 0}, {200, 100}, {64, 256}};
+    for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++) {
+        rt_region none = {0, 0, 0, 0};
+        view_projection projection =
+            projection_of(scene, sizes[s][0], sizes[s][1], none);
+        rt_camera camera = projection.camera;
+        camera.width = projection.width;
+        camera.height = projection.height;
+        const int pixels[][2] = {{0, 0}, {17, 3}, {camera.width - 1, 0},
+                                 {camera.width / 2, camera.height - 1}};
+        for (size_t p = 0; p < sizeof pixels / sizeof *pixels; p++) {
+            rt_ray ray = rt_camera_ray(&camera, pixels[p][0], pixels[p][1]);
+            /* At t = 1 (the screen) and farther along the same ray. */
+            for (double t = 1; t <= 9; t += 4) {
+                double x, y;
+                ck_assert(view_project_point(&projection, along(ray, t), &x,
+                                             &y));
+                ck_assert_double_eq_tol(x, pixels[p][0] + 0.5, 1e-9);
+                ck_assert_double_eq_tol(y, pixels[p][1] + 0.5, 1e-9);
+            }
+        }
+    }
+    /* With a region, coordinates are the region's. */
+    rt_region region = {10, 20, 50, 60};
+    view_projection projection = projection_of(scene, 0, 0, region);
+    rt_ray ray = rt_camera_ray(&projection.camera, 12, 25);
+    double x, y;
+    ck_assert(view_project_point(&projection, along(ray, 1), &x, &y));
+    ck_assert_double_eq_tol(x, 2.5, 1e-9);
+    ck_assert_double_eq_tol(y, 5.5, 1e-9);
+    rt_scene_destroy(scene);
+}
+END_TEST
+
+START_TEST(segments_behind_the_observer_are_clipped)
+{
+    rt_scene *scene = load_scene("scenes/cubes.scn");
+    rt_region none = {0, 0, 0, 0};
+    view_projection projection = projection_of(scene, 0, 0, none);
+    rt_ray ray = rt_camera_ray(&projection.camera, 40, 30);
+    double x, y, line[4];
+    /* Behind the observer: no projection. */
+    ck_assert(!view_project_point(&projection, along(ray, -1), &x, &y));
+    ck_assert(!view_project_segment(&projection, along(ray, -2),
+                                    along(ray, -1), line));
+    /* From behind to in front: the part in front, ending where the point in
+     * front projects. */
+    ck_assert(view_project_segment(&projection, along(ray, -1),
+                                   along(ray, 2), line));
+    ck_assert_double_eq_tol(line[2], 40.5, 1e-9);
+    ck_assert_double_eq_tol(line[3], 30.5, 1e-9);
+    ck_assert(isfinite(line[0]) && isfinite(line[1]));
+    rt_scene_destroy(scene);
+}
+END_TEST
+
+static int pixel_is(const rt_image *image, int x, int y,
+                    const unsigned char rgb[3])
+{
+    const unsigned char *p = rt_image_pixel(image, x, y);
+    return p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
+}
+
+START_TEST(overlay_draws_each_ray_in_its_colour_along_its_projection)
+{
+    rt_scene *scene = load_scene("scenes/cubes.scn");
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    view_window *window = open_window(info.width, info.height);
+    view_session *session = new_session(scene, 1, NULL, NULL);
+    ck_assert(view_window_attach(window, session, NULL, 0));
+    rt_region none = {0, 0, 0, 0};
+    view_projection projection =
+        projection_of(view_session_scene(session), 0, 0, none);
+    const rt_camera *camera = &projection.camera;
+    /* Screen points at pixel centres: a horizontal shadow ray on row 20
+     * from column 10 to 90, and a vertical reflected ray at column 150
+     * from row 30 to 120 (far beyond the screen), marked. */
+    view_segment segments[2] = {
+        {VIEW_RAY_SHADOW, along(rt_camera_ray(camera, 10, 20), 1),
+         along(rt_camera_ray(camera, 90, 20), 1), 0},
+        {VIEW_RAY_REFLECTED, along(rt_camera_ray(camera, 150, 30), 1),
+         along(rt_camera_ray(camera, 150, 120), 5), 1},
+    };
+    ck_assert(view_window_set_overlay(window, &projection, segments, 2));
+    rt_image frame = read_window(window);
+    unsigned char yellow[3], cyan[3];
+    view_ray_color(VIEW_RAY_SHADOW, yellow);
+    view_ray_color(VIEW_RAY_REFLECTED, cyan);
+    for (int x = 10; x <= 90; x++)
+        ck_assert_msg(pixel_is(&frame, x, 20, yellow), "(%d, 20)", x);
+    ck_assert(!pixel_is(&frame, 50, 22, yellow));
+    for (int y = 30; y <= 120; y++)
+        ck_assert_msg(pixel_is(&frame, 150, y, cyan), "(150, %d)", y);
+    /* The mark: a square around the hit. */
+    ck_assert(pixel_is(&frame, 147, 120, cyan));
+    ck_assert(pixel_is(&frame, 153, 123, cyan));
+    rt_image_release(&frame);
+
+    /* Cleared: the placeholder again. */
+    ck_assert(view_window_set_overlay(window, NULL, NULL, 0));
+    frame = read_window(window);
+    ck_assert(row_is_placeholder(&frame, 20));
+    rt_image_release(&frame);
+    view_window_attach(window, NULL, NULL, 0);
+    view_session_destroy(session);
+    close_window(window);
+}
+END_TEST
+
 static Suite *viewer_suite(void)
 {
     Suite *suite = suite_create("viewer");
@@ -1040,6 +1217,15 @@ static Suite *viewer_suite(void)
     tcase_add_test(helpers, bad_scene_reports_file_line_and_column);
     tcase_add_test(helpers, numbered_names_are_claimed_exclusively);
     suite_add_tcase(suite, helpers);
+
+    TCase *overlay = tcase_create("overlay");
+    tcase_set_timeout(overlay, 120);
+    tcase_add_test(overlay, window_point_maps_to_the_image_pixel_under_it);
+    tcase_add_test(overlay, camera_ray_of_a_pixel_projects_back_to_its_centre);
+    tcase_add_test(overlay, segments_behind_the_observer_are_clipped);
+    tcase_add_test(overlay,
+                   overlay_draws_each_ray_in_its_colour_along_its_projection);
+    suite_add_tcase(suite, overlay);
 
     TCase *app = tcase_create("app");
     tcase_set_timeout(app, 120);

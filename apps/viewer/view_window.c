@@ -8,9 +8,24 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
+#ifdef RAYTRACE_VIEWER_TTF
+#include <SDL_ttf.h>
+#endif
+
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The monospaced font of the text panel, first found (Debian's
+ * fonts-dejavu-core, then Fedora's and Arch's places for it). */
+static const char *const font_paths[] = {
+    "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf",
+    "/usr/share/fonts/dejavu-sans-mono-fonts/DejaVuSansMono.ttf",
+    "/usr/share/fonts/TTF/DejaVuSansMono.ttf",
+};
+#define FONT_POINTS 13
+#define MARK_SIZE 7         /* side of the square marking a hit, in pixels */
 
 struct view_window {
     SDL_Window *window;
@@ -20,6 +35,14 @@ struct view_window {
     view_session *session;
     unsigned generation;        /* of the picture in the texture */
     int *rows;                  /* scratch for take_finished_rows */
+    view_projection projection; /* of the overlay's rays */
+    view_segment *segments;     /* the overlay's rays; NULL: none */
+    int segment_count;
+    SDL_Texture *text;          /* the text panel, NULL: none */
+    int text_width, text_height;
+#ifdef RAYTRACE_VIEWER_TTF
+    TTF_Font *font;             /* NULL when no font was found */
+#endif
 };
 
 /* Background around the letterboxed picture. */
@@ -140,6 +163,16 @@ view_window *view_window_create(const char *title, int width, int height,
         free(window);
         return NULL;
     }
+    SDL_SetRenderDrawBlendMode(window->renderer, SDL_BLENDMODE_BLEND);
+#ifdef RAYTRACE_VIEWER_TTF
+    if (TTF_Init() == 0) {
+        for (size_t i = 0; i < sizeof font_paths / sizeof *font_paths &&
+                           window->font == NULL; i++)
+            window->font = TTF_OpenFont(font_paths[i], FONT_POINTS);
+        if (window->font == NULL)
+            TTF_Quit();
+    }
+#endif
     return window;
 }
 
@@ -159,6 +192,14 @@ void view_window_destroy(view_window *window)
     if (window == NULL)
         return;
     detach(window);
+    view_window_set_overlay(window, NULL, NULL, 0);
+    view_window_set_text(window, NULL);
+#ifdef RAYTRACE_VIEWER_TTF
+    if (window->font) {
+        TTF_CloseFont(window->font);
+        TTF_Quit();
+    }
+#endif
     SDL_DestroyRenderer(window->renderer);
     SDL_DestroyWindow(window->window);
     free(window);
@@ -243,7 +284,80 @@ int view_window_sync(view_window *window)
     return changed;
 }
 
-/* Clears the window and copies the picture, scaled to fit and centred. */
+/* Clips the segment (x0, y0)-(x1, y1) to `box` (Liang-Barsky), so that
+ * far projections stay within int; 0 when nothing is left. */
+static int clip_to_box(double line[4], const double box[4])
+{
+    double dx = line[2] - line[0], dy = line[3] - line[1];
+    double p[4] = {-dx, dx, -dy, dy};
+    double q[4] = {line[0] - box[0], box[2] - line[0], line[1] - box[1],
+                   box[3] - line[1]};
+    double enter = 0, leave = 1;
+    for (int k = 0; k < 4; k++) {
+        if (p[k] == 0) {
+            if (q[k] < 0)
+                return 0;
+            continue;
+        }
+        double r = q[k] / p[k];
+        if (p[k] < 0 && r > enter)
+            enter = r;
+        else if (p[k] > 0 && r < leave)
+            leave = r;
+    }
+    if (enter > leave)
+        return 0;
+    double x0 = line[0], y0 = line[1];
+    line[0] = x0 + enter * dx;
+    line[1] = y0 + enter * dy;
+    line[2] = x0 + leave * dx;
+    line[3] = y0 + leave * dy;
+    return 1;
+}
+
+/* Draws the overlay's rays over the picture placed at `target`: each a
+ * one-pixel line of its kind's colour, its hit marked by a square. */
+static void draw_overlay(view_window *window, const SDL_Rect *target)
+{
+    double sx = (double)target->w / window->width;
+    double sy = (double)target->h / window->height;
+    double box[4] = {target->x, target->y, target->x + target->w - 1,
+                     target->y + target->h - 1};
+    for (int pass = 0; pass < 2; pass++) {
+        /* The lines first, then the marks over them. */
+        for (int k = 0; k < window->segment_count; k++) {
+            const view_segment *segment = &window->segments[k];
+            double line[4];
+            if (!view_project_segment(&window->projection, segment->from,
+                                      segment->to, line))
+                continue;
+            for (int c = 0; c < 4; c += 2) {
+                line[c] = target->x + line[c] * sx;
+                line[c + 1] = target->y + line[c + 1] * sy;
+            }
+            double end_x = line[2], end_y = line[3];
+            unsigned char rgb[3];
+            view_ray_color(segment->kind, rgb);
+            SDL_SetRenderDrawColor(window->renderer, rgb[0], rgb[1], rgb[2],
+                                   255);
+            if (pass == 0 && clip_to_box(line, box)) {
+                SDL_RenderDrawLine(window->renderer, (int)floor(line[0]),
+                                   (int)floor(line[1]), (int)floor(line[2]),
+                                   (int)floor(line[3]));
+            } else if (pass == 1 && segment->mark && end_x >= box[0] &&
+                       end_x <= box[2] && end_y >= box[1] &&
+                       end_y <= box[3]) {
+                SDL_Rect mark = {(int)floor(end_x) - MARK_SIZE / 2,
+                                 (int)floor(end_y) - MARK_SIZE / 2,
+                                 MARK_SIZE, MARK_SIZE};
+                SDL_RenderDrawRect(window->renderer, &mark);
+            }
+        }
+    }
+}
+
+/* Clears the window and copies the picture, scaled to fit and centred,
+ * then the overlay and the text panel over it. */
 static void render(view_window *window)
 {
     SDL_SetRenderDrawColor(window->renderer, background.r, background.g,
@@ -255,15 +369,20 @@ static void render(view_window *window)
     if (SDL_GetRendererOutputSize(window->renderer, &out_width,
                                   &out_height) != 0)
         return;
-    double sx = (double)out_width / window->width;
-    double sy = (double)out_height / window->height;
-    double scale = sx < sy ? sx : sy;
-    SDL_Rect target;
-    target.w = (int)(window->width * scale + 0.5);
-    target.h = (int)(window->height * scale + 0.5);
-    target.x = (out_width - target.w) / 2;
-    target.y = (out_height - target.h) / 2;
+    int rect[4];
+    view_letterbox(window->width, window->height, out_width, out_height,
+                   rect);
+    SDL_Rect target = {rect[0], rect[1], rect[2], rect[3]};
     SDL_RenderCopy(window->renderer, window->texture, NULL, &target);
+    draw_overlay(window, &target);
+    if (window->text) {
+        SDL_Rect panel = {4, 4, window->text_width + 8,
+                          window->text_height + 8};
+        SDL_SetRenderDrawColor(window->renderer, 0, 0, 0, 192);
+        SDL_RenderFillRect(window->renderer, &panel);
+        SDL_Rect place = {8, 8, window->text_width, window->text_height};
+        SDL_RenderCopy(window->renderer, window->text, NULL, &place);
+    }
 }
 
 void view_window_draw(view_window *window)
@@ -322,4 +441,77 @@ int view_window_display(const view_window *window)
 {
     int display = SDL_GetWindowDisplayIndex(window->window);
     return display < 0 ? 0 : display;
+}
+
+int view_window_set_overlay(view_window *window,
+                            const view_projection *projection,
+                            const view_segment *segments, int count)
+{
+    free(window->segments);
+    window->segments = NULL;
+    window->segment_count = 0;
+    if (count <= 0)
+        return 1;
+    window->segments = malloc(sizeof *segments * (size_t)count);
+    if (window->segments == NULL)
+        return 0;
+    memcpy(window->segments, segments, sizeof *segments * (size_t)count);
+    window->segment_count = count;
+    window->projection = *projection;
+    return 1;
+}
+
+int view_window_set_text(view_window *window, const char *text)
+{
+    if (window->text)
+        SDL_DestroyTexture(window->text);
+    window->text = NULL;
+    if (text == NULL || text[0] == '\0')
+        return 1;
+#ifdef RAYTRACE_VIEWER_TTF
+    if (window->font == NULL)
+        return 0;
+    SDL_Color white = {235, 235, 235, 255};
+    int out_width = 640, out_height;
+    SDL_GetRendererOutputSize(window->renderer, &out_width, &out_height);
+    SDL_Surface *surface = TTF_RenderUTF8_Blended_Wrapped(
+        window->font, text, white, (Uint32)(out_width > 32 ? out_width - 16
+                                                             : 16));
+    if (surface == NULL)
+        return 0;
+    window->text = SDL_CreateTextureFromSurface(window->renderer, surface);
+    window->text_width = surface->w;
+    window->text_height = surface->h;
+    SDL_FreeSurface(surface);
+    return window->text != NULL;
+#else
+    return 0;
+#endif
+}
+
+int view_window_pixel_at(view_window *window, int x, int y, int *i, int *j)
+{
+    if (window->texture == NULL)
+        return 0;
+    int width, height, out_width, out_height;
+    SDL_GetWindowSize(window->window, &width, &height);
+    if (SDL_GetRendererOutputSize(window->renderer, &out_width,
+                                  &out_height) != 0 || width <= 0 ||
+        height <= 0)
+        return 0;
+    /* Window points to drawable pixels (they differ on high-DPI). */
+    double ox = (x + 0.5) * out_width / width;
+    double oy = (y + 0.5) * out_height / height;
+    return view_output_to_pixel(window->width, window->height, out_width,
+                                out_height, ox, oy, i, j);
+}
+
+int view_window_has_text(const view_window *window)
+{
+#ifdef RAYTRACE_VIEWER_TTF
+    return window->font != NULL;
+#else
+    (void)window;
+    return 0;
+#endif
 }

@@ -19,6 +19,7 @@
 #include <stddef.h>
 
 #include "raytrace/raytrace.h"
+#include "view_overlay.h"
 #include "view_session.h"
 
 typedef struct view_window view_window;
@@ -99,6 +100,25 @@ int view_window_display(const view_window *window);
  * keeping the aspect ratio (each side at least 1). */
 void view_fit_size(int width, int height, int max_width, int max_height,
                    int *out_width, int *out_height);
+
+/* The rays drawn over the picture (copied; count 0 or segments NULL: none),
+ * projected with `projection`.  Returns 0 when out of memory (none then). */
+int view_window_set_overlay(view_window *window,
+                            const view_projection *projection,
+                            const view_segment *segments, int count);
+
+/* The text shown in a panel at the window's top left (NULL or "": none),
+ * with SDL2_ttf and DejaVu Sans Mono.  Returns 0 when it cannot be shown
+ * (a build without SDL2_ttf, no font found): the caller prints it. */
+int view_window_set_text(view_window *window, const char *text);
+
+/* Non-zero when this window can show text (SDL2_ttf and a font). */
+int view_window_has_text(const view_window *window);
+
+/* The image pixel (*i, *j) under window point (x, y) (SDL's mouse
+ * coordinates), given the scaling and letterboxing of the picture; 0 when
+ * the point is outside the picture or nothing is shown. */
+int view_window_pixel_at(view_window *window, int x, int y, int *i, int *j);
 
 /* The placeholder's colour at image pixel (x, y). */
 void view_placeholder_color(int x, int y, unsigned char rgb[3]);
