@@ -33,6 +33,7 @@
 #ifndef RAYTRACE_RAYTRACE_H
 #define RAYTRACE_RAYTRACE_H
 
+#include "raytrace/explain.h"
 #include "raytrace/image.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
