@@ -21,6 +21,7 @@
 #include "error.h"
 #include "raytrace/render.h"
 #include "kernel/kernel.h"
+#include "render_internal.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -135,7 +136,8 @@ unsigned char rt_channel_to_byte(double value)
 rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
 {
     rt_counters counters = {0};
-    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL, 0};
+    rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL, 0,
+                                  NULL};
     if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
@@ -229,46 +231,58 @@ static rt_color trace(const job *j, rt_ray ray, rt_counters *counters)
                               &j->settings, counters);
 }
 
+/* The camera ray of sample (sx, sy) of pixel (i, row) of the whole image
+ * when there are n x n > 1 samples. */
+static inline rt_ray sample_ray(const job *j, int i, int row, int sx, int sy)
+{
+    int n = j->grid;
+    int stratified = j->options->sampling == RT_SAMPLING_STRATIFIED;
+    uint32_t sample = (uint32_t)(sy * n + sx);
+    double u = stratified ? hash_unit((uint32_t)i, (uint32_t)row, 2 * sample)
+                          : 0.5;
+    double v = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                      2 * sample + 1)
+                          : 0.5;
+    rt_ray ray = camera_ray_at(&j->camera, i + (sx + u) / n,
+                               row + (sy + v) / n);
+    if (j->aperture > 0.0) {
+        /* The lens stratum is the pixel's, transposed, so that where a
+         * sample falls in the pixel and on the lens are not aligned;
+         * jittered like it when stratified. */
+        double lu = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                           2 * (sample + n * n))
+                               : 0.5;
+        double lv = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
+                                           2 * (sample + n * n) + 1)
+                               : 0.5;
+        ray = lens_ray(j, ray, (sy + lu) / n, (sx + lv) / n);
+    }
+    return ray;
+}
+
+/* The camera ray of a pixel with one sample. */
+static inline rt_ray centre_ray(const job *j, int i, int row)
+{
+    rt_ray ray = rt_camera_ray(&j->camera, i, row);
+    if (j->aperture > 0.0)  /* one sample: the lens centre */
+        ray = lens_ray(j, ray, 0.5, 0.5);
+    return ray;
+}
+
 /* The colour of pixel (i, row) of the whole image: the mean of its
  * samples. */
 static rt_color render_pixel(const job *j, int i, int row,
                              rt_counters *counters, uint64_t *rays)
 {
-    const rt_camera *camera = &j->camera;
     int n = j->grid;
     if (n == 1) {
-        rt_ray ray = rt_camera_ray(camera, i, row);
-        if (j->aperture > 0.0)  /* one sample: the lens centre */
-            ray = lens_ray(j, ray, 0.5, 0.5);
         (*rays)++;
-        return trace(j, ray, counters);
+        return trace(j, centre_ray(j, i, row), counters);
     }
     rt_color sum = {0.0, 0.0, 0.0};
-    int stratified = j->options->sampling == RT_SAMPLING_STRATIFIED;
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
-            uint32_t sample = (uint32_t)(sy * n + sx);
-            double u = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
-                                              2 * sample)
-                                  : 0.5;
-            double v = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
-                                              2 * sample + 1)
-                                  : 0.5;
-            rt_ray ray = camera_ray_at(camera, i + (sx + u) / n,
-                                       row + (sy + v) / n);
-            if (j->aperture > 0.0) {
-                /* The lens stratum is the pixel's, transposed, so that
-                 * where a sample falls in the pixel and on the lens are
-                 * not aligned; jittered like it when stratified. */
-                double lu = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
-                                                   2 * (sample + n * n))
-                                       : 0.5;
-                double lv = stratified ? hash_unit((uint32_t)i, (uint32_t)row,
-                                                   2 * (sample + n * n) + 1)
-                                       : 0.5;
-                ray = lens_ray(j, ray, (sy + lu) / n, (sx + lv) / n);
-            }
-            rt_color c = trace(j, ray, counters);
+            rt_color c = trace(j, sample_ray(j, i, row, sx, sy), counters);
             sum.r += c.r, sum.g += c.g, sum.b += c.b;
             (*rays)++;
         }
@@ -536,6 +550,9 @@ static rt_status out_of_memory(rt_error *error)
                          "render");
 }
 
+static rt_status check_options(const rt_render_options *options,
+                                rt_error *error);
+
 /* The checks of rt_render_rows that image_size does not make. */
 static rt_status check_render(const rt_render_options *options, int width,
                               int height, int row_begin, int row_end,
@@ -553,14 +570,21 @@ static rt_status check_render(const rt_render_options *options, int width,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "the image's stride is %zu bytes, less than 3 "
                              "x its width %d", image->stride, image->width);
-    if (options->max_depth < 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "a depth of %d: expected 0 or more",
-                             options->max_depth);
     if (row_begin < 0 || row_end > image->height || row_begin > row_end)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "rows %d..%d: expected a band within 0..%d",
                              row_begin, row_end, image->height);
+    return check_options(options, error);
+}
+
+/* The checks of the options alone. */
+static rt_status check_options(const rt_render_options *options,
+                               rt_error *error)
+{
+    if (options->max_depth < 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a depth of %d: expected 0 or more",
+                             options->max_depth);
     if (options->precision != RT_PRECISION_DOUBLE &&
         options->precision != RT_PRECISION_FLOAT)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
@@ -577,6 +601,92 @@ static rt_status check_render(const rt_render_options *options, int width,
                              "an accel of %d: expected RT_ACCEL_AUTO, "
                              "RT_ACCEL_NONE or RT_ACCEL_OCTREE",
                              (int)options->accel);
+    return RT_OK;
+}
+
+/* The number of samples per side for `samples`, or 0 when it is not a
+ * square in 1..1024 (with the message in *error). */
+static int sample_grid(int samples, rt_error *error)
+{
+    int grid = 1;
+    while (grid * grid < samples && grid < 32)
+        grid++;
+    if (grid * grid != samples) {
+        rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                      "%d samples per pixel: expected a square n x n in "
+                      "1..1024 (1, 4, 9, ...)", samples);
+        return 0;
+    }
+    return grid;
+}
+
+/*
+ * Sets up *j for a render of `scene` with the (taken and checked) options:
+ * camera, lens, kernel, octree and the eye, which *eye_d / *eye_f own
+ * (free them with release_job).  `full_width` x `full_height` is the whole
+ * image's size.
+ */
+static rt_status prepare_job(job *j, const rt_scene *scene,
+                             const rt_render_options *options, int grid,
+                             int full_width, int full_height,
+                             rt_kernel_eye_d **eye_d, rt_kernel_eye_f **eye_f,
+                             rt_error *error)
+{
+    *eye_d = NULL;
+    *eye_f = NULL;
+    double aperture = options->aperture >= 0.0 ? options->aperture
+                                               : scene->camera.aperture;
+    double focal_distance = options->focal_distance > 0.0
+                                ? options->focal_distance
+                                : scene->camera.focal_distance;
+    if (!isfinite(aperture) || !isfinite(focal_distance))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a lens of aperture %g and focus %g: expected "
+                             "finite numbers", aperture, focal_distance);
+    j->scene = scene;
+    j->options = options;
+    j->camera = scene->camera;
+    j->x0 = options->region.x0;
+    j->y0 = options->region.y0;
+    j->grid = grid;
+    j->aperture = aperture;
+    j->focal_distance = focal_distance;
+    j->view_axis = v3_normalize(v3_sub(scene->camera.screen_center,
+                                       scene->camera.observer));
+    j->lens_right = v3_normalize(scene->camera.right);
+    j->lens_up = v3_normalize(scene->camera.up);
+    j->settings = (rt_trace_settings){options->max_depth,
+                                      options->fast_inv_sqrt != 0,
+                                      options->kernel, NULL, 0, NULL};
+    /* The float kernel is built by the first float render and kept with
+     * the scene: a double-only user never pays for float data. */
+    if (options->precision == RT_PRECISION_FLOAT) {
+        rt_status status = rt_scene_check_precision(scene, RT_PRECISION_FLOAT,
+                                                    error);
+        if (status != RT_OK)
+            return status;
+        j->kernel.f = rt__scene_kernel_f(scene);
+        if (j->kernel.f == NULL)
+            return out_of_memory(error);
+    } else {
+        j->kernel.d = scene->kernel;
+    }
+    if (!prepare_octree(j, scene))
+        return out_of_memory(error);
+    /* The camera rays' origin, subtracted from every vertex once for the
+     * whole render (only the fast brute-force loops read it). */
+    if (options->kernel != RT_KERNEL_SCALAR && !j->settings.octree) {
+        if (j->kernel.d != NULL)
+            j->settings.eye = *eye_d = rt__kernel_d_eye_create(
+                j->kernel.d, scene->camera.observer);
+        else
+            j->settings.eye = *eye_f = rt__kernel_f_eye_create(
+                j->kernel.f, scene->camera.observer);
+        if (j->settings.eye == NULL)
+            return out_of_memory(error);
+    }
+    j->camera.width = full_width;
+    j->camera.height = full_height;
     return RT_OK;
 }
 
@@ -601,66 +711,21 @@ rt_status rt_render_rows(const rt_scene *scene,
                               image, error);
     if (status != RT_OK)
         return status;
-    int grid = 1;
-    while (grid * grid < options->samples && grid < 32)
-        grid++;
-    if (grid * grid != options->samples)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "%d samples per pixel: expected a square "
-                             "n x n in 1..1024 (1, 4, 9, ...)",
-                             options->samples);
+    int grid = sample_grid(options->samples, error);
+    if (grid == 0)
+        return RT_ERR_ARGUMENT;
 
     double start = now_seconds();
-    double aperture = options->aperture >= 0.0 ? options->aperture
-                                               : scene->camera.aperture;
-    double focal_distance = options->focal_distance > 0.0
-                                ? options->focal_distance
-                                : scene->camera.focal_distance;
-    if (!isfinite(aperture) || !isfinite(focal_distance))
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "a lens of aperture %g and focus %g: expected "
-                             "finite numbers", aperture, focal_distance);
-    job j = {.scene = scene, .options = options, .camera = scene->camera,
-             .x0 = options->region.x0, .y0 = options->region.y0,
-             .width = width, .image = image,
-             .row_end = row_end, .grid = grid, .aperture = aperture,
-             .focal_distance = focal_distance,
-             .view_axis = v3_normalize(v3_sub(scene->camera.screen_center,
-                                              scene->camera.observer)),
-             .lens_right = v3_normalize(scene->camera.right),
-             .lens_up = v3_normalize(scene->camera.up),
-             .settings = {options->max_depth, options->fast_inv_sqrt != 0,
-                          options->kernel, NULL, 0}};
-    /* The float kernel is built by the first float render and kept with
-     * the scene: a double-only user never pays for float data. */
-    if (options->precision == RT_PRECISION_FLOAT) {
-        status = rt_scene_check_precision(scene, RT_PRECISION_FLOAT, error);
-        if (status != RT_OK)
-            return status;
-        j.kernel.f = rt__scene_kernel_f(scene);
-        if (j.kernel.f == NULL)
-            return out_of_memory(error);
-    } else {
-        j.kernel.d = scene->kernel;
+    job j = {.width = width, .image = image, .row_end = row_end};
+    rt_kernel_eye_d *eye_d;
+    rt_kernel_eye_f *eye_f;
+    status = prepare_job(&j, scene, options, grid, full_width, full_height,
+                         &eye_d, &eye_f, error);
+    if (status != RT_OK) {
+        rt__kernel_d_eye_free(eye_d);
+        rt__kernel_f_eye_free(eye_f);
+        return status;
     }
-    if (!prepare_octree(&j, scene))
-        return out_of_memory(error);
-    /* The camera rays' origin, subtracted from every vertex once for the
-     * whole render (only the fast brute-force loops read it). */
-    rt_kernel_eye_d *eye_d = NULL;
-    rt_kernel_eye_f *eye_f = NULL;
-    if (options->kernel != RT_KERNEL_SCALAR && !j.settings.octree) {
-        if (j.kernel.d != NULL)
-            j.settings.eye = eye_d = rt__kernel_d_eye_create(
-                j.kernel.d, scene->camera.observer);
-        else
-            j.settings.eye = eye_f = rt__kernel_f_eye_create(
-                j.kernel.f, scene->camera.observer);
-        if (j.settings.eye == NULL)
-            return out_of_memory(error);
-    }
-    j.camera.width = full_width;
-    j.camera.height = full_height;
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
     pthread_mutex_init(&j.callback_lock, NULL);
@@ -695,6 +760,86 @@ rt_status rt_render_rows(const rt_scene *scene,
     if (status == RT_ERR_NOMEM || j.totals.out_of_memory)
         return out_of_memory(error);
     return status;
+}
+
+/* One render's setup kept for tracing single pixels (render_internal.h). */
+struct rt_pixel_tracer {
+    rt_render_options options;
+    job j;
+    rt_kernel_eye_d *eye_d;
+    rt_kernel_eye_f *eye_f;
+    int width, height;      /* the output image's */
+};
+
+rt_status rt__pixel_tracer_create(const rt_scene *scene,
+                                  const rt_render_options *options,
+                                  rt_pixel_tracer **tracer, rt_error *error)
+{
+    *tracer = NULL;
+    if (scene == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "no scene");
+    rt_pixel_tracer *p = calloc(1, sizeof *p);
+    if (p == NULL)
+        return out_of_memory(error);
+    int full_width, full_height, grid = 0;
+    rt_status status = take_options(options, &p->options, error);
+    if (status == RT_OK)
+        status = image_size(scene, &p->options, &full_width, &full_height,
+                            &p->width, &p->height, error);
+    if (status == RT_OK)
+        status = check_options(&p->options, error);
+    if (status == RT_OK && (grid = sample_grid(p->options.samples,
+                                               error)) == 0)
+        status = RT_ERR_ARGUMENT;
+    if (status == RT_OK)
+        status = prepare_job(&p->j, scene, &p->options, grid, full_width,
+                             full_height, &p->eye_d, &p->eye_f, error);
+    if (status != RT_OK) {
+        rt__pixel_tracer_destroy(p);
+        return status;
+    }
+    *tracer = p;
+    return RT_OK;
+}
+
+void rt__pixel_tracer_destroy(rt_pixel_tracer *tracer)
+{
+    if (tracer == NULL)
+        return;
+    rt__kernel_d_eye_free(tracer->eye_d);
+    rt__kernel_f_eye_free(tracer->eye_f);
+    free(tracer);
+}
+
+void rt__pixel_tracer_size(const rt_pixel_tracer *tracer, int *width,
+                           int *height, int *samples)
+{
+    *width = tracer->width;
+    *height = tracer->height;
+    *samples = tracer->j.grid * tracer->j.grid;
+}
+
+rt_color rt__pixel_tracer_trace(rt_pixel_tracer *tracer, int x, int y,
+                                int sample, rt_trace_recorder *recorder,
+                                int *out_of_memory)
+{
+    job *j = &tracer->j;
+    rt_counters counters = {0};
+    uint64_t rays = 0;
+    int i = j->x0 + x, row = j->y0 + y, n = j->grid;
+    j->settings.recorder = recorder;
+    rt_color c;
+    if (sample < 0)
+        c = render_pixel(j, i, row, &counters, &rays);
+    else if (n == 1)
+        c = trace(j, centre_ray(j, i, row), &counters);
+    else
+        c = trace(j, sample_ray(j, i, row, sample % n, sample / n),
+                  &counters);
+    j->settings.recorder = NULL;
+    *out_of_memory = counters.out_of_memory;
+    return c;
 }
 
 rt_status rt_render(const rt_scene *scene, const rt_render_options *options,

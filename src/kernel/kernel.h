@@ -23,6 +23,7 @@
 
 #include <stdint.h>
 
+#include "raytrace/explain.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
 
@@ -36,6 +37,24 @@ typedef struct rt_kernel_source {
     rt_rgb8 background;
 } rt_kernel_source;
 
+/*
+ * A recorder (explain.c) is told every ray a trace casts, in order, with
+ * what it hits and what each term adds to the colour, the values exactly as
+ * the trace computes them; the trace's own arithmetic does not change.
+ * Node indices are the recorder's; -1 (a full recorder) makes the calls
+ * about that ray and its descendants no-ops.
+ */
+typedef struct rt_trace_recorder rt_trace_recorder;
+int rt__record_ray(rt_trace_recorder *recorder, int kind, int parent,
+                   int depth, rt_vec3 origin, rt_vec3 direction,
+                   double weight);
+void rt__record_hit(rt_trace_recorder *recorder, int node, int facet,
+                    double t, rt_vec3 point, rt_vec3 normal);
+void rt__record_miss(rt_trace_recorder *recorder, int node, rt_color own);
+void rt__record_shadow(rt_trace_recorder *recorder, int parent, int light,
+                       rt_vec3 origin, rt_vec3 direction, double n_dot_s,
+                       int cast, int blocked, int blocker, rt_color own);
+
 /* Settings of one trace. */
 typedef struct rt_trace_settings {
     int max_depth;
@@ -45,6 +64,8 @@ typedef struct rt_trace_settings {
                                the kernel) of the camera rays' origin */
     int octree;             /* non-zero: queries go through the kernel's
                                octree (rt__kernel_*_octree_prepare first) */
+    rt_trace_recorder *recorder;    /* NULL (renders), or what records the
+                                       rays for rt_explain_pixel */
 } rt_trace_settings;
 
 /* Work counters of one thread; summed into rt_render_stats at the end. */

@@ -79,32 +79,71 @@ static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
                              (size_t)(l - 1)) * 3];
 }
 
+/* Tells the recorder about the shadow ray to light l of the hit recorded
+ * as `node` (not on the renders' path: only when a recorder is set).  When
+ * it was cast and blocked, the blocker is the nearest facet on it. */
+static void record_light(const KERNEL_T *k, int simd, const octree *tree,
+                         rt_trace_recorder *rec, int node, int l,
+                         vec normal, vec to_light, int fast, const ray *shadow,
+                         vec origin, int index, int cast, int blocked,
+                         rt_color own)
+{
+    int blocker = -1;
+    if (cast && blocked) {
+        hit h;
+        rt_counters scratch = {0};
+        if (nearest(k, simd, tree, NULL, shadow, 1, index, &h, &scratch))
+            blocker = k->tris[h.index].facet;
+    }
+    vec direction = cast ? sub(k->lights[l], origin) : to_light;
+    rt_vec3 from = cast ? to_rt(origin) : to_rt(sub(k->lights[l], to_light));
+    rt__record_shadow(rec, node, l, from, to_rt(direction),
+                      (double)dot(normal, normalize(to_light, fast)), cast,
+                      blocked, blocker, own);
+}
+
 /* Adds the direct light, weighted, to color: for each light l,
  * E_l (N.S_l) d C_S,l C_F / 255.  No shadow ray where it cannot matter:
- * d = 0 (k = 1 on a handout facet) or N.S_l <= 0. */
+ * d = 0 (k = 1 on a handout facet) or N.S_l <= 0.  With a recorder (NULL
+ * in renders, where this code vanishes) each light is recorded under
+ * `node`. */
 HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                              const tri *f, int index, vec point,
                              vec error_bound, vec normal, REAL weight,
                              int fast, int simd, REAL color[3],
-                             rt_counters *counters)
+                             rt_counters *counters, rt_trace_recorder *rec,
+                             int node)
 {
     int dark = f->d == 0;   /* k = 1 on a handout facet */
+    const rt_color none = {0, 0, 0};
     for (int l = 0; l < k->light_count; l++) {
         vec light = k->lights[l];
         vec to_light = sub(light, point);
         if (dark || !(dot(normal, to_light) > 0)) {
             counters->shadow_rays_skipped++;
+            if (rec != NULL)
+                record_light(k, simd, tree, rec, node, l, normal, to_light,
+                             fast, NULL, point, index, 0, 0, none);
             continue;
         }
         vec origin = offset_origin(point, error_bound, normal, to_light);
         ray shadow = prepare(origin, sub(light, origin));
         counters->shadow_rays++;
-        if (any_hit(k, simd, tree, &shadow, 1, index, counters))
+        if (any_hit(k, simd, tree, &shadow, 1, index, counters)) {
+            if (rec != NULL)
+                record_light(k, simd, tree, rec, node, l, normal, to_light,
+                             fast, &shadow, origin, index, 1, 1, none);
             continue;
+        }
         REAL w = weight * dot(normal, normalize(to_light, fast));
         const REAL *diffuse = diffuse_of(k, f, index, l);
         for (int c = 0; c < 3; c++)
             color[c] += w * diffuse[c];
+        if (rec != NULL)
+            record_light(k, simd, tree, rec, node, l, normal, to_light, fast,
+                         &shadow, origin, index, 1, 0,
+                         (rt_color){w * diffuse[0], w * diffuse[1],
+                                    w * diffuse[2]});
     }
 }
 
@@ -116,27 +155,41 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
  * no shadow ray where N.S <= 0 or d = 0, no reflected ray from a facet with
  * k = 0.
  */
-static void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
+HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
                          const rt_trace_settings *settings, const octree *tree,
-                         int simd, REAL color[3], rt_counters *counters)
+                         int simd, REAL color[3], rt_counters *counters,
+                         rt_trace_recorder *rec)
 {
     REAL weight = 1;
-    int skip = -1, fast = settings->fast_inv_sqrt;
+    int skip = -1, fast = settings->fast_inv_sqrt, node = -1;
     for (int bounce = 0;; bounce++) {
+        if (rec != NULL)
+            node = rt__record_ray(rec, bounce == 0 ? RT_RAY_CAMERA
+                                                   : RT_RAY_REFLECTED,
+                                  node, bounce, to_rt(origin),
+                                  to_rt(incoming), (double)weight);
         ray r = prepare(origin, incoming);
         hit h;
         if (!nearest(k, simd, tree, bounce == 0 ? settings->eye : NULL, &r,
                      INFINITY, skip, &h, counters)) {
             for (int c = 0; c < 3; c++)
                 color[c] += weight * k->background[c];
+            if (rec != NULL)
+                rt__record_miss(rec, node,
+                                (rt_color){weight * k->background[0],
+                                           weight * k->background[1],
+                                           weight * k->background[2]});
             break;
         }
         const tri *f = &k->tris[h.index];
         vec error_bound;
         vec point = hit_point(f, &h, origin, incoming, &error_bound);
         vec normal = dot(f->normal, incoming) > 0 ? neg(f->normal) : f->normal;
+        if (rec != NULL)
+            rt__record_hit(rec, node, f->facet, (double)h.t, to_rt(point),
+                           to_rt(normal));
         add_direct_light(k, tree, f, h.index, point, error_bound, normal,
-                         weight, fast, simd, color, counters);
+                         weight, fast, simd, color, counters, rec, node);
         if (f->k == 0) {
             counters->reflection_rays_skipped += bounce < settings->max_depth;
             break;
@@ -158,6 +211,7 @@ typedef struct ray_task {
     REAL weight;
     int skip;               /* the facet it leaves, or -1 */
     int level;              /* 0 for the camera ray */
+    int node;               /* its recorded node (-1: none) */
 } ray_task;
 
 /* Rays a transparent trace keeps on its own stack; more go to the heap. */
@@ -191,11 +245,15 @@ static int refract(vec incoming, vec n_w, REAL n, vec *out)
 static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
                              const rt_trace_settings *settings,
                              const octree *tree, int simd, REAL color[3],
-                             rt_counters *counters)
+                             rt_counters *counters, rt_trace_recorder *rec)
 {
     ray_task local[RAY_TASKS_LOCAL], *stack = local;
     int used = 0, capacity = RAY_TASKS_LOCAL, fast = settings->fast_inv_sqrt;
-    stack[used++] = (ray_task){origin, incoming, 1, -1, 0};
+    int camera = rec == NULL ? -1
+                             : rt__record_ray(rec, RT_RAY_CAMERA, -1, 0,
+                                              to_rt(origin), to_rt(incoming),
+                                              1.0);
+    stack[used++] = (ray_task){origin, incoming, 1, -1, 0, camera};
     int ok = 1;
     while (used > 0) {
         ray_task p = stack[--used];
@@ -205,6 +263,11 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
                      INFINITY, p.skip, &h, counters)) {
             for (int c = 0; c < 3; c++)
                 color[c] += p.weight * k->background[c];
+            if (rec != NULL)
+                rt__record_miss(rec, p.node,
+                                (rt_color){p.weight * k->background[0],
+                                           p.weight * k->background[1],
+                                           p.weight * k->background[2]});
             continue;
         }
         const tri *f = &k->tris[h.index];
@@ -212,8 +275,11 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
         vec point = hit_point(f, &h, p.origin, p.incoming, &error_bound);
         vec normal = dot(f->normal, p.incoming) > 0 ? neg(f->normal)
                                                     : f->normal;
+        if (rec != NULL)
+            rt__record_hit(rec, p.node, f->facet, (double)h.t, to_rt(point),
+                           to_rt(normal));
         add_direct_light(k, tree, f, h.index, point, error_bound, normal,
-                         p.weight, fast, simd, color, counters);
+                         p.weight, fast, simd, color, counters, rec, p.node);
         int deeper = p.level < settings->max_depth;
         if (f->k == 0)
             counters->reflection_rays_skipped += deeper;
@@ -245,17 +311,29 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
             capacity = bigger;
         }
         if (refracts) {
-            stack[used++] = (ray_task){
+            ray_task task = {
                 offset_origin(point, error_bound, normal, refracted),
                 normalize(refracted, fast), p.weight * f->t, h.index,
-                p.level + 1};
+                p.level + 1, -1};
+            if (rec != NULL)
+                task.node = rt__record_ray(rec, RT_RAY_REFRACTED, p.node,
+                                           task.level, to_rt(task.origin),
+                                           to_rt(task.incoming),
+                                           (double)task.weight);
+            stack[used++] = task;
             counters->refraction_rays++;
         }
         if (mirror_weight > 0) {
-            stack[used++] = (ray_task){
+            ray_task task = {
                 offset_origin(point, error_bound, normal, mirror),
                 normalize(mirror, fast), p.weight * mirror_weight, h.index,
-                p.level + 1};
+                p.level + 1, -1};
+            if (rec != NULL)
+                task.node = rt__record_ray(rec, RT_RAY_REFLECTED, p.node,
+                                           task.level, to_rt(task.origin),
+                                           to_rt(task.incoming),
+                                           (double)task.weight);
+            stack[used++] = task;
             counters->reflection_rays++;
         }
     }
@@ -278,11 +356,17 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
     const octree *tree = settings->octree ? octree_of(k) : NULL;
     vec origin = from_rt(origin_d);
     vec incoming = normalize(from_rt(direction_d), settings->fast_inv_sqrt);
-    if (!k->transparent)
+    /* Two copies of the opaque loop: the renders' without a recorder
+     * (its recording code compiled away), and the one rt_explain_pixel
+     * records; the arithmetic is the same source. */
+    if (!k->transparent && settings->recorder == NULL)
         trace_opaque(k, origin, incoming, settings, tree, simd, color,
-                     counters);
+                     counters, NULL);
+    else if (!k->transparent)
+        trace_opaque(k, origin, incoming, settings, tree, simd, color,
+                     counters, settings->recorder);
     else if (!trace_transparent(k, origin, incoming, settings, tree, simd,
-                                color, counters))
+                                color, counters, settings->recorder))
         counters->out_of_memory = 1;
     return (rt_color){color[0], color[1], color[2]};
 }

@@ -1,0 +1,410 @@
+/*
+ * explain.c - the ray tree of a pixel and the debug views (raytrace/explain.h).
+ *
+ * Nothing here computes a colour: a recorder is attached to the kernel's own
+ * trace (kernel.h), which tells it every ray it casts and every term it adds,
+ * and the pixel is traced by the render's own code (render_internal.h).  So
+ * the explained value is the rendered one by construction; this file only
+ * stores what it is told, sums the subtrees for reading, and maps the camera
+ * ray's hit to the colours of the debug views.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "raytrace/explain.h"
+#include "render_internal.h"
+#include "scene_internal.h"
+
+struct rt_trace_recorder {
+    const rt_scene *scene;
+    rt_ray_node *nodes;
+    size_t count, capacity;
+    size_t truncated;       /* rays not recorded: the tree was full */
+    int next_sample;        /* the sample of the next camera ray */
+    int out_of_memory;
+};
+
+struct rt_ray_tree {
+    rt_ray_node *nodes;
+    size_t count;
+    size_t truncated;
+    rt_color value;
+};
+
+/* A new node of `kind`, or NULL when the tree is full or memory short. */
+static rt_ray_node *new_node(rt_trace_recorder *r)
+{
+    if (r->count == r->capacity) {
+        if (r->capacity >= RT_RAY_TREE_MAX_NODES) {
+            r->truncated++;
+            return NULL;
+        }
+        size_t bigger = r->capacity == 0 ? 64 : r->capacity * 2;
+        if (bigger > RT_RAY_TREE_MAX_NODES)
+            bigger = RT_RAY_TREE_MAX_NODES;
+        rt_ray_node *grown = realloc(r->nodes, bigger * sizeof *grown);
+        if (grown == NULL) {
+            r->out_of_memory = 1;
+            r->truncated++;
+            return NULL;
+        }
+        r->nodes = grown;
+        r->capacity = bigger;
+    }
+    rt_ray_node *n = &r->nodes[r->count++];
+    memset(n, 0, sizeof *n);
+    n->facet = n->blocker = n->light = -1;
+    return n;
+}
+
+int rt__record_ray(rt_trace_recorder *r, int kind, int parent, int depth,
+                   rt_vec3 origin, rt_vec3 direction, double weight)
+{
+    if (kind != RT_RAY_CAMERA && parent < 0) {
+        r->truncated++;     /* its parent was not recorded */
+        return -1;
+    }
+    int sample = kind == RT_RAY_CAMERA ? r->next_sample++
+                                       : r->nodes[parent].sample;
+    rt_ray_node *n = new_node(r);
+    if (n == NULL)
+        return -1;
+    n->kind = (rt_ray_kind)kind;
+    n->parent = kind == RT_RAY_CAMERA ? -1 : parent;
+    n->depth = depth;
+    n->sample = sample;
+    n->origin = origin;
+    n->direction = direction;
+    n->weight = weight;
+    return (int)(r->count - 1);
+}
+
+void rt__record_hit(rt_trace_recorder *r, int node, int facet, double t,
+                    rt_vec3 point, rt_vec3 normal)
+{
+    if (node < 0)
+        return;
+    rt_ray_node *n = &r->nodes[node];
+    const rt_facet_info *f = &r->scene->facets[facet];
+    n->hit = 1;
+    n->facet = facet;
+    n->line = f->line;
+    n->t = t;
+    n->point = point;
+    n->normal = normal;
+    n->k = f->k;
+    n->transmission = f->t;
+    n->d = f->d;
+}
+
+void rt__record_miss(rt_trace_recorder *r, int node, rt_color own)
+{
+    if (node >= 0)
+        r->nodes[node].own = own;
+}
+
+void rt__record_shadow(rt_trace_recorder *r, int parent, int light,
+                       rt_vec3 origin, rt_vec3 direction, double n_dot_s,
+                       int cast, int blocked, int blocker, rt_color own)
+{
+    if (parent < 0) {
+        r->truncated++;
+        return;
+    }
+    rt_ray_node *n = new_node(r);
+    if (n == NULL)
+        return;
+    const rt_ray_node *p = &r->nodes[parent];
+    n->kind = RT_RAY_SHADOW;
+    n->parent = parent;
+    n->depth = p->depth;
+    n->sample = p->sample;
+    n->weight = p->weight;
+    n->origin = origin;
+    n->direction = direction;
+    n->light = light;
+    n->n_dot_s = n_dot_s;
+    n->cast = cast;
+    n->e = cast && !blocked ? 1.0 : 0.0;
+    n->blocker = blocked ? blocker : -1;
+    n->blocker_line = n->blocker >= 0 ? r->scene->facets[blocker].line : 0;
+    n->own = own;
+}
+
+/* Each node's subtotal: its own term plus its descendants' (parents come
+ * before their children, so one backward pass does it). */
+static void sum_subtrees(rt_ray_node *nodes, size_t count)
+{
+    for (size_t i = count; i-- > 0;) {
+        rt_ray_node *n = &nodes[i];
+        n->subtotal.r += n->own.r;
+        n->subtotal.g += n->own.g;
+        n->subtotal.b += n->own.b;
+        if (n->parent >= 0) {
+            rt_ray_node *p = &nodes[n->parent];
+            p->subtotal.r += n->subtotal.r;
+            p->subtotal.g += n->subtotal.g;
+            p->subtotal.b += n->subtotal.b;
+        }
+    }
+}
+
+/* Traces pixel (x, y) (or one sample) into r, emptied first. */
+static rt_status record_pixel(rt_pixel_tracer *tracer, rt_trace_recorder *r,
+                              int x, int y, int sample, rt_color *value,
+                              rt_error *error)
+{
+    int out_of_memory = 0;
+    r->count = 0;
+    r->truncated = 0;
+    r->out_of_memory = 0;
+    r->next_sample = sample < 0 ? 0 : sample;
+    *value = rt__pixel_tracer_trace(tracer, x, y, sample, r, &out_of_memory);
+    if (out_of_memory || r->out_of_memory)
+        return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                             "out of memory for the ray tree of pixel "
+                             "%d,%d", x, y);
+    return RT_OK;
+}
+
+/* The tracer for `options` and a check that (x, y) is in its image. */
+static rt_status checked_tracer(const rt_scene *scene,
+                                const rt_render_options *options,
+                                rt_pixel_tracer **tracer, int *width,
+                                int *height, int *samples, rt_error *error)
+{
+    rt_status status = rt__pixel_tracer_create(scene, options, tracer,
+                                               error);
+    if (status != RT_OK)
+        return status;
+    rt__pixel_tracer_size(*tracer, width, height, samples);
+    return RT_OK;
+}
+
+rt_status rt_explain_pixel(const rt_scene *scene,
+                           const rt_render_options *options, int x, int y,
+                           int sample, rt_ray_tree **tree, rt_error *error)
+{
+    if (tree == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a pointer to fill");
+    *tree = NULL;
+    rt_pixel_tracer *tracer;
+    int width, height, samples;
+    rt_status status = checked_tracer(scene, options, &tracer, &width,
+                                      &height, &samples, error);
+    if (status != RT_OK)
+        return status;
+    if (x < 0 || x >= width || y < 0 || y >= height)
+        status = rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                               "pixel %d,%d is outside the %d x %d image",
+                               x, y, width, height);
+    else if (sample < -1 || sample >= samples)
+        status = rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                               "sample %d of a pixel of %d samples: "
+                               "expected -1 (all) or 0..%d", sample,
+                               samples, samples - 1);
+    rt_trace_recorder r = {.scene = scene};
+    rt_color value = {0, 0, 0};
+    if (status == RT_OK)
+        status = record_pixel(tracer, &r, x, y, sample, &value, error);
+    rt__pixel_tracer_destroy(tracer);
+    rt_ray_tree *t = NULL;
+    if (status == RT_OK && (t = malloc(sizeof *t)) == NULL)
+        status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                               "out of memory for a ray tree");
+    if (status != RT_OK) {
+        free(r.nodes);
+        return status;
+    }
+    sum_subtrees(r.nodes, r.count);
+    *t = (rt_ray_tree){r.nodes, r.count, r.truncated, value};
+    *tree = t;
+    return RT_OK;
+}
+
+void rt_ray_tree_destroy(rt_ray_tree *tree)
+{
+    if (tree == NULL)
+        return;
+    free(tree->nodes);
+    free(tree);
+}
+
+const rt_ray_node *rt_ray_tree_nodes(const rt_ray_tree *tree, size_t *count)
+{
+    if (count != NULL)
+        *count = tree->count;
+    return tree->nodes;
+}
+
+rt_color rt_ray_tree_value(const rt_ray_tree *tree)
+{
+    return tree->value;
+}
+
+size_t rt_ray_tree_truncated(const rt_ray_tree *tree)
+{
+    return tree->truncated;
+}
+
+rt_rgb8 rt_debug_facet_color(int index)
+{
+    uint32_t h = (uint32_t)index * 0x9e3779b1u + 0x7f4a7c15u;
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return (rt_rgb8){(unsigned char)(64 + (h & 0xff) % 192),
+                     (unsigned char)(64 + ((h >> 8) & 0xff) % 192),
+                     (unsigned char)(64 + ((h >> 16) & 0xff) % 192)};
+}
+
+/* The shadow ray to light `light` of the camera ray's hit, or NULL. */
+static const rt_ray_node *camera_shadow(const rt_trace_recorder *r,
+                                        int light)
+{
+    for (size_t i = 1; i < r->count; i++)
+        if (r->nodes[i].kind == RT_RAY_SHADOW && r->nodes[i].parent == 0 &&
+            r->nodes[i].light == light)
+            return &r->nodes[i];
+    return NULL;
+}
+
+static void put(unsigned char *p, double r, double g, double b)
+{
+    p[0] = rt_channel_to_byte(r);
+    p[1] = rt_channel_to_byte(g);
+    p[2] = rt_channel_to_byte(b);
+}
+
+/* The colour of one pixel in `view` (all but RT_VIEW_DEPTH) from its
+ * recorded first sample. */
+static void view_pixel(const rt_trace_recorder *r, rt_debug_view view,
+                       int light, int max_depth, unsigned char *p)
+{
+    const rt_ray_node *camera = &r->nodes[0];
+    put(p, 0, 0, 0);
+    if (!camera->hit)
+        return;
+    const rt_ray_node *s = camera_shadow(r, light);
+    switch (view) {
+    case RT_VIEW_NORMAL:
+        put(p, (camera->normal.x + 1) / 2 * 255,
+            (camera->normal.y + 1) / 2 * 255,
+            (camera->normal.z + 1) / 2 * 255);
+        break;
+    case RT_VIEW_FACET: {
+        rt_rgb8 c = rt_debug_facet_color(camera->facet);
+        p[0] = c.r, p[1] = c.g, p[2] = c.b;
+        break;
+    }
+    case RT_VIEW_SHADOW:
+        if (s == NULL || !s->cast)
+            put(p, 0, 0, 128);
+        else if (s->e > 0)
+            put(p, 255, 255, 255);
+        else
+            put(p, 128, 0, 0);
+        break;
+    case RT_VIEW_NS: {
+        double v = s != NULL && s->n_dot_s > 0 ? 255 * s->n_dot_s : 0;
+        put(p, v, v, v);
+        break;
+    }
+    case RT_VIEW_BOUNCES: {
+        int deepest = 0;
+        for (size_t i = 0; i < r->count; i++)
+            if (r->nodes[i].kind != RT_RAY_SHADOW &&
+                r->nodes[i].depth > deepest)
+                deepest = r->nodes[i].depth;
+        double v = max_depth > 0 ? 255.0 * deepest / max_depth : 0;
+        put(p, v, v, v);
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+/* Depth: t of each camera hit, then near (255) .. far (0). */
+static void depth_view(const double *t, rt_image *image, int width,
+                       int height)
+{
+    double near = INFINITY, far = -INFINITY;
+    for (int i = 0; i < width * height; i++)
+        if (t[i] >= 0) {
+            near = fmin(near, t[i]);
+            far = fmax(far, t[i]);
+        }
+    for (int y = 0; y < height; y++) {
+        unsigned char *row = rt_image_pixel(image, 0, y);
+        for (int x = 0; x < width; x++) {
+            double d = t[y * width + x], v = 0;
+            if (d >= 0)
+                v = far > near ? 255 * (far - d) / (far - near) : 255;
+            put(&row[3 * x], v, v, v);
+        }
+    }
+}
+
+rt_status rt_render_view(const rt_scene *scene,
+                         const rt_render_options *options, rt_debug_view view,
+                         int light, rt_image *image, rt_error *error)
+{
+    if (scene == NULL || image == NULL || image->pixels == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "no scene or no image");
+    if (view < RT_VIEW_NORMAL || view > RT_VIEW_NS)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a debug view of %d: expected RT_VIEW_NORMAL.."
+                             "RT_VIEW_NS", (int)view);
+    if ((view == RT_VIEW_SHADOW || view == RT_VIEW_NS) &&
+        (light < 0 || light >= scene->light_count))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "light %d: the scene has lights 0..%d", light,
+                             scene->light_count - 1);
+    rt_pixel_tracer *tracer;
+    int width, height, samples;
+    rt_status status = checked_tracer(scene, options, &tracer, &width,
+                                      &height, &samples, error);
+    if (status != RT_OK)
+        return status;
+    if (image->width != width || image->height != height) {
+        rt__pixel_tracer_destroy(tracer);
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the image is %d x %d but the render writes "
+                             "%d x %d", image->width, image->height, width,
+                             height);
+    }
+    int max_depth = options != NULL ? options->max_depth : RT_DEFAULT_DEPTH;
+    double *depth = NULL;
+    if (view == RT_VIEW_DEPTH &&
+        (depth = malloc((size_t)width * (size_t)height * sizeof *depth)) ==
+            NULL)
+        status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                               "out of memory for a depth view");
+    rt_trace_recorder r = {.scene = scene};
+    for (int y = 0; status == RT_OK && y < height; y++) {
+        unsigned char *row = rt_image_pixel(image, 0, y);
+        for (int x = 0; status == RT_OK && x < width; x++) {
+            rt_color value;
+            status = record_pixel(tracer, &r, x, y, 0, &value, error);
+            if (status != RT_OK || r.count == 0)
+                break;
+            if (depth != NULL)
+                depth[y * width + x] = r.nodes[0].hit ? r.nodes[0].t : -1;
+            else
+                view_pixel(&r, view, light, max_depth, &row[3 * x]);
+        }
+    }
+    if (status == RT_OK && depth != NULL)
+        depth_view(depth, image, width, height);
+    free(depth);
+    free(r.nodes);
+    rt__pixel_tracer_destroy(tracer);
+    return status;
+}
