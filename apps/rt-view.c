@@ -38,6 +38,15 @@ static const cli_option view_options[] = {
     {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
 };
 
+#ifdef RAYTRACE_VIEWER_TTF
+#define TEXT_IN_WINDOW " and\n          in the window"
+#define TEXT_IN_WINDOW_HELP ", in the window"
+#else
+#define TEXT_IN_WINDOW " (this build has no\n          SDL2_ttf: " \
+    "not in the window)"
+#define TEXT_IN_WINDOW_HELP ", on stdout (this build has no SDL2_ttf)"
+#endif
+
 static const cli_program program = {
     PROGRAM, "[SCENE]",
     "Shows SCENE in a window while it renders; each finished row appears at\n"
@@ -58,7 +67,20 @@ static const cli_program program = {
     "          longer loads, the picture stays and the error\n"
     "          (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the title\n"
     "  + / -   one more / one less reflection, and render again\n"
-    "  Q, Esc  quit (a render in progress is cancelled)\n"
+    "  left click  explain that pixel (the render's options): its ray\n"
+    "          tree drawn over the image - camera rays white, shadow rays\n"
+    "          yellow to their light or red up to the facet that blocks\n"
+    "          them, reflected cyan, refracted magenta, hits marked by a\n"
+    "          square - and its text (each ray's facet and file line, t,\n"
+    "          N.S, E, the blocker, what each term adds) on stdout"
+    TEXT_IN_WINDOW "\n"
+    "  right click, Esc  clear the explanation\n"
+    "  N normal, D depth, F facet index, L shadow term E (again: next\n"
+    "          light), B bounces, I N.S (again: next light): debug views\n"
+    "          of the same render, named in the title; V or 0: the picture\n"
+    "  H, F1   the keys" TEXT_IN_WINDOW_HELP "\n"
+    "  Q, Esc  quit (Esc when nothing is explained; a render in progress\n"
+    "          is cancelled)\n"
     "A scene file dropped on the window is loaded, rendered and watched.\n"
     "\n"
     "Exit status: 0 when the window closes, 1 when a scene was given and\n"

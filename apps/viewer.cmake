@@ -60,6 +60,7 @@ if(RAYTRACE_VIEWER_ENABLED)
 
   add_library(raytrace_viewer STATIC
     viewer/view_app.c
+    viewer/view_explain.c
     viewer/view_overlay.c
     viewer/view_scene.c
     viewer/view_session.c
@@ -91,7 +92,7 @@ if(RAYTRACE_VIEWER_ENABLED)
     set(RAYTRACE_VIEWER_TTF_ENABLED ON)
     target_link_libraries(raytrace_viewer PRIVATE
       ${RAYTRACE_VIEWER_TTF_TARGET})
-    target_compile_definitions(raytrace_viewer PRIVATE RAYTRACE_VIEWER_TTF)
+    target_compile_definitions(raytrace_viewer PUBLIC RAYTRACE_VIEWER_TTF)
   elseif(RAYTRACE_TOP_LEVEL)
     message(STATUS "rt-view text in the window disabled: SDL2_ttf not found")
   endif()

@@ -34,6 +34,9 @@
 #include "view_session.h"
 #include "view_window.h"
 
+/* Half the side of the square marking a hit (view_window.c's MARK_SIZE). */
+#define MARK_HALF 3
+
 /* Longest a test waits for a render before failing. */
 #define WAIT_SECONDS 60.0
 
@@ -1186,6 +1189,168 @@ START_TEST(overlay_draws_each_ray_in_its_colour_along_its_projection)
 }
 END_TEST
 
+/* ---- clicking a pixel, the debug views (view_app) ---- */
+
+/* An app showing scenes/cubes.scn, finished and on screen. */
+static view_app *open_cubes_app(void)
+{
+    view_app *app = open_app(NULL, 0);
+    ck_assert(view_app_open(app, rt_test_source_path("scenes/cubes.scn")));
+    finished_image(app);
+    view_window_sync(view_app_window(app));
+    return app;
+}
+
+static rt_vec3 unit(rt_vec3 v)
+{
+    double length = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    rt_vec3 u = {v.x / length, v.y / length, v.z / length};
+    return u;
+}
+
+START_TEST(clicking_a_pixel_explains_it_starting_with_its_camera_ray)
+{
+    view_app *app = open_cubes_app();
+    view_window *window = view_app_window(app);
+    int x, y;
+    ck_assert(view_window_pixel_at(window, 123, 77, &x, &y));
+    ck_assert(view_app_click(app, 123, 77));
+    const view_explanation *e = view_app_explanation(app);
+    ck_assert_ptr_nonnull(e);
+    ck_assert_int_eq(e->x, x);
+    ck_assert_int_eq(e->y, y);
+    ck_assert_int_eq(e->first.kind, RT_RAY_CAMERA);
+    rt_scene_info info;
+    rt_scene_get_info(view_session_scene(view_app_session(app)), &info);
+    rt_ray ray = rt_camera_ray(&info.camera, x, y);
+    rt_vec3 expected = unit(ray.direction), actual = unit(e->first.direction);
+    ck_assert_double_eq_tol(e->first.origin.x, ray.origin.x, 1e-9);
+    ck_assert_double_eq_tol(e->first.origin.y, ray.origin.y, 1e-9);
+    ck_assert_double_eq_tol(e->first.origin.z, ray.origin.z, 1e-9);
+    ck_assert_double_eq_tol(actual.x, expected.x, 1e-6);
+    ck_assert_double_eq_tol(actual.y, expected.y, 1e-6);
+    ck_assert_double_eq_tol(actual.z, expected.z, 1e-6);
+    /* The value explained is the byte shown. */
+    const unsigned char *shown =
+        rt_image_pixel(view_session_image(view_app_session(app)), x, y);
+    ck_assert_int_eq(rt_channel_to_byte(e->value.r), shown[0]);
+    ck_assert_int_eq(rt_channel_to_byte(e->value.g), shown[1]);
+    ck_assert_int_eq(rt_channel_to_byte(e->value.b), shown[2]);
+    ck_assert_ptr_nonnull(strstr(e->text, "camera"));
+    /* Outside the picture: nothing; Esc clears the explanation. */
+    ck_assert(!view_app_click(app, -5, -5));
+    view_app_key(app, SDLK_ESCAPE, 0);
+    ck_assert_ptr_null(view_app_explanation(app));
+    close_app(app);
+}
+END_TEST
+
+/* Does the 3x3 neighbourhood of (x, y) in `frame` hold colour rgb? */
+static int near_color(const rt_image *frame, double x, double y,
+                      const unsigned char rgb[3])
+{
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int px = (int)floor(x) + dx, py = (int)floor(y) + dy;
+            if (px >= 0 && py >= 0 && px < frame->width &&
+                py < frame->height && pixel_is(frame, px, py, rgb))
+                return 1;
+        }
+    return 0;
+}
+
+START_TEST(a_shadowed_pixel_shows_its_blocker_in_red_over_the_image)
+{
+    view_app *app = open_cubes_app();
+    const rt_image *image = view_session_image(view_app_session(app));
+    /* The first pixel, on a coarse grid, in some facet's shadow. */
+    const rt_scene *scene = view_session_scene(view_app_session(app));
+    int found = 0, x, y;
+    for (y = 4; y < image->height && !found; y += 8)
+        for (x = 4; x < image->width && !found; x += 8) {
+            view_explanation probe;
+            ck_assert_int_eq(view_explain_pixel(scene, NULL, "cubes.scn", x,
+                                                y, &probe, NULL), RT_OK);
+            for (int k = 0; k < probe.segment_count; k++)
+                found |= probe.segments[k].kind == VIEW_RAY_BLOCKED;
+            view_explanation_release(&probe);
+        }
+    ck_assert_msg(found, "no shadowed pixel in cubes.scn");
+    ck_assert(view_app_explain(app, x - 8, y - 8));
+    const view_explanation *e = view_app_explanation(app);
+    const view_segment *blocked = NULL;
+    for (int k = 0; k < e->segment_count; k++)
+        if (e->segments[k].kind == VIEW_RAY_BLOCKED)
+            blocked = &e->segments[k];
+    ck_assert_ptr_nonnull(blocked);
+    ck_assert_ptr_nonnull(strstr(e->text, "shadowed by facet"));
+    ck_assert_ptr_nonnull(strstr(e->text, "(line "));
+
+    rt_render_options options;
+    rt_render_options_init(&options);
+    view_projection projection;
+    view_projection_init(&projection,
+                         view_session_scene(view_app_session(app)), &options);
+    double line[4];
+    ck_assert(view_project_segment(&projection, blocked->from, blocked->to,
+                                   line));
+    rt_image frame = read_window(view_app_window(app));
+    ck_assert_int_eq(frame.width, image->width);
+    unsigned char red[3];
+    view_ray_color(VIEW_RAY_BLOCKED, red);
+    /* Along the projected segment (where it is in the picture), and its
+     * blocker marked. */
+    int checked = 0;
+    for (int step = 1; step < 10; step++) {
+        double f = step / 10.0;
+        double px = line[0] + f * (line[2] - line[0]);
+        double py = line[1] + f * (line[3] - line[1]);
+        if (px < 1 || py < 1 || px > frame.width - 2 ||
+            py > frame.height - 2)
+            continue;
+        ck_assert_msg(near_color(&frame, px, py, red),
+                      "no red at (%g, %g), %g of the blocked shadow ray", px,
+                      py, f);
+        checked++;
+    }
+    ck_assert_int_gt(checked, 0);
+    ck_assert(near_color(&frame, line[2] + MARK_HALF, line[3], red) ||
+              near_color(&frame, line[2], line[3] + MARK_HALF, red));
+    rt_image_release(&frame);
+    close_app(app);
+}
+END_TEST
+
+START_TEST(debug_view_keys_change_what_the_window_shows)
+{
+    view_app *app = open_cubes_app();
+    view_window *window = view_app_window(app);
+    rt_image picture = read_window(window);
+    view_app_key(app, SDLK_n, 0);
+    ck_assert_ptr_nonnull(strstr(view_app_title(app), "normal view"));
+    rt_image normals = read_window(window);
+    /* The window shows the library's normal view. */
+    rt_image expected;
+    ck_assert_int_eq(rt_image_init(&expected, picture.width, picture.height,
+                                   NULL), RT_OK);
+    ck_assert_int_eq(rt_render_view(view_session_scene(view_app_session(app)),
+                                    NULL, RT_VIEW_NORMAL, 0, &expected, NULL),
+                     RT_OK);
+    assert_same_image(&normals, &expected, "normal view");
+    rt_image_release(&expected);
+    view_app_key(app, SDLK_l, 0);
+    ck_assert_ptr_nonnull(strstr(view_app_title(app), "shadow view of light 0"));
+    view_app_key(app, SDLK_v, 0);
+    ck_assert_ptr_null(strstr(view_app_title(app), "shadow view"));
+    rt_image again = read_window(window);
+    assert_same_image(&again, &picture, "the picture again");
+    rt_image_release(&picture);
+    rt_image_release(&normals);
+    rt_image_release(&again);
+    close_app(app);
+}
+END_TEST
+
 static Suite *viewer_suite(void)
 {
     Suite *suite = suite_create("viewer");
@@ -1225,6 +1390,11 @@ static Suite *viewer_suite(void)
     tcase_add_test(overlay, segments_behind_the_observer_are_clipped);
     tcase_add_test(overlay,
                    overlay_draws_each_ray_in_its_colour_along_its_projection);
+    tcase_add_test(overlay,
+                   clicking_a_pixel_explains_it_starting_with_its_camera_ray);
+    tcase_add_test(overlay,
+                   a_shadowed_pixel_shows_its_blocker_in_red_over_the_image);
+    tcase_add_test(overlay, debug_view_keys_change_what_the_window_shows);
     suite_add_tcase(suite, overlay);
 
     TCase *app = tcase_create("app");

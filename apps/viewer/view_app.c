@@ -18,6 +18,7 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
+#include "view_explain.h"
 #include "view_scene.h"
 #include "view_window.h"
 
@@ -44,6 +45,29 @@ struct view_app {
     int quit;
     int quit_signal;            /* the termination signal, or 0 */
     int redraw;
+    int view;                   /* 0: the picture, else an rt_debug_view */
+    int view_light;             /* the light of the shadow and N.S views */
+    view_explanation explanation; /* of the clicked pixel; text NULL: none */
+    int help;                   /* the help is shown in the window */
+};
+
+const char view_app_keys_help[] =
+    "Keys (rt-view --help says more)\n"
+    "click    explain that pixel: its rays over\n"
+    "         the image (camera white, shadow\n"
+    "         yellow, blocked red, reflected\n"
+    "         cyan, refracted magenta) and text\n"
+    "right click, Esc  clear (Esc: else quit)\n"
+    "N normal   D depth   F facet index\n"
+    "L shadow term E (again: next light)\n"
+    "B bounces  I N.S (again: next light)\n"
+    "V, 0     the picture\n"
+    "S save   R reload   + - depth\n"
+    "H, F1    this help  Q quit\n";
+
+static const char *const view_names[] = {
+    "", "normal view", "depth view", "facet view", "shadow view",
+    "bounces view", "N.S view",
 };
 
 void view_app_options_init(view_app_options *options)
@@ -84,9 +108,15 @@ static void update_title(view_app *app)
         char state[96];
         view_progress_describe(&progress, state, sizeof state);
         const rt_image *image = view_session_image(app->session);
-        snprintf(title, sizeof title, "%s %dx%d depth %d - %s - " PROGRAM,
+        char view[64] = "";
+        if (app->view == RT_VIEW_SHADOW || app->view == RT_VIEW_NS)
+            snprintf(view, sizeof view, " - %s of light %d",
+                     view_names[app->view], app->view_light);
+        else if (app->view)
+            snprintf(view, sizeof view, " - %s", view_names[app->view]);
+        snprintf(title, sizeof title, "%s %dx%d depth %d - %s%s - " PROGRAM,
                  base_name(app->shown_path), image->width, image->height,
-                 progress.max_depth, state);
+                 progress.max_depth, state, view);
     }
     if (strcmp(title, app->title) != 0) {
         snprintf(app->title, sizeof app->title, "%s", title);
@@ -101,6 +131,9 @@ static void show_message(view_app *app, const char *message)
     update_title(app);
 }
 
+static int show_view(view_app *app);
+static void clear_explanation(view_app *app);
+
 static void start_render(view_app *app)
 {
     if (app->session == NULL)
@@ -108,6 +141,10 @@ static void start_render(view_app *app)
     app->message[0] = '\0';
     if (view_session_start(app->session) != RT_OK)
         show_message(app, "cannot start the rendering thread");
+    /* The explanation and the debug view were of the render before. */
+    clear_explanation(app);
+    if (app->view)
+        show_view(app);
 }
 
 /* The largest window that fits on the screen the window is on, placed so
@@ -164,6 +201,7 @@ void view_app_destroy(view_app *app)
     view_window_attach(app->window, NULL, NULL, 0);
     view_session_destroy(app->session);
     view_window_destroy(app->window);
+    view_explanation_release(&app->explanation);
     free(app->path);
     free(app->shown_path);
     free(app);
@@ -437,20 +475,197 @@ static void change_depth(view_app *app, int delta)
     }
 }
 
-static void handle_key(view_app *app, const SDL_KeyboardEvent *key)
+/* The overlay and text panel for what is shown now. */
+static void update_overlay(view_app *app)
+{
+    const view_explanation *e = &app->explanation;
+    view_projection projection;
+    if (app->session && e->text) {
+        rt_render_options options =
+            render_options(app, view_session_scene(app->session));
+        view_projection_init(&projection, view_session_scene(app->session),
+                             &options);
+        view_window_set_overlay(app->window, &projection, e->segments,
+                                e->segment_count);
+    } else {
+        view_window_set_overlay(app->window, NULL, NULL, 0);
+    }
+    /* The text away from the clicked pixel. */
+    int bottom = 0;
+    if (app->session && e->text && !app->help)
+        bottom = e->y < view_session_image(app->session)->height / 2;
+    view_window_set_text_place(app->window, bottom);
+    view_window_set_text(app->window, app->help ? view_app_keys_help
+                                                : e->text);
+    app->redraw = 1;
+}
+
+static void clear_explanation(view_app *app)
+{
+    if (app->explanation.text == NULL && !app->help)
+        return;
+    view_explanation_release(&app->explanation);
+    app->help = 0;
+    update_overlay(app);
+}
+
+int view_app_explain(view_app *app, int x, int y)
+{
+    if (app->session == NULL)
+        return 0;
+    const rt_scene *scene = view_session_scene(app->session);
+    rt_render_options options = render_options(app, scene);
+    view_explanation explanation;
+    rt_error error;
+    memset(&error, 0, sizeof error);
+    rt_status status = view_explain_pixel(scene, &options,
+                                          base_name(app->shown_path), x, y,
+                                          &explanation, &error);
+    if (status != RT_OK) {
+        char message[sizeof app->message];
+        snprintf(message, sizeof message, "cannot explain pixel (%d, %d): %s",
+                 x, y, error.message[0] ? error.message
+                                        : rt_status_string(status));
+        show_message(app, message);
+        return 0;
+    }
+    view_explanation_release(&app->explanation);
+    app->explanation = explanation;
+    app->help = 0;
+    fputs(explanation.text, stdout);
+    fflush(stdout);
+    update_overlay(app);
+    return 1;
+}
+
+int view_app_click(view_app *app, int window_x, int window_y)
+{
+    int x, y;
+    if (!view_window_pixel_at(app->window, window_x, window_y, &x, &y))
+        return 0;
+    return view_app_explain(app, x, y);
+}
+
+const view_explanation *view_app_explanation(const view_app *app)
+{
+    return app->explanation.text ? &app->explanation : NULL;
+}
+
+/* Renders debug view app->view into the window (or the picture again). */
+static int show_view(view_app *app)
+{
+    if (app->session == NULL)
+        return 0;
+    app->redraw = 1;
+    if (app->view == 0)
+        return view_window_show_image(app->window, NULL);
+    const rt_scene *scene = view_session_scene(app->session);
+    rt_render_options options = render_options(app, scene);
+    const rt_image *picture = view_session_image(app->session);
+    rt_image image;
+    rt_error error;
+    memset(&error, 0, sizeof error);
+    rt_status status = rt_image_init(&image, picture->width, picture->height,
+                                     NULL);
+    if (status == RT_OK) {
+        status = rt_render_view(scene, &options, (rt_debug_view)app->view,
+                                app->view_light, &image, &error);
+        if (status == RT_OK)
+            view_window_show_image(app->window, &image);
+        rt_image_release(&image);
+    }
+    if (status != RT_OK) {
+        char message[sizeof app->message];
+        snprintf(message, sizeof message, "cannot show the %s: %s",
+                 view_names[app->view],
+                 error.message[0] ? error.message : rt_status_string(status));
+        app->view = 0;
+        view_window_show_image(app->window, NULL);
+        show_message(app, message);
+        return 0;
+    }
+    update_title(app);
+    return 1;
+}
+
+int view_app_set_view(view_app *app, int view, int light)
+{
+    if (view < 0 || view > RT_VIEW_NS)
+        return 0;
+    app->view = view;
+    app->view_light = light;
+    int shown = show_view(app);
+    update_title(app);
+    return shown;
+}
+
+/* L and I: the view of the first light, then of the next one. */
+static void cycle_light_view(view_app *app, int view)
+{
+    int light = 0;
+    if (app->view == view && app->session) {
+        rt_scene_info info;
+        rt_scene_get_info(view_session_scene(app->session), &info);
+        light = (app->view_light + 1) % info.light_count;
+    }
+    view_app_set_view(app, view, light);
+}
+
+static void toggle_help(view_app *app)
+{
+    app->help = !app->help;
+    if (app->help && !view_window_has_text(app->window))
+        fputs(view_app_keys_help, stdout);
+    update_overlay(app);
+}
+
+void view_app_key(view_app *app, int key, int repeat)
 {
     char path[4096];
-    switch (key->keysym.sym) {
-    case SDLK_q:
+    switch (key) {
     case SDLK_ESCAPE:
+        if (app->explanation.text || app->help)
+            clear_explanation(app);
+        else
+            app->quit = 1;
+        break;
+    case SDLK_q:
         app->quit = 1;
         break;
+    case SDLK_n:
+        view_app_set_view(app, RT_VIEW_NORMAL, 0);
+        break;
+    case SDLK_d:
+        view_app_set_view(app, RT_VIEW_DEPTH, 0);
+        break;
+    case SDLK_f:
+        view_app_set_view(app, RT_VIEW_FACET, 0);
+        break;
+    case SDLK_b:
+        view_app_set_view(app, RT_VIEW_BOUNCES, 0);
+        break;
+    case SDLK_l:
+        cycle_light_view(app, RT_VIEW_SHADOW);
+        break;
+    case SDLK_i:
+        cycle_light_view(app, RT_VIEW_NS);
+        break;
+    case SDLK_v:
+    case SDLK_0:
+    case SDLK_KP_0:
+        view_app_set_view(app, 0, 0);
+        break;
+    case SDLK_h:
+    case SDLK_F1:
+        if (!repeat)
+            toggle_help(app);
+        break;
     case SDLK_s:
-        if (!key->repeat)
+        if (!repeat)
             view_app_save(app, path, sizeof path);
         break;
     case SDLK_r:
-        if (!key->repeat)
+        if (!repeat)
             view_app_reload(app);
         break;
     case SDLK_PLUS:
@@ -474,7 +689,13 @@ static void handle_event(view_app *app, SDL_Event *event)
         app->quit = 1;
         break;
     case SDL_KEYDOWN:
-        handle_key(app, &event->key);
+        view_app_key(app, event->key.keysym.sym, event->key.repeat);
+        break;
+    case SDL_MOUSEBUTTONDOWN:
+        if (event->button.button == SDL_BUTTON_LEFT)
+            view_app_click(app, event->button.x, event->button.y);
+        else if (event->button.button == SDL_BUTTON_RIGHT)
+            clear_explanation(app);
         break;
     case SDL_DROPFILE:
         view_app_open(app, event->drop.file);
@@ -567,6 +788,16 @@ int view_app_exit_status(const view_app *app)
 view_session *view_app_session(view_app *app)
 {
     return app->session;
+}
+
+const char *view_app_title(const view_app *app)
+{
+    return app->title;
+}
+
+view_window *view_app_window(view_app *app)
+{
+    return app->window;
 }
 
 const char *view_app_message(const view_app *app)

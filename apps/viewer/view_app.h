@@ -24,7 +24,9 @@
 #include <stddef.h>
 
 #include "raytrace/raytrace.h"
+#include "view_explain.h"
 #include "view_session.h"
+#include "view_window.h"
 
 #define VIEW_WATCH_MS 250   /* how often --watch looks at the file */
 
@@ -82,6 +84,35 @@ int view_app_exit_status(const view_app *app);
 
 /* The session shown, or NULL before a scene loaded. */
 view_session *view_app_session(view_app *app);
+
+/* The keys, as the help shows them (H, F1) and rt-view --help prints. */
+extern const char view_app_keys_help[];
+
+/* A key pressed (an SDL keycode; `repeat` non-zero for a held key's
+ * repeats), as the event loop handles it. */
+void view_app_key(view_app *app, int key, int repeat);
+
+/* A left click at window point (x, y): explains the image pixel there
+ * (view_app_explain).  0 outside the picture or on failure. */
+int view_app_click(view_app *app, int x, int y);
+
+/* Explains pixel (x, y) of the shown image with the picture's render
+ * options: draws its ray tree over the image, shows its text in the window
+ * (with SDL2_ttf) and prints it on stdout.  Returns 1, or 0 with the reason
+ * shown. */
+int view_app_explain(view_app *app, int x, int y);
+
+/* The explanation shown, or NULL. */
+const view_explanation *view_app_explanation(const view_app *app);
+
+/* Shows debug view `view` (an rt_debug_view; 0: the picture) of light
+ * `light` (shadow and N.S views).  Returns 1, or 0 (the picture then, the
+ * reason shown). */
+int view_app_set_view(view_app *app, int view, int light);
+
+/* The window's title, and the window (for the tests to read). */
+const char *view_app_title(const view_app *app);
+view_window *view_app_window(view_app *app);
 
 /* The last error shown ("" when the last action succeeded). */
 const char *view_app_message(const view_app *app);

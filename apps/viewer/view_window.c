@@ -35,11 +35,13 @@ struct view_window {
     view_session *session;
     unsigned generation;        /* of the picture in the texture */
     int *rows;                  /* scratch for take_finished_rows */
+    int still;                  /* showing a still image, not the session */
     view_projection projection; /* of the overlay's rays */
     view_segment *segments;     /* the overlay's rays; NULL: none */
     int segment_count;
     SDL_Texture *text;          /* the text panel, NULL: none */
     int text_width, text_height;
+    int text_bottom;            /* the panel at the bottom, not the top */
 #ifdef RAYTRACE_VIEWER_TTF
     TTF_Font *font;             /* NULL when no font was found */
 #endif
@@ -185,6 +187,7 @@ static void detach(view_window *window)
     window->rows = NULL;
     window->session = NULL;
     window->width = window->height = 0;
+    window->still = 0;
 }
 
 void view_window_destroy(view_window *window)
@@ -263,6 +266,11 @@ int view_window_sync(view_window *window)
     int count = view_session_take_finished_rows(
         window->session, window->rows, window->height, &generation);
     int changed = 0;
+    if (window->still) {
+        /* view_window_show_image(NULL) shows them later. */
+        window->generation = generation;
+        return 0;
+    }
     if (generation != window->generation) {
         fill_placeholder(window);
         window->generation = generation;
@@ -357,7 +365,7 @@ static void draw_overlay(view_window *window, const SDL_Rect *target)
 }
 
 /* Clears the window and copies the picture, scaled to fit and centred,
- * then the overlay and the text panel over it. */
+ * then the text panel and the overlay's rays over it. */
 static void render(view_window *window)
 {
     SDL_SetRenderDrawColor(window->renderer, background.r, background.g,
@@ -374,15 +382,20 @@ static void render(view_window *window)
                    rect);
     SDL_Rect target = {rect[0], rect[1], rect[2], rect[3]};
     SDL_RenderCopy(window->renderer, window->texture, NULL, &target);
-    draw_overlay(window, &target);
     if (window->text) {
-        SDL_Rect panel = {4, 4, window->text_width + 8,
+        int top = window->text_bottom
+                      ? out_height - window->text_height - 12 : 4;
+        SDL_Rect panel = {4, top, window->text_width + 8,
                           window->text_height + 8};
         SDL_SetRenderDrawColor(window->renderer, 0, 0, 0, 192);
         SDL_RenderFillRect(window->renderer, &panel);
-        SDL_Rect place = {8, 8, window->text_width, window->text_height};
+        SDL_Rect place = {8, top + 4, window->text_width,
+                          window->text_height};
         SDL_RenderCopy(window->renderer, window->text, NULL, &place);
     }
+    /* The rays over the text: one-pixel lines hide little of it, and a ray
+     * under the panel would be lost. */
+    draw_overlay(window, &target);
 }
 
 void view_window_draw(view_window *window)
@@ -443,6 +456,34 @@ int view_window_display(const view_window *window)
     return display < 0 ? 0 : display;
 }
 
+int view_window_show_image(view_window *window, const rt_image *image)
+{
+    if (window->session == NULL)
+        return 0;
+    if (image != NULL) {
+        if (image->width != window->width || image->height != window->height)
+            return 0;
+        SDL_UpdateTexture(window->texture, NULL, image->pixels,
+                          (int)image->stride);
+        window->still = 1;
+        return 1;
+    }
+    /* Back to the session's picture: the checker, then every row finished
+     * so far (those taken while the still image was shown included). */
+    window->still = 0;
+    fill_placeholder(window);
+    const rt_image *picture = view_session_image(window->session);
+    for (int y = 0; y < window->height; y++) {
+        if (!view_session_row_done(window->session, y))
+            continue;
+        SDL_Rect rect = {0, y, window->width, 1};
+        SDL_UpdateTexture(window->texture, &rect,
+                          rt_image_pixel(picture, 0, y),
+                          (int)picture->stride);
+    }
+    return 1;
+}
+
 int view_window_set_overlay(view_window *window,
                             const view_projection *projection,
                             const view_segment *segments, int count)
@@ -459,6 +500,11 @@ int view_window_set_overlay(view_window *window,
     window->segment_count = count;
     window->projection = *projection;
     return 1;
+}
+
+void view_window_set_text_place(view_window *window, int bottom)
+{
+    window->text_bottom = bottom;
 }
 
 int view_window_set_text(view_window *window, const char *text)

@@ -101,6 +101,12 @@ int view_window_display(const view_window *window);
 void view_fit_size(int width, int height, int max_width, int max_height,
                    int *out_width, int *out_height);
 
+/* Shows `image` (of the session image's size) instead of the session's
+ * picture until called with NULL, which shows the picture again with every
+ * row finished meanwhile.  Returns 0 when nothing is attached or the size
+ * differs. */
+int view_window_show_image(view_window *window, const rt_image *image);
+
 /* The rays drawn over the picture (copied; count 0 or segments NULL: none),
  * projected with `projection`.  Returns 0 when out of memory (none then). */
 int view_window_set_overlay(view_window *window,
@@ -111,6 +117,10 @@ int view_window_set_overlay(view_window *window,
  * with SDL2_ttf and DejaVu Sans Mono.  Returns 0 when it cannot be shown
  * (a build without SDL2_ttf, no font found): the caller prints it. */
 int view_window_set_text(view_window *window, const char *text);
+
+/* Puts the text panel at the window's bottom (non-zero) or top (0, the
+ * default): away from what it would hide. */
+void view_window_set_text_place(view_window *window, int bottom);
 
 /* Non-zero when this window can show text (SDL2_ttf and a font). */
 int view_window_has_text(const view_window *window);
