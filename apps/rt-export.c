@@ -45,11 +45,13 @@ static const cli_program program = {
     "written directly, a file is replaced atomically, keeping its mode,\n"
     "owner and links.  The progress line (stderr, on a terminal) shows the\n"
     "time left and the camera rays per second; --stats=json prints one\n"
-    "JSON object on one line, the last line on stderr.",
+    "JSON object on one line, the last line on stderr.  --explain X,Y\n"
+    "prints why pixel X,Y has its colour instead of writing the image;\n"
+    "--view writes a debug view in its place (docs/teaching.md).",
     "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage.\n"
     "A signal during the save leaves the previous file intact.",
     CLI_GROUP_RENDER | CLI_GROUP_LOAD | CLI_GROUP_OUTPUT | CLI_GROUP_REPORT |
-        CLI_GROUP_QUIET,
+        CLI_GROUP_QUIET | CLI_GROUP_EXPLAIN | CLI_GROUP_VIEW,
     export_options, 1, 1, "expected a scene file"};
 
 /* "dir/name.scn" -> "name.ppm", or "name.png" for PNG (in the current
@@ -144,6 +146,180 @@ static void print_check(const char *path, const rt_scene *scene)
         printf("  %s\n", rt_scene_warning(scene, i)->message);
 }
 
+static const char *const kind_names[] = {"camera", "shadow", "reflected",
+                                         "refracted"};
+
+static void print_vec(const char *label, rt_vec3 v)
+{
+    printf("%s(%.6g, %.6g, %.6g)", label, v.x, v.y, v.z);
+}
+
+static void print_color(const char *label, rt_color c)
+{
+    printf("%s%.6g %.6g %.6g", label, c.r, c.g, c.b);
+}
+
+/* The sum of the subtotals of node i's children of `kind`. */
+static rt_color children_sum(const rt_ray_node *n, size_t count, size_t i,
+                             rt_ray_kind kind)
+{
+    rt_color sum = {0, 0, 0};
+    for (size_t c = i + 1; c < count; c++)
+        if (n[c].parent == (int)i && n[c].kind == kind) {
+            sum.r += n[c].subtotal.r;
+            sum.g += n[c].subtotal.g;
+            sum.b += n[c].subtotal.b;
+        }
+    return sum;
+}
+
+/* Ray i and the rays that come from it, indented by their depth. */
+static void print_ray(const rt_ray_node *n, size_t count, size_t i,
+                      int indent)
+{
+    const rt_ray_node *r = &n[i];
+    printf("%*s", 2 * indent, "");
+    if (r->kind == RT_RAY_SHADOW) {
+        printf("shadow ray to light %d: N.S %.6g, ", r->light, r->n_dot_s);
+        if (!r->cast)
+            printf("not cast (%s), term 0\n",
+                   r->d == 0 && r->n_dot_s > 0 ? "d = 0" : "N.S <= 0");
+        else if (r->e > 0)
+            print_color("E 1 (lit): E (N.S) d C_S C_F / 255 x weight = ",
+                        r->own), printf("\n");
+        else if (r->blocker >= 0)
+            printf("E 0, shadowed by facet %d (line %d), term 0\n",
+                   r->blocker, r->blocker_line);
+        else
+            printf("E 0 (shadowed), term 0\n");
+        return;
+    }
+    printf("%s ray", kind_names[r->kind]);
+    if (r->kind != RT_RAY_CAMERA)
+        printf(" (weight %.6g)", r->weight);
+    print_vec(" from ", r->origin);
+    print_vec(" direction ", r->direction);
+    printf("\n%*s", 2 * indent + 2, "");
+    if (!r->hit) {
+        print_color("hits nothing: background x weight = ", r->own);
+        printf("\n");
+        return;
+    }
+    printf("hits facet %d (line %d) at t %.6g", r->facet, r->line, r->t);
+    print_vec(", point ", r->point);
+    print_vec(", normal as used ", r->normal);
+    printf("; k %.6g, t %.6g, d %.6g\n", r->k, r->transmission, r->d);
+    for (size_t c = i + 1; c < count; c++)
+        if (n[c].parent == (int)i)
+            print_ray(n, count, c, indent + 1);
+    rt_color direct = children_sum(n, count, i, RT_RAY_SHADOW),
+             reflected = children_sum(n, count, i, RT_RAY_REFLECTED),
+             refracted = children_sum(n, count, i, RT_RAY_REFRACTED);
+    printf("%*s", 2 * indent + 2, "");
+    print_color("terms: direct light ", direct);
+    print_color(" + reflection k C_R ", reflected);
+    print_color(" + refraction t C_T ", refracted);
+    print_color(" = ", r->subtotal);
+    printf("\n");
+}
+
+static void print_json_vec(const char *name, rt_vec3 v)
+{
+    printf(",\"%s\":[%.17g,%.17g,%.17g]", name, v.x, v.y, v.z);
+}
+
+static void print_json_color(const char *name, rt_color c)
+{
+    printf(",\"%s\":[%.17g,%.17g,%.17g]", name, c.r, c.g, c.b);
+}
+
+/* The tree as one JSON object on one line. */
+static void print_json(const char *scene, int x, int y,
+                       const rt_ray_tree *tree)
+{
+    size_t count;
+    const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
+    rt_color v = rt_ray_tree_value(tree);
+    printf("{\"scene\":\"");
+    for (const char *c = scene; *c; c++)
+        printf((*c == '"' || *c == '\\') ? "\\%c" : (unsigned char)*c < 32
+                                                    ? "?" : "%c", *c);
+    printf("\",\"x\":%d,\"y\":%d", x, y);
+    print_json_color("value", v);
+    printf(",\"bytes\":[%d,%d,%d],\"truncated\":%zu,\"rays\":[",
+           rt_channel_to_byte(v.r), rt_channel_to_byte(v.g),
+           rt_channel_to_byte(v.b), rt_ray_tree_truncated(tree));
+    for (size_t i = 0; i < count; i++) {
+        const rt_ray_node *r = &n[i];
+        printf("%s{\"kind\":\"%s\",\"parent\":%d,\"depth\":%d,"
+               "\"sample\":%d,\"weight\":%.17g", i ? "," : "",
+               kind_names[r->kind], r->parent, r->depth, r->sample,
+               r->weight);
+        print_json_vec("origin", r->origin);
+        print_json_vec("direction", r->direction);
+        if (r->kind == RT_RAY_SHADOW)
+            printf(",\"light\":%d,\"n_dot_s\":%.17g,\"cast\":%d,"
+                   "\"e\":%g,\"blocker\":%d,\"blocker_line\":%d",
+                   r->light, r->n_dot_s, r->cast, r->e, r->blocker,
+                   r->blocker_line);
+        else {
+            printf(",\"hit\":%d", r->hit);
+            if (r->hit) {
+                printf(",\"facet\":%d,\"line\":%d,\"t\":%.17g", r->facet,
+                       r->line, r->t);
+                print_json_vec("point", r->point);
+                print_json_vec("normal", r->normal);
+                printf(",\"k\":%.17g,\"transmission\":%.17g,\"d\":%.17g",
+                       r->k, r->transmission, r->d);
+            }
+        }
+        print_json_color("own", r->own);
+        print_json_color("subtotal", r->subtotal);
+        printf("}");
+    }
+    printf("]}\n");
+}
+
+/* --explain X,Y: the ray tree of that pixel, as text or JSON.  Returns an
+ * exit status. */
+static int explain(const rt_scene *scene, const cli_settings *s,
+                   const char *scene_name)
+{
+    rt_ray_tree *tree;
+    rt_error error;
+    if (rt_explain_pixel(scene, &s->render, s->explain_x, s->explain_y, -1,
+                         &tree, &error) != RT_OK) {
+        fprintf(stderr, "rt-export: %s: cannot explain: %s\n", scene_name,
+                error.message);
+        return EXIT_BAD_INPUT;
+    }
+    if (s->explain_json) {
+        print_json(scene_name, s->explain_x, s->explain_y, tree);
+        rt_ray_tree_destroy(tree);
+        return EXIT_SUCCESS;
+    }
+    size_t count;
+    const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
+    printf("pixel %d,%d of %s: C = sum over lights of E (N.S) d C_S C_F / "
+           "255 + k C_R + t C_T\n", s->explain_x, s->explain_y, scene_name);
+    for (size_t i = 0; i < count; i++)
+        if (n[i].parent < 0) {
+            if (s->render.samples > 1)
+                printf("sample %d:\n", n[i].sample);
+            print_ray(n, count, i, 1);
+        }
+    if (rt_ray_tree_truncated(tree) > 0)
+        printf("  (%zu rays left out: the tree is too large to show)\n",
+               rt_ray_tree_truncated(tree));
+    rt_color v = rt_ray_tree_value(tree);
+    printf("pixel value %.17g %.17g %.17g%s -> bytes %d %d %d\n", v.r, v.g,
+           v.b, s->render.samples > 1 ? " (the mean of the samples)" : "",
+           rt_channel_to_byte(v.r), rt_channel_to_byte(v.g),
+           rt_channel_to_byte(v.b));
+    rt_ray_tree_destroy(tree);
+    return EXIT_SUCCESS;
+}
+
 static int same_file(const char *a, const char *b)
 {
     struct stat sa, sb;
@@ -211,12 +387,16 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
                        report->scene, report->height, report->width,
                        s->render.samples);
     rt_render_stats stats;
+    memset(&stats, 0, sizeof stats);
     s->render.stats = &stats;
-    if (wants_progress(s, to_stdout)) {
+    if (wants_progress(s, to_stdout) && s->view == 0) {
         s->render.on_row = cli_progress_row;
         s->render.user = &progress;
     }
-    rt_status status = rt_render(scene, &s->render, &image, &error);
+    rt_status status = s->view != 0
+                           ? rt_render_view(scene, &s->render, s->view,
+                                            s->view_light, &image, &error)
+                           : rt_render(scene, &s->render, &image, &error);
     cli_progress_end(&progress);
     int code = EXIT_BAD_INPUT;
     if (status != RT_OK) {
@@ -327,6 +507,11 @@ int main(int argc, char **argv)
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-export: %s\n", rt_scene_warning(scene, i)->message);
 
+    if (s.explain) {
+        code = explain(scene, &s, report.scene);
+        rt_scene_destroy(scene);
+        return code;
+    }
     char *output = s.output ? NULL : default_output(scene_path, s.format);
     const char *path = s.output ? s.output : output;
     report.output = path;

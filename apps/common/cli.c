@@ -38,7 +38,9 @@ typedef enum value_kind {
     V_POINT,        /* rt_vec3 */
     V_LIGHT,        /* appended to lights[], load.light_count */
     V_SIZE,         /* WxH into render.width, render.height */
-    V_REGION        /* x0,y0,x1,y1 into render.region */
+    V_REGION,       /* x0,y0,x1,y1 into render.region */
+    V_PIXEL,        /* x,y into explain_x, explain_y */
+    V_VIEW          /* name[=light] into view, view_light */
 } value_kind;
 
 /* One option: the table's entry, resolved to addresses at parse time. */
@@ -170,6 +172,20 @@ static const spec table[] = {
      "show the progress line even when stderr is not a terminal"},
     {CLI_GROUP_QUIET, "quiet", 'q', NULL, 0, V_FLAG, 0, 0, 0, NULL, {0},
      AT(quiet), NO_OFFSET, NULL, "no progress line"},
+    {CLI_GROUP_EXPLAIN, "explain", 0, "X,Y", 0, V_PIXEL, 0,
+     RT_MAX_IMAGE_SIDE, 0, NULL, {0}, NO_OFFSET, AT(explain), NULL,
+     "instead of the image, print on stdout the ray tree of pixel X,Y of "
+     "the image (every ray, what it hits, N.S, E and the blocking facet "
+     "with its line, each term of the formula and their sum, the byte it "
+     "rounds to); docs/teaching.md"},
+    {CLI_GROUP_EXPLAIN, "explain-json", 0, NULL, 0, V_FLAG, 0, 0, 0, NULL,
+     {0}, AT(explain_json), NO_OFFSET, NULL,
+     "with --explain: the tree as one JSON object"},
+    {CLI_GROUP_VIEW, "view", 0, "V", 0, V_VIEW, 0, CLI_MAX_LIGHTS - 1, 0,
+     NULL, {0}, NO_OFFSET, NO_OFFSET, NULL,
+     "write a debug view instead of the image: normal, depth, facet, "
+     "shadow[=L] (E of light L, default 0), bounces or ns[=L] (N.S); "
+     "docs/teaching.md says how to read each"},
 };
 
 static const struct {
@@ -181,6 +197,7 @@ static const struct {
     {CLI_GROUP_LOAD, "Scene, view and lights:"},
     {CLI_GROUP_OUTPUT, "Output:"},
     {CLI_GROUP_REPORT | CLI_GROUP_QUIET, "Reports:"},
+    {CLI_GROUP_EXPLAIN | CLI_GROUP_VIEW, "Teaching:"},
 };
 
 /* ------------------------------------------------------------------ */
@@ -319,6 +336,53 @@ static int read_region(const char *text, int max, rt_region *region)
     return 1;
 }
 
+/* "x,y": two whole numbers in 0..max-1. */
+static int read_pixel(const char *text, int max, int *x, int *y)
+{
+    long v[2];
+    const char *at = text;
+    for (int i = 0; i < 2; i++) {
+        char *end;
+        errno = 0;
+        if (!(*at >= '0' && *at <= '9'))
+            return 0;
+        v[i] = strtol(at, &end, 10);
+        if (errno != 0 || *end != (i == 0 ? ',' : '\0') || v[i] >= max)
+            return 0;
+        at = end + 1;
+    }
+    *x = (int)v[0];
+    *y = (int)v[1];
+    return 1;
+}
+
+/* "name" or "name=L" of a debug view; the light only for shadow and ns. */
+static int read_view(const char *text, int max_light, rt_debug_view *view,
+                     int *light)
+{
+    static const struct {
+        const char *name;
+        rt_debug_view view;
+    } views[] = {{"normal", RT_VIEW_NORMAL}, {"depth", RT_VIEW_DEPTH},
+                 {"facet", RT_VIEW_FACET},   {"shadow", RT_VIEW_SHADOW},
+                 {"bounces", RT_VIEW_BOUNCES}, {"ns", RT_VIEW_NS}};
+    const char *equals = strchr(text, '=');
+    size_t length = equals != NULL ? (size_t)(equals - text) : strlen(text);
+    for (size_t i = 0; i < sizeof views / sizeof *views; i++) {
+        if (strlen(views[i].name) != length ||
+            strncmp(text, views[i].name, length) != 0)
+            continue;
+        *light = 0;
+        if (equals != NULL &&
+            ((views[i].view != RT_VIEW_SHADOW && views[i].view != RT_VIEW_NS)
+             || !read_int(equals + 1, 0, max_light, light)))
+            return 0;
+        *view = views[i].view;
+        return 1;
+    }
+    return 0;
+}
+
 static int store_light(const cli_program *program, const spec *s,
                        cli_settings *settings, const char *value)
 {
@@ -397,6 +461,19 @@ static int store(const cli_program *program, const spec *s,
             return CLI_CONTINUE;
         return value_error(program, s, "X0,Y0,X1,Y1, whole numbers with "
                            "X0 < X1 and Y0 < Y1", value);
+    case V_PIXEL:
+        if (read_pixel(value, (int)s->max, &settings->explain_x,
+                       &settings->explain_y))
+            return CLI_CONTINUE;
+        return value_error(program, s, "X,Y, two whole numbers (a pixel of "
+                           "the image, 0,0 top left)", value);
+    case V_VIEW:
+        if (read_view(value, (int)s->max, &settings->view,
+                      &settings->view_light))
+            return CLI_CONTINUE;
+        snprintf(what, sizeof what, "normal, depth, facet, shadow[=L], "
+                 "bounces or ns[=L] (L in 0..%.0f)", s->max);
+        return value_error(program, s, what, value);
     }
     return CLI_CONTINUE;
 }

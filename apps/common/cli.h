@@ -62,6 +62,8 @@ enum {
     CLI_GROUP_OUTPUT = 1 << 6,  /* -o/--output --format */
     CLI_GROUP_REPORT = 1 << 7,  /* --stats[=text|json] --progress */
     CLI_GROUP_QUIET = 1 << 8,   /* -q/--quiet */
+    CLI_GROUP_EXPLAIN = 1 << 9, /* --explain X,Y --explain-json */
+    CLI_GROUP_VIEW = 1 << 10,   /* --view V[=L] (a debug view) */
     /* every render option: what rt-export and rt-view both take */
     CLI_GROUP_RENDER = CLI_GROUP_QUALITY | CLI_GROUP_LENS |
                        CLI_GROUP_THREADS | CLI_GROUP_SIZE | CLI_GROUP_REGION
@@ -134,6 +136,11 @@ typedef struct cli_settings {
     cli_stats stats;            /* --stats[=text|json] */
     int progress;               /* 1: --progress (even off a terminal) */
     int quiet;                  /* 1: -q/--quiet (wins over --progress) */
+    int explain;                /* 1: --explain X,Y was given */
+    int explain_x, explain_y;   /* its pixel, in the output image */
+    int explain_json;           /* 1: --explain-json */
+    rt_debug_view view;         /* --view; 0 when not given */
+    int view_light;             /* --view shadow=L or ns=L (default 0) */
     const char *operands[CLI_MAX_OPERANDS]; /* argv strings, in order */
     int operand_count;
 } cli_settings;
