@@ -9,3 +9,17 @@ if(TARGET raytrace_viewer)
   set_tests_properties(test_viewer PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()
+
+# The click overlay on a real X server: rt-view under Xvfb, driven by
+# xdotool (tests/viewer_xvfb.sh).  Skipped (77) without Xvfb or xdotool;
+# test_viewer checks the same overlay in process, pixel by pixel.
+if(TARGET raytrace_rt_view)
+  find_program(BASH_PROGRAM bash)
+  if(BASH_PROGRAM)
+    add_test(NAME viewer_xvfb
+      COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb.sh")
+    set_tests_properties(viewer_xvfb PROPERTIES
+      ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 120)
+  endif()
+endif()
