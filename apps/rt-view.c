@@ -87,7 +87,7 @@ static const cli_program program = {
     "never loaded, when there is no display, or -o cannot be written;\n"
     "2 bad usage; 128 + the signal after SIGINT, SIGTERM or SIGHUP (which\n"
     "leave a save under way undone, the file as it was).",
-    CLI_GROUP_RENDER | CLI_GROUP_LOAD | CLI_GROUP_OUTPUT,
+    CLI_GROUP_RENDER | CLI_GROUP_LOAD | CLI_GROUP_OUTPUT | CLI_GROUP_VIEW,
     view_options, 0, 1, NULL};
 
 /*
@@ -175,5 +175,7 @@ int main(int argc, char **argv)
     if (s.output != NULL || s.format_given)
         options.format = s.format;
     options.watch = watch;
+    options.view = (int)s.view;
+    options.view_light = s.view_light;
     return run_viewer(&options, s.operand_count ? s.operands[0] : NULL);
 }

@@ -1351,6 +1351,27 @@ START_TEST(debug_view_keys_change_what_the_window_shows)
 }
 END_TEST
 
+START_TEST(view_option_starts_in_that_debug_view)
+{
+    setenv("SDL_VIDEODRIVER", "dummy", 0);
+    ck_assert(SDL_Init(SDL_INIT_VIDEO) == 0);
+    view_app_options options;
+    view_app_options_init(&options);
+    options.window_flags = VIEW_WINDOW_SOFTWARE;
+    options.view = RT_VIEW_FACET;
+    char error[256];
+    view_app *app = view_app_create(&options, error, sizeof error);
+    ck_assert_msg(app != NULL, "%s", error);
+    ck_assert(view_app_open(app, rt_test_source_path("scenes/cubes.scn")));
+    ck_assert_ptr_nonnull(strstr(view_app_title(app), "facet view"));
+    /* A light the scene does not have: the picture, and the reason. */
+    ck_assert(!view_app_set_view(app, RT_VIEW_SHADOW, 7));
+    ck_assert_ptr_null(strstr(view_app_title(app), "view -"));
+    ck_assert_ptr_nonnull(strstr(view_app_message(app), "shadow view"));
+    close_app(app);
+}
+END_TEST
+
 static Suite *viewer_suite(void)
 {
     Suite *suite = suite_create("viewer");
@@ -1395,6 +1416,7 @@ static Suite *viewer_suite(void)
     tcase_add_test(overlay,
                    a_shadowed_pixel_shows_its_blocker_in_red_over_the_image);
     tcase_add_test(overlay, debug_view_keys_change_what_the_window_shows);
+    tcase_add_test(overlay, view_option_starts_in_that_debug_view);
     suite_add_tcase(suite, overlay);
 
     TCase *app = tcase_create("app");

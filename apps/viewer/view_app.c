@@ -173,6 +173,8 @@ view_app *view_app_create(const view_app_options *options, char *error,
         return NULL;
     }
     app->options = *options;
+    app->view = options->view;
+    app->view_light = options->view_light;
     app->wake_event = SDL_RegisterEvents(1);
     if (app->wake_event == (Uint32)-1) {
         snprintf(error, error_size, "cannot register an SDL event");

@@ -42,6 +42,9 @@ typedef struct view_app_options {
     int watch;                  /* --watch: reload when the file changes */
     unsigned window_flags;      /* VIEW_WINDOW_*; the window starts hidden
                                    whatever they say */
+    int view;                   /* --view: the rt_debug_view shown first,
+                                   0: the picture */
+    int view_light;             /* its light (shadow and N.S views) */
 } view_app_options;
 
 typedef struct view_app view_app;
