@@ -181,8 +181,9 @@ RT_API rt_rgb8 rt_debug_facet_color(int index);
  * Writes view `view` of the render with `options` (NULL: defaults) into
  * `image`, of the size rt_render would write (regions apply); `light` is the
  * light of RT_VIEW_SHADOW and RT_VIEW_NS (ignored by the others).  Same
- * statuses as rt_render, plus RT_ERR_ARGUMENT for an unknown view or a
- * light outside 0..light_count-1.  Thread-safe as rt_render.
+ * statuses as rt_render but RT_ERR_CANCELLED, plus RT_ERR_ARGUMENT for an
+ * unknown view or a light outside 0..light_count-1.  It runs on the calling
+ * thread and ignores on_row, cancel and stats.  Thread-safe as rt_render.
  */
 RT_API rt_status rt_render_view(const rt_scene *scene,
                                 const rt_render_options *options,

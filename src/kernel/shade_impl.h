@@ -214,6 +214,14 @@ typedef struct ray_task {
     int node;               /* its recorded node (-1: none) */
 } ray_task;
 
+/* Records a reflected or refracted ray about to be followed. */
+static int record_task(rt_trace_recorder *rec, int kind, int parent,
+                       const ray_task *task)
+{
+    return rt__record_ray(rec, kind, parent, task->level, to_rt(task->origin),
+                          to_rt(task->incoming), (double)task->weight);
+}
+
 /* Rays a transparent trace keeps on its own stack; more go to the heap. */
 #define RAY_TASKS_LOCAL 32
 
@@ -316,10 +324,7 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
                 normalize(refracted, fast), p.weight * f->t, h.index,
                 p.level + 1, -1};
             if (rec != NULL)
-                task.node = rt__record_ray(rec, RT_RAY_REFRACTED, p.node,
-                                           task.level, to_rt(task.origin),
-                                           to_rt(task.incoming),
-                                           (double)task.weight);
+                task.node = record_task(rec, RT_RAY_REFRACTED, p.node, &task);
             stack[used++] = task;
             counters->refraction_rays++;
         }
@@ -329,10 +334,7 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
                 normalize(mirror, fast), p.weight * mirror_weight, h.index,
                 p.level + 1, -1};
             if (rec != NULL)
-                task.node = rt__record_ray(rec, RT_RAY_REFLECTED, p.node,
-                                           task.level, to_rt(task.origin),
-                                           to_rt(task.incoming),
-                                           (double)task.weight);
+                task.node = record_task(rec, RT_RAY_REFLECTED, p.node, &task);
             stack[used++] = task;
             counters->reflection_rays++;
         }
