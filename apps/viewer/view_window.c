@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef RAYTRACE_VIEWER_TTF
 /* The monospaced font of the text panel, first found (Debian's
  * fonts-dejavu-core, then Fedora's and Arch's places for it). */
 static const char *const font_paths[] = {
@@ -25,6 +26,7 @@ static const char *const font_paths[] = {
     "/usr/share/fonts/TTF/DejaVuSansMono.ttf",
 };
 #define FONT_POINTS 13
+#endif
 #define MARK_SIZE 7         /* side of the square marking a hit, in pixels */
 
 struct view_window {
