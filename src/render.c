@@ -291,11 +291,78 @@ static rt_color render_pixel(const job *j, int i, int row,
     return (rt_color){sum.r * inv, sum.g * inv, sum.b * inv};
 }
 
+/* Rays a span of pixels traces at most (samples are at most 1024). */
+#define SPAN_RAYS 1024
+#define SPAN_PIXELS 8
+
+/*
+ * Renders pixels i0 .. i1 - 1 of a row (the output image's columns) as one
+ * span: their camera rays, all samples, go to the kernel together, with
+ * the corners of the span's rectangle of the image plane, and each pixel
+ * is the mean of its samples in render_pixel()'s order.  Pinhole renders
+ * only: every ray leaves the observer.
+ */
+static void render_span(const job *j, int row, int i0, int i1,
+                        unsigned char *out, rt_counters *counters,
+                        uint64_t *rays)
+{
+    rt_vec3 directions[SPAN_RAYS];
+    rt_color colors[SPAN_RAYS];
+    int n = j->grid, m = 0, y = j->y0 + row;
+    for (int i = i0; i < i1; i++)
+        for (int sy = 0; sy < n; sy++)
+            for (int sx = 0; sx < n; sx++)
+                directions[m++] = (n == 1 ? centre_ray(j, j->x0 + i, y)
+                                          : sample_ray(j, j->x0 + i, y, sx,
+                                                       sy))
+                                      .direction;
+    rt_vec3 corner[4];
+    for (int c = 0; c < 4; c++)
+        corner[c] = camera_ray_at(&j->camera,
+                                  j->x0 + (c & 1 ? i1 : i0),
+                                  y + (c >> 1)).direction;
+    if (j->kernel.d != NULL)
+        rt__kernel_d_trace_span(j->kernel.d, j->camera.observer, corner,
+                                directions, m, &j->settings, counters,
+                                colors);
+    else
+        rt__kernel_f_trace_span(j->kernel.f, j->camera.observer, corner,
+                                directions, m, &j->settings, counters,
+                                colors);
+    *rays += (uint64_t)m;
+    double inv = 1.0 / (n * n);
+    for (int i = i0, k = 0; i < i1; i++) {
+        rt_color c = colors[k++];
+        if (n > 1) {
+            for (int s = 1; s < n * n; s++) {
+                c.r += colors[k].r, c.g += colors[k].g, c.b += colors[k].b;
+                k++;
+            }
+            c = (rt_color){c.r * inv, c.g * inv, c.b * inv};
+        }
+        out[3 * i + 0] = rt_channel_to_byte(c.r);
+        out[3 * i + 1] = rt_channel_to_byte(c.g);
+        out[3 * i + 2] = rt_channel_to_byte(c.b);
+    }
+}
+
 /* Renders one row; returns 0 if the render was cancelled meanwhile. */
 static int render_row(job *j, int row, rt_counters *counters,
                       uint64_t *rays)
 {
     unsigned char *out = rt_image_pixel(j->image, 0, row);
+    if (j->settings.eye != NULL && j->aperture == 0.0) {
+        int n = j->grid, per_span = SPAN_RAYS / (n * n);
+        if (per_span > SPAN_PIXELS)
+            per_span = SPAN_PIXELS;
+        for (int i = 0; i < j->width; i += per_span) {
+            if (stopping(j))
+                return 0;
+            int end = i + per_span < j->width ? i + per_span : j->width;
+            render_span(j, row, i, end, out, counters, rays);
+        }
+        return 1;
+    }
     for (int i = 0; i < j->width; i++) {
         if (stopping(j))
             return 0;

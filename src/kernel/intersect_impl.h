@@ -50,12 +50,9 @@ static ray prepare(vec origin, vec direction)
     return r;
 }
 
-/* x*w - y*z with the exact sign even when it rounds to zero in REAL. */
-static REAL edge(REAL x, REAL w, REAL y, REAL z)
+/* x*w - y*z with the exact sign, for when it rounds to zero in REAL. */
+static REAL edge_exact(REAL x, REAL w, REAL y, REAL z)
 {
-    REAL e = x * w - y * z;
-    if (e != 0)
-        return e;
     if (sizeof(REAL) == sizeof(float))  /* float products are exact in double */
         return (REAL)((double)x * (double)w - (double)y * (double)z);
     /* Kahan's difference of products: error below 2 ulps, so the sign is
@@ -64,6 +61,25 @@ static REAL edge(REAL x, REAL w, REAL y, REAL z)
     double err = fma(-(double)y, (double)z, yz);
     return (REAL)(fma((double)x, (double)w, -yz) + err);
 }
+
+/* A rounded edge function e = x*w - y*z as computed, made exact in sign
+ * when it rounded to zero. */
+static inline REAL edge_signed(REAL e, REAL x, REAL w, REAL y, REAL z)
+{
+    return e != 0 ? e : edge_exact(x, w, y, z);
+}
+
+/*
+ * A facet in a ray's sheared frame: its vertices minus the ray's origin,
+ * sheared (x, y) and on the kz axis before scaling (z), and the rounded
+ * edge functions u, v, w - the values the filter of simd_impl.h computes
+ * too, operation for operation, so it can hand them over.
+ */
+typedef struct sheared {
+    REAL ax, ay, bx, by, cx, cy;
+    REAL az, bz, cz;
+    REAL u, v, w;
+} sheared;
 
 typedef struct hit {
     REAL t;
@@ -87,23 +103,22 @@ typedef struct hit {
  * determinant, so coordinates from 1e-150 to 1e150 neither overflow nor
  * underflow.
  *
- * The fast loops (simd_impl.h) repeat the computation of the edge
- * functions u, v, w below, operation for operation, and skip the facets
- * where two of them have strictly opposite signs: keep both in step, and
- * keep that rejection the first thing this test does with u, v, w.
+ * The fast loops (simd_impl.h) repeat the computation of the sheared
+ * vertices and the edge functions u, v, w of intersect(), operation for
+ * operation, skip the facets where two of them have strictly opposite
+ * signs and hand the values of the others to intersect_sheared(): keep
+ * both in step, and keep that rejection the first thing this test does
+ * with u, v, w.
  */
-static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
-                                             REAL t_max, hit *h)
+static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
+                                                     const ray *r,
+                                                     REAL t_max, hit *h)
 {
-    vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
-        c = sub(f->c, r->origin);
-    REAL az = get(a, r->kz), bz = get(b, r->kz), cz = get(c, r->kz);
-    REAL ax = get(a, r->kx) - r->sx * az, ay = get(a, r->ky) - r->sy * az;
-    REAL bx = get(b, r->kx) - r->sx * bz, by = get(b, r->ky) - r->sy * bz;
-    REAL cx = get(c, r->kx) - r->sx * cz, cy = get(c, r->ky) - r->sy * cz;
-    REAL u = edge(cx, by, cy, bx);
-    REAL v = edge(ax, cy, ay, cx);
-    REAL w = edge(bx, ay, by, ax);
+    REAL ax = s->ax, ay = s->ay, bx = s->bx, by = s->by, cx = s->cx,
+         cy = s->cy, az = s->az, bz = s->bz, cz = s->cz;
+    REAL u = edge_signed(s->u, cx, by, cy, bx);
+    REAL v = edge_signed(s->v, ax, cy, ay, cx);
+    REAL w = edge_signed(s->w, bx, ay, by, ax);
     if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
         return 0;
     REAL det = u + v + w;
@@ -141,6 +156,27 @@ static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
     h->b1 = b1;
     h->b2 = b2;
     return 1;
+}
+
+static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
+                                             REAL t_max, hit *h)
+{
+    vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
+        c = sub(f->c, r->origin);
+    sheared s;
+    s.az = get(a, r->kz);
+    s.bz = get(b, r->kz);
+    s.cz = get(c, r->kz);
+    s.ax = get(a, r->kx) - r->sx * s.az;
+    s.ay = get(a, r->ky) - r->sy * s.az;
+    s.bx = get(b, r->kx) - r->sx * s.bz;
+    s.by = get(b, r->ky) - r->sy * s.bz;
+    s.cx = get(c, r->kx) - r->sx * s.cz;
+    s.cy = get(c, r->ky) - r->sy * s.cz;
+    s.u = s.cx * s.by - s.cy * s.bx;
+    s.v = s.ax * s.cy - s.ay * s.cx;
+    s.w = s.bx * s.ay - s.by * s.ax;
+    return intersect_sheared(&s, r, t_max, h);
 }
 
 /*

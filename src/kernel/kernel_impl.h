@@ -16,6 +16,8 @@
  *     octree_impl.h     the octree: construction and the walk of a ray
  *     query_impl.h      nearest hit and any hit: brute force or octree
  *     shade_impl.h      hit points, offsets, light and reflections
+ *     packet_impl.h     camera rays in packets: a tile cull, SIMD across
+ *                       rays
  */
 #include <pthread.h>
 #include <stdlib.h>
@@ -47,10 +49,14 @@ typedef struct tri {
 typedef struct block block;     /* eight facets, simd_impl.h */
 typedef struct octree octree;   /* octree_impl.h */
 
-/* The vertices minus one ray origin, for the rays that start there. */
+/* The vertices minus one ray origin, for the rays that start there, and
+ * for a scene of few facets their edge functions for the packets. */
 struct KERNEL_EYE_T {
     vec origin;
     block *blocks;
+    int count;                  /* the kernel's facets */
+    double *edges;          /* NULL, or the facets' edge functions by
+                               frame (packet_impl.h) */
 };
 
 struct KERNEL_T {
@@ -66,6 +72,11 @@ struct KERNEL_T {
                                d C_S,l C_F / 255 at [(i (L-1) + l-1) 3 + c] */
     int transparent;        /* some facet has t > 0 */
     REAL background[3];
+    struct shadow_plane *planes;    /* NULL, or per facet, and */
+    REAL *light_side;       /* per light and facet: the shadow packets'
+                               cull (packet_impl.h) */
+    REAL extent;            /* the largest |coordinate| of a vertex or a
+                               light */
     _Atomic(octree *) tree;     /* built on first use, then only read */
     pthread_mutex_t tree_lock;  /* serialises that construction */
 };
@@ -83,6 +94,7 @@ static const octree *octree_of(const KERNEL_T *k)
 
 #include "query_impl.h"
 #include "shade_impl.h"
+#include "packet_impl.h"
 
 KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
 {
@@ -157,6 +169,11 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
     fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
+    if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS &&
+        k->light_count <= PACKET_MAX_LIGHTS && !packet_prepare_kernel(k)) {
+        KERNEL(free)(k);
+        return NULL;
+    }
     return k;
 }
 
@@ -167,6 +184,8 @@ void KERNEL(free)(KERNEL_T *k)
         free(k->blocks);
         free(k->lights);
         free(k->more_diffuse);
+        free(k->planes);
+        free(k->light_side);
         octree_free(atomic_load(&k->tree));
         pthread_mutex_destroy(&k->tree_lock);
     }
@@ -217,13 +236,24 @@ KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
         return NULL;
     }
     fill_blocks(eye->blocks, k->tris, k->count, eye->origin);
+    eye->count = k->count;
+    if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS) {
+        eye->edges = malloc(edges_size(k->count) * sizeof *eye->edges);
+        if (eye->edges == NULL) {
+            KERNEL(eye_free)(eye);
+            return NULL;
+        }
+        packet_prepare_eye(eye, k->count);
+    }
     return eye;
 }
 
 void KERNEL(eye_free)(KERNEL_EYE_T *eye)
 {
-    if (eye != NULL)
+    if (eye != NULL) {
         free(eye->blocks);
+        free(eye->edges);
+    }
     free(eye);
 }
 

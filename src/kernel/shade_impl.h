@@ -69,6 +69,16 @@ HOT_INLINE vec offset_origin(vec point, vec error_bound, vec normal,
               step_away(p.z, offset.z));
 }
 
+/* The shadow ray from `point` (its error bound, its normal facing the
+ * ray that hit it) to the light at `light`, to_light = light - point:
+ * from the offset origin, with the light at t = 1. */
+HOT_INLINE ray shadow_ray(vec point, vec error_bound, vec normal, vec light,
+                          vec to_light)
+{
+    vec origin = offset_origin(point, error_bound, normal, to_light);
+    return prepare(origin, sub(light, origin));
+}
+
 /* The terms d C_S,l C_F / 255 of facet `index` for light `l`. */
 static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
                               int l)
@@ -106,13 +116,14 @@ static void record_light(const KERNEL_T *k, int simd, const octree *tree,
  * E_l (N.S_l) d C_S,l C_F / 255.  No shadow ray where it cannot matter:
  * d = 0 (k = 1 on a handout facet) or N.S_l <= 0.  With a recorder (NULL
  * in renders, where this code vanishes) each light is recorded under
- * `node`. */
+ * `node`.  given[l], when given and >= 0, is the answer of the shadow ray
+ * to light l, found already by a packet (packet_impl.h). */
 HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                              const tri *f, int index, vec point,
                              vec error_bound, vec normal, REAL weight,
                              int fast, int simd, REAL color[3],
                              rt_counters *counters, rt_trace_recorder *rec,
-                             int node)
+                             int node, const signed char *given)
 {
     int dark = f->d == 0;   /* k = 1 on a handout facet */
     const rt_color none = {0, 0, 0};
@@ -126,13 +137,20 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                              fast, NULL, point, index, 0, 0, none);
             continue;
         }
-        vec origin = offset_origin(point, error_bound, normal, to_light);
-        ray shadow = prepare(origin, sub(light, origin));
         counters->shadow_rays++;
-        if (any_hit(k, simd, tree, &shadow, 1, index, counters)) {
+        ray shadow;
+        int blocked;
+        if (given != NULL && given[l] >= 0 && rec == NULL) {
+            blocked = given[l];
+        } else {
+            shadow = shadow_ray(point, error_bound, normal, light, to_light);
+            blocked = any_hit(k, simd, tree, &shadow, 1, index, counters);
+        }
+        if (blocked) {
             if (rec != NULL)
                 record_light(k, simd, tree, rec, node, l, normal, to_light,
-                             fast, &shadow, origin, index, 1, 1, none);
+                             fast, &shadow, shadow.origin, index, 1, 1,
+                             none);
             continue;
         }
         REAL w = weight * dot(normal, normalize(to_light, fast));
@@ -141,11 +159,26 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
             color[c] += w * diffuse[c];
         if (rec != NULL)
             record_light(k, simd, tree, rec, node, l, normal, to_light, fast,
-                         &shadow, origin, index, 1, 0,
+                         &shadow, shadow.origin, index, 1, 0,
                          (rt_color){w * diffuse[0], w * diffuse[1],
                                     w * diffuse[2]});
     }
 }
+
+/* Lights whose shadow rays a packet casts together (more: one by one). */
+#define PACKET_MAX_LIGHTS 8
+
+/* What a packet of camera rays (packet_impl.h) found of one ray's first
+ * bounce: the nearest hit (*h, when found), its point, error bound and
+ * normal as trace_opaque() computes them, and for each light l whether the
+ * shadow ray was blocked (1) or not (0); -1 leaves that ray to the
+ * trace. */
+typedef struct first_bounce {
+    int found;
+    const hit *h;
+    vec point, error_bound, normal;
+    signed char blocked[PACKET_MAX_LIGHTS];
+} first_bounce;
 
 /*
  * The opaque case (no facet with t > 0): the rendering model with the
@@ -153,12 +186,13 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
  * hit's own term times the product of the k met before it, so any depth
  * runs in constant stack.  Work that cannot change the result is left out:
  * no shadow ray where N.S <= 0 or d = 0, no reflected ray from a facet with
- * k = 0.
+ * k = 0.  `first` is NULL, or what a packet (packet_impl.h) found
+ * already of the camera ray's first bounce.
  */
 HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
                          const rt_trace_settings *settings, const octree *tree,
                          int simd, REAL color[3], rt_counters *counters,
-                         rt_trace_recorder *rec)
+                         rt_trace_recorder *rec, const first_bounce *first)
 {
     REAL weight = 1;
     int skip = -1, fast = settings->fast_inv_sqrt, node = -1;
@@ -168,10 +202,18 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
                                                    : RT_RAY_REFLECTED,
                                   node, bounce, to_rt(origin),
                                   to_rt(incoming), (double)weight);
-        ray r = prepare(origin, incoming);
         hit h;
-        if (!nearest(k, simd, tree, bounce == 0 ? settings->eye : NULL, &r,
-                     INFINITY, skip, &h, counters)) {
+        int found;
+        if (bounce == 0 && first != NULL) {
+            found = first->found;
+            if (found)
+                h = *first->h;
+        } else {
+            ray r = prepare(origin, incoming);
+            found = nearest(k, simd, tree, bounce == 0 ? settings->eye : NULL,
+                            &r, INFINITY, skip, &h, counters);
+        }
+        if (!found) {
             for (int c = 0; c < 3; c++)
                 color[c] += weight * k->background[c];
             if (rec != NULL)
@@ -182,14 +224,23 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
             break;
         }
         const tri *f = &k->tris[h.index];
-        vec error_bound;
-        vec point = hit_point(f, &h, origin, incoming, &error_bound);
-        vec normal = dot(f->normal, incoming) > 0 ? neg(f->normal) : f->normal;
+        vec error_bound, point, normal;
+        if (bounce == 0 && first != NULL) {
+            point = first->point;
+            error_bound = first->error_bound;
+            normal = first->normal;
+        } else {
+            point = hit_point(f, &h, origin, incoming, &error_bound);
+            normal = dot(f->normal, incoming) > 0 ? neg(f->normal)
+                                                  : f->normal;
+        }
         if (rec != NULL)
             rt__record_hit(rec, node, f->facet, (double)h.t, to_rt(point),
                            to_rt(normal));
         add_direct_light(k, tree, f, h.index, point, error_bound, normal,
-                         weight, fast, simd, color, counters, rec, node);
+                         weight, fast, simd, color, counters, rec, node,
+                         bounce == 0 && first != NULL ? first->blocked
+                                                      : NULL);
         if (f->k == 0) {
             counters->reflection_rays_skipped += bounce < settings->max_depth;
             break;
@@ -287,7 +338,8 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
             rt__record_hit(rec, p.node, f->facet, (double)h.t, to_rt(point),
                            to_rt(normal));
         add_direct_light(k, tree, f, h.index, point, error_bound, normal,
-                         p.weight, fast, simd, color, counters, rec, p.node);
+                         p.weight, fast, simd, color, counters, rec, p.node,
+                         NULL);
         int deeper = p.level < settings->max_depth;
         if (f->k == 0)
             counters->reflection_rays_skipped += deeper;
@@ -363,10 +415,10 @@ rt_color KERNEL(trace)(const KERNEL_T *k, rt_vec3 origin_d,
      * records; the arithmetic is the same source. */
     if (!k->transparent && settings->recorder == NULL)
         trace_opaque(k, origin, incoming, settings, tree, simd, color,
-                     counters, NULL);
+                     counters, NULL, NULL);
     else if (!k->transparent)
         trace_opaque(k, origin, incoming, settings, tree, simd, color,
-                     counters, settings->recorder);
+                     counters, settings->recorder, NULL);
     else if (!trace_transparent(k, origin, incoming, settings, tree, simd,
                                 color, counters, settings->recorder))
         counters->out_of_memory = 1;

@@ -61,7 +61,9 @@ typedef __m256 vreal;
 #define VW 8
 #define v_set1 _mm256_set1_ps
 #define v_load _mm256_load_ps
+#define v_store _mm256_store_ps
 #define v_sub _mm256_sub_ps
+#define v_add _mm256_add_ps
 #define v_mul _mm256_mul_ps
 #define v_min _mm256_min_ps
 #define v_max _mm256_max_ps
@@ -74,7 +76,9 @@ typedef __m256d vreal;
 #define VW 4
 #define v_set1 _mm256_set1_pd
 #define v_load _mm256_load_pd
+#define v_store _mm256_store_pd
 #define v_sub _mm256_sub_pd
+#define v_add _mm256_add_pd
 #define v_mul _mm256_mul_pd
 #define v_min _mm256_min_pd
 #define v_max _mm256_max_pd
@@ -103,14 +107,65 @@ AVX2 static void broadcast(const ray *r, vray *q)
     q->kz = r->kz;
 }
 
+/* What the filter computed for its lanes, kept for intersect_sheared():
+ * value (in the order of the fields of `sheared`) by lane. */
+typedef struct lanes_kept {
+    _Alignas(32) REAL v[12][BLOCK_LANES];
+} lanes_kept;
+
+static inline sheared kept_lane(const lanes_kept *keep, int lane)
+{
+    const REAL(*v)[BLOCK_LANES] = keep->v;
+    return (sheared){v[0][lane], v[1][lane], v[2][lane],  v[3][lane],
+                     v[4][lane], v[5][lane], v[6][lane],  v[7][lane],
+                     v[8][lane], v[9][lane], v[10][lane], v[11][lane]};
+}
+
 /*
- * Bit i set when lane i of *b may be hit: all but the lanes whose edge
- * functions have strictly opposite signs.  Same operations as intersect().
- * When `translated` (a constant), *b holds the vertices minus the ray's
- * origin, already rounded as intersect() rounds them.
+ * The heart of the filter, one lane a (ray, facet) pair: a, b, c are the
+ * facet's vertices minus the ray's origin on the axes kx, ky, kz, (sx, sy)
+ * the ray's shear.  Bit i set when lane i may be hit: all but the lanes
+ * whose edge functions u, v, w - the operations of intersect(), in its
+ * order - have strictly opposite signs.  When one of the lanes in `live`
+ * may be hit, the values of all lanes go to keep->v[..][at + lane].  The
+ * facet loops below put eight facets in the lanes and one ray in all; the
+ * packets of packet_impl.h one facet in all and several rays.
  */
 AVX2 static inline __attribute__((always_inline)) unsigned
-block_candidates(const block *b, const vray *q, int translated)
+edges_filter(const vreal a[3], const vreal b[3], const vreal c[3], vreal sx,
+             vreal sy, unsigned live, lanes_kept *keep, int at)
+{
+    vreal ax = v_sub(a[0], v_mul(sx, a[2]));
+    vreal ay = v_sub(a[1], v_mul(sy, a[2]));
+    vreal bx = v_sub(b[0], v_mul(sx, b[2]));
+    vreal by = v_sub(b[1], v_mul(sy, b[2]));
+    vreal cx = v_sub(c[0], v_mul(sx, c[2]));
+    vreal cy = v_sub(c[1], v_mul(sy, c[2]));
+    vreal u = v_sub(v_mul(cx, by), v_mul(cy, bx));
+    vreal v = v_sub(v_mul(ax, cy), v_mul(ay, cx));
+    vreal w = v_sub(v_mul(bx, ay), v_mul(by, ax));
+    vreal low = v_min(u, v_min(v, w)), high = v_max(u, v_max(v, w));
+    vreal outside = v_and(v_cmp(low, v_zero(), _CMP_LT_OQ),
+                          v_cmp(high, v_zero(), _CMP_GT_OQ));
+    unsigned in = ~(unsigned)v_movemask(outside) & ((1u << VW) - 1);
+    if ((in & live) != 0) {
+        const vreal value[12] = {ax, ay, bx, by, cx, cy,
+                                 a[2], b[2], c[2], u, v, w};
+        for (int j = 0; j < 12; j++)
+            v_store(&keep->v[j][at], value[j]);
+    }
+    return in;
+}
+
+/*
+ * Bit i set when lane i of *b may be hit (edges_filter(), the values of
+ * the lanes of `live` kept in *keep).  When `translated` (a constant), *b
+ * holds the vertices minus the ray's origin, already rounded as
+ * intersect() rounds them.
+ */
+AVX2 static inline __attribute__((always_inline)) unsigned
+block_candidates(const block *b, const vray *q, int translated,
+                 unsigned live, lanes_kept *keep)
 {
     unsigned mask = 0;
     for (int h = 0; h < BLOCK_LANES; h += VW) {
@@ -127,22 +182,10 @@ block_candidates(const block *b, const vray *q, int translated)
                 c[j] = v_sub(c[j], origin[j]);
             }
         }
-        vreal ax = v_sub(a[0], v_mul(q->sx, a[2]));
-        vreal ay = v_sub(a[1], v_mul(q->sy, a[2]));
-        vreal bx = v_sub(bb[0], v_mul(q->sx, bb[2]));
-        vreal by = v_sub(bb[1], v_mul(q->sy, bb[2]));
-        vreal cx = v_sub(c[0], v_mul(q->sx, c[2]));
-        vreal cy = v_sub(c[1], v_mul(q->sy, c[2]));
-        vreal u = v_sub(v_mul(cx, by), v_mul(cy, bx));
-        vreal v = v_sub(v_mul(ax, cy), v_mul(ay, cx));
-        vreal w = v_sub(v_mul(bx, ay), v_mul(by, ax));
-        vreal low = v_min(u, v_min(v, w)), high = v_max(u, v_max(v, w));
-        vreal outside = v_and(v_cmp(low, v_zero(), _CMP_LT_OQ),
-                              v_cmp(high, v_zero(), _CMP_GT_OQ));
-        unsigned out = (unsigned)v_movemask(outside);
-        mask |= (~out & ((1u << VW) - 1)) << h;
+        mask |= edges_filter(a, bb, c, q->sx, q->sy, live >> h, keep, h)
+                << h;
     }
-    return mask;
+    return mask & live;
 }
 
 /* The lanes of block `b` that hold facets. */
@@ -162,15 +205,15 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
     broadcast(r, &q);
     int found = 0;
     hit candidate;
+    lanes_kept keep;
     for (int b = 0; b < k->block_count; b++) {
-        unsigned m = block_candidates(&blocks[b], &q, translated);
-        if (m == 0)
-            continue;
-        m &= block_lanes(k, b);
+        unsigned m = block_candidates(&blocks[b], &q, translated,
+                                      block_lanes(k, b), &keep);
         while (m != 0) {
-            int i = b * BLOCK_LANES + __builtin_ctz(m);
+            int lane = __builtin_ctz(m), i = b * BLOCK_LANES + lane;
             m &= m - 1;
-            if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
+            sheared s = kept_lane(&keep, lane);
+            if (i != skip && intersect_sheared(&s, r, t_max, &candidate)) {
                 candidate.index = i;
                 if (found && !replaces(k, h, &candidate))
                     continue;
@@ -206,16 +249,16 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
     vray q;
     broadcast(r, &q);
     hit ignored;
+    lanes_kept keep;
     int b;
     for (b = 0; b < k->block_count; b++) {
-        unsigned m = block_candidates(&k->blocks[b], &q, 0);
-        if (m == 0)
-            continue;
-        m &= block_lanes(k, b);
+        unsigned m = block_candidates(&k->blocks[b], &q, 0, block_lanes(k, b),
+                                      &keep);
         while (m != 0) {
-            int i = b * BLOCK_LANES + __builtin_ctz(m);
+            int lane = __builtin_ctz(m), i = b * BLOCK_LANES + lane;
             m &= m - 1;
-            if (i != skip && intersect(r, &k->tris[i], t_max, &ignored) &&
+            sheared s = kept_lane(&keep, lane);
+            if (i != skip && intersect_sheared(&s, r, t_max, &ignored) &&
                 blocks(&ignored, t_max)) {
                 int made = (b + 1) * BLOCK_LANES;
                 if (made > k->count)
@@ -252,7 +295,8 @@ AVX2 static unsigned gathered_candidates(const KERNEL_T *k, const ray *r,
     }
     vray q;
     broadcast(r, &q);
-    return block_candidates(&b, &q, 0) & ((1u << n) - 1);
+    lanes_kept unused;  /* the octree's loops call intersect() */
+    return block_candidates(&b, &q, 0, (1u << n) - 1, &unused);
 }
 
 /* Non-zero when this processor runs the AVX2 loops. */

@@ -1,0 +1,585 @@
+/*
+ * packet_impl.h - camera rays in packets (part of kernel_impl.h, compiled
+ * once per precision; everything here but KERNEL(trace_span) is static).
+ *
+ * The camera rays of a few neighbouring pixels - a span of one row - leave
+ * one point, the eye, in nearly one direction.  Two things are shared
+ * among them, and nothing else changes:
+ *
+ * 1. A tile cull.  For rays from the eye whose axis frame (kx, ky, kz and
+ *    the winding swap of prepare()) is the same, each edge function of a
+ *    facet is an affine function of the ray's shear (sx, sy):
+ *        e(sx, sy) = e0 + sx ex + sy ey,
+ *    where (ex, ey, e0) is the cross product of the edge's two vertices
+ *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy pz) -
+ *    (py - sy pz)(qx - sx qz)).  Over the span's rays, (sx, sy) stays in
+ *    the box of the span's four corner rays (the projective map of a
+ *    rectangle on which the kz coordinate keeps its sign is convex), so
+ *    each edge function stays in an interval.  Where one edge's interval
+ *    is below -slack and another's above +slack, every ray of the span has
+ *    two edge functions of strictly opposite signs, as computed by the
+ *    filter and by intersect(): `slack` bounds the distance between the
+ *    computed and the affine values (see facet_edges), so the facet is
+ *    left out for the whole span, as the exact filter would leave it out
+ *    for each ray.
+ * 2. SIMD across rays.  The facets the cull keeps are tested against
+ *    several rays at a time: one facet broadcast, one ray per lane, through
+ *    edges_filter() of simd_impl.h - the filter's own operations, so each
+ *    lane is bit for bit what the filter computes for that pair - and the
+ *    scalar intersect_sheared() decides every lane the filter passes,
+ *    from the filter's values, facet by facet in index order, with each
+ *    ray's own t_max and the tie rule of replaces().  So each ray gets the hit nearest_scalar() gives it.
+ *
+ * A ray whose frame is not the span's (near the diagonals where the
+ * dominant axis changes) is traced alone, as KERNEL(trace) traces it.  The
+ * rest of each ray's path (shading, shadow rays, reflections) is the one
+ * trace_opaque() of shade_impl.h.  Only renders of scenes with at most
+ * PACKET_MAX_FACETS facets, brute force, the fast loops and no
+ * transparency take this path; the work it saves is the filter's, which
+ * dominates there.
+ */
+
+#define PACKET_MAX_FACETS 64    /* a span's candidates fit a uint64_t */
+#define FRAMES 6                /* kz = 0, 1, 2, without and with the swap */
+
+/*
+ * The facets' edge functions u (vertices c, b), v (a, c) and w (b, a) in
+ * each frame, as affine functions of the shear, in double, by rows of
+ * EDGE_LANES facets: eye->edges[(frame * EDGE_ROWS + row) * padded + i],
+ * rows e0 (3, one per edge function), ex (3), ey (3), slack (3).  slack
+ * bounds |computed - affine| for a ray of that frame (so |sx|, |sy| <= 1):
+ * the shear values px - sx pz carry at most about 2 eps (|px| + |pz|), the
+ * edge function built from them at most 48 eps N_p N_q (N the 1-norm of a
+ * vertex minus the eye, eps the kernel's REAL_EPS); a ray's (sx, sy)
+ * strays from the corners' box by a few eps (rounding of the directions),
+ * worth at most 2 (64 eps) N_p N_q; the cull's own double arithmetic adds
+ * under 8 eps N_p N_q.  slack = 1024 eps N_p N_q covers the sum twice; it
+ * is infinite (no cull) where a coefficient is not finite.  Padding lanes
+ * have zeros, and are masked out.
+ */
+#define EDGE_ROWS 12
+#define EDGE_LANES 4
+
+static int edges_padded(int count)
+{
+    return (count + EDGE_LANES - 1) / EDGE_LANES * EDGE_LANES;
+}
+
+static size_t edges_size(int count)
+{
+    return (size_t)FRAMES * EDGE_ROWS * (size_t)edges_padded(count);
+}
+
+static int frame_index(int kz, int swapped) { return 2 * kz + swapped; }
+
+/* Fills eye->edges from eye->blocks (the vertices minus the eye, as the
+ * filter reads them). */
+static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
+{
+    int padded = edges_padded(count);
+    memset(eye->edges, 0, edges_size(count) * sizeof *eye->edges);
+    for (int kz = 0; kz < 3; kz++) {
+        for (int swapped = 0; swapped < 2; swapped++) {
+            int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+            if (swapped) {
+                int t = kx;
+                kx = ky;
+                ky = t;
+            }
+            const int axis[3] = {kx, ky, kz};
+            double *rows = &eye->edges[(size_t)frame_index(kz, swapped) *
+                                       EDGE_ROWS * (size_t)padded];
+            for (int i = 0; i < count; i++) {
+                const block *b = &eye->blocks[i / BLOCK_LANES];
+                int lane = i % BLOCK_LANES;
+                double p[3][3], norm[3];    /* vertex, frame axis */
+                for (int j = 0; j < 3; j++) {
+                    norm[j] = 0;
+                    for (int x = 0; x < 3; x++) {
+                        p[j][x] = (double)b->v[j][axis[x]][lane];
+                        norm[j] += fabs(p[j][x]);
+                    }
+                }
+                static const int pair[3][2] = {{2, 1}, {0, 2}, {1, 0}};
+                for (int f = 0; f < 3; f++) {
+                    const double *q = p[pair[f][0]], *r = p[pair[f][1]];
+                    double e0 = q[0] * r[1] - q[1] * r[0];
+                    double ex = q[1] * r[2] - q[2] * r[1];
+                    double ey = q[2] * r[0] - q[0] * r[2];
+                    double slack = 1024 * (double)REAL_EPS *
+                                   norm[pair[f][0]] * norm[pair[f][1]];
+                    if (!isfinite(e0) || !isfinite(ex) || !isfinite(ey))
+                        slack = INFINITY;
+                    rows[(0 + f) * padded + i] = e0;
+                    rows[(3 + f) * padded + i] = ex;
+                    rows[(6 + f) * padded + i] = ey;
+                    rows[(9 + f) * padded + i] = slack;
+                }
+            }
+        }
+    }
+}
+
+/*
+ * The shadow packets' cull.  A shadow ray from O to the light L cannot be
+ * blocked by a facet whose plane has O and L strictly on one side: the
+ * segment does not reach the plane.  Strictly means by more than what the
+ * watertight test can move a point (its rounding of the translated and
+ * sheared vertices and of the direction L - O, a few eps times the
+ * coordinates, eps the kernel's REAL_EPS), plus the facet's own distance
+ * from the plane computed here (`thick2`, twice the largest |n.v - c| of
+ * its vertices, in case the normal of a sliver is inaccurate).  The margin
+ * taken is 4096 eps 3 max(extent, |O|) - over a hundred times those
+ * errors, and far below any distance that matters to the cull.
+ * light_side[l count + i] is +1 or -1, the side of light l, or NaN where
+ * the light is within the margin of the plane (no cull).
+ */
+struct shadow_plane {
+    REAL n[3];              /* unit normal */
+    REAL c;                 /* n.a */
+    REAL thick2;
+};
+
+static REAL shadow_margin(REAL extent)
+{
+    return 4096 * REAL_EPS * 3 * extent;
+}
+
+/* Fills k->planes, k->light_side and k->extent; 0 when out of memory. */
+static int packet_prepare_kernel(KERNEL_T *k)
+{
+    k->planes = malloc((size_t)k->count * sizeof *k->planes);
+    k->light_side = malloc((size_t)k->count * (size_t)k->light_count *
+                           sizeof *k->light_side);
+    if (k->planes == NULL || k->light_side == NULL)
+        return 0;
+    double extent = 0;
+    for (int i = 0; i < k->count; i++)
+        extent = fmax(extent, fmax(max3(k->tris[i].a.x, k->tris[i].a.y,
+                                        k->tris[i].a.z),
+                                   fmax(max3(k->tris[i].b.x, k->tris[i].b.y,
+                                             k->tris[i].b.z),
+                                        max3(k->tris[i].c.x, k->tris[i].c.y,
+                                             k->tris[i].c.z))));
+    for (int l = 0; l < k->light_count; l++)
+        extent = fmax(extent, max3(k->lights[l].x, k->lights[l].y,
+                                   k->lights[l].z));
+    k->extent = (REAL)extent;
+    double margin = (double)shadow_margin(k->extent);
+    for (int i = 0; i < k->count; i++) {
+        const tri *f = &k->tris[i];
+        const vec *vertex[3] = {&f->a, &f->b, &f->c};
+        double v[3][3];
+        for (int j = 0; j < 3; j++) {
+            v[j][0] = vertex[j]->x;
+            v[j][1] = vertex[j]->y;
+            v[j][2] = vertex[j]->z;
+        }
+        double e1[3], e2[3];
+        for (int x = 0; x < 3; x++) {
+            e1[x] = v[1][x] - v[0][x];
+            e2[x] = v[2][x] - v[0][x];
+        }
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1],
+                       e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        struct shadow_plane *p = &k->planes[i];
+        for (int x = 0; x < 3; x++)
+            p->n[x] = (REAL)(n[x] / length);
+        p->c = (REAL)(p->n[0] * v[0][0] + p->n[1] * v[0][1] +
+                      p->n[2] * v[0][2]);
+        double thick = 0;
+        for (int j = 0; j < 3; j++)
+            thick = fmax(thick, fabs((double)p->n[0] * v[j][0] +
+                                     (double)p->n[1] * v[j][1] +
+                                     (double)p->n[2] * v[j][2] - p->c));
+        double thick2 = 2 * thick * (1 + 0x1p-10);
+        p->thick2 = (REAL)thick2;
+        int usable = isfinite(length) && length > 0 && isfinite(thick2) &&
+                     (double)p->thick2 >= thick2;
+        for (int l = 0; l < k->light_count; l++) {
+            const vec *L = &k->lights[l];
+            double side = (double)p->n[0] * L->x + (double)p->n[1] * L->y +
+                          (double)p->n[2] * L->z - p->c;
+            REAL sign = (REAL)NAN;
+            if (usable && side > margin + thick2)
+                sign = 1;
+            else if (usable && side < -(margin + thick2))
+                sign = -1;
+            k->light_side[(size_t)l * (size_t)k->count + (size_t)i] = sign;
+        }
+    }
+    return 1;
+}
+
+/* A span's shared part: the frame of its rays and the facets they may
+ * hit. */
+typedef struct tile {
+    int frame;
+    int kx, ky, kz;
+    uint64_t candidates;    /* bit i: facet i is not culled */
+} tile;
+
+/* The frame prepare() gives a direction, in double. */
+static void frame_of_direction(rt_vec3 d, int *kx, int *ky, int *kz,
+                               int *swapped)
+{
+    double x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
+    *kz = x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
+    *kx = (*kz + 1) % 3;
+    *ky = (*kx + 1) % 3;
+    double dz = *kz == 0 ? d.x : *kz == 1 ? d.y : d.z;
+    *swapped = dz < 0;
+    if (*swapped) {
+        int t = *kx;
+        *kx = *ky;
+        *ky = t;
+    }
+}
+
+static double axis_of(rt_vec3 d, int axis)
+{
+    return axis == 0 ? d.x : axis == 1 ? d.y : d.z;
+}
+
+#if HAVE_AVX2_KERNEL
+/* The facets not culled for shears in the box lo..hi (bit i: facet i), in
+ * frame `frame`: a facet is culled where one edge function's interval lies
+ * below -slack and another's above +slack. */
+AVX2 static uint64_t cull(const KERNEL_EYE_T *eye, int frame,
+                          const double lo[2], const double hi[2])
+{
+    int padded = edges_padded(eye->count);
+    const double *rows =
+        &eye->edges[(size_t)frame * EDGE_ROWS * (size_t)padded];
+    const __m256d lo_x = _mm256_set1_pd(lo[0]), hi_x = _mm256_set1_pd(hi[0]);
+    const __m256d lo_y = _mm256_set1_pd(lo[1]), hi_y = _mm256_set1_pd(hi[1]);
+    const __m256d zero = _mm256_setzero_pd();
+    uint64_t kept = 0;
+    for (int i = 0; i < padded; i += EDGE_LANES) {
+        __m256d below = zero, above = zero;
+        for (int f = 0; f < 3; f++) {
+            __m256d e0 = _mm256_loadu_pd(&rows[(0 + f) * padded + i]);
+            __m256d ex = _mm256_loadu_pd(&rows[(3 + f) * padded + i]);
+            __m256d ey = _mm256_loadu_pd(&rows[(6 + f) * padded + i]);
+            __m256d slack = _mm256_loadu_pd(&rows[(9 + f) * padded + i]);
+            __m256d x0 = _mm256_mul_pd(lo_x, ex), x1 = _mm256_mul_pd(hi_x, ex);
+            __m256d y0 = _mm256_mul_pd(lo_y, ey), y1 = _mm256_mul_pd(hi_y, ey);
+            __m256d low = _mm256_add_pd(
+                _mm256_add_pd(e0, _mm256_min_pd(x0, x1)), _mm256_min_pd(y0, y1));
+            __m256d high = _mm256_add_pd(
+                _mm256_add_pd(e0, _mm256_max_pd(x0, x1)), _mm256_max_pd(y0, y1));
+            below = _mm256_or_pd(below, _mm256_cmp_pd(_mm256_add_pd(high, slack),
+                                                      zero, _CMP_LT_OQ));
+            above = _mm256_or_pd(above, _mm256_cmp_pd(_mm256_sub_pd(low, slack),
+                                                      zero, _CMP_GT_OQ));
+        }
+        unsigned culled = (unsigned)_mm256_movemask_pd(_mm256_and_pd(below, above));
+        kept |= (uint64_t)(~culled & 0xfu) << i;
+    }
+    return eye->count == 64 ? kept : kept & (((uint64_t)1 << eye->count) - 1);
+}
+
+/*
+ * The tile of a span whose rays' directions lie in the cone of the four
+ * `corner` directions; 0 when the corners do not keep one sign on the
+ * frame's kz axis (no cull: the caller traces the rays alone).
+ */
+AVX2 static int tile_make(const KERNEL_EYE_T *eye, const rt_vec3 corner[4],
+                          tile *t)
+{
+    rt_vec3 mean = {0, 0, 0};
+    for (int c = 0; c < 4; c++) {
+        mean.x += corner[c].x;
+        mean.y += corner[c].y;
+        mean.z += corner[c].z;
+    }
+    int swapped;
+    frame_of_direction(mean, &t->kx, &t->ky, &t->kz, &swapped);
+    t->frame = frame_index(t->kz, swapped);
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int c = 0; c < 4; c++) {
+        double dz = axis_of(corner[c], t->kz);
+        if (!(swapped ? dz < 0 : dz > 0))
+            return 0;
+        double s[2] = {axis_of(corner[c], t->kx) / dz,
+                       axis_of(corner[c], t->ky) / dz};
+        for (int a = 0; a < 2; a++) {
+            if (!isfinite(s[a]))
+                return 0;
+            lo[a] = s[a] < lo[a] ? s[a] : lo[a];
+            hi[a] = s[a] > hi[a] ? s[a] : hi[a];
+        }
+    }
+    t->candidates = cull(eye, t->frame, lo, hi);
+    return 1;
+}
+
+/*
+ * The nearest hits of the n <= VW rays r[] (all from the eye, all of the
+ * tile's frame) among the tile's candidates: found[l] and h[l] as
+ * nearest_scalar() gives them to r[l], the same tests counted.
+ */
+AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
+                                const tile *t, const ray *r, int n, hit *h,
+                                int *found, uint64_t *tests)
+{
+    _Alignas(32) REAL shear_x[VW], shear_y[VW];
+    REAL t_max[VW];
+    for (int l = 0; l < VW; l++) {
+        shear_x[l] = r[l < n ? l : 0].sx;
+        shear_y[l] = r[l < n ? l : 0].sy;
+        t_max[l] = INFINITY;
+        found[l] = 0;
+    }
+    vreal sx = v_load(shear_x), sy = v_load(shear_y);
+    const int axis[3] = {t->kx, t->ky, t->kz};
+    unsigned live = (1u << n) - 1;
+    lanes_kept keep;
+    for (uint64_t left = t->candidates; left != 0; left &= left - 1) {
+        int i = __builtin_ctzll(left);
+        const block *b = &eye->blocks[i / BLOCK_LANES];
+        int lane = i % BLOCK_LANES;
+        vreal a[3], bb[3], c[3];
+        for (int j = 0; j < 3; j++) {
+            a[j] = v_set1(b->v[0][axis[j]][lane]);
+            bb[j] = v_set1(b->v[1][axis[j]][lane]);
+            c[j] = v_set1(b->v[2][axis[j]][lane]);
+        }
+        unsigned m = edges_filter(a, bb, c, sx, sy, live, &keep, 0) & live;
+        for (; m != 0; m &= m - 1) {
+            int l = __builtin_ctz(m);
+            hit candidate;
+            sheared s = kept_lane(&keep, l);
+            if (!intersect_sheared(&s, &r[l], t_max[l], &candidate))
+                continue;
+            candidate.index = i;
+            if (found[l] && !replaces(k, &h[l], &candidate))
+                continue;
+            h[l] = candidate;
+            t_max[l] = candidate.t;
+            found[l] = 1;
+        }
+    }
+    *tests += (uint64_t)n * (uint64_t)k->count;
+}
+
+/*
+ * any_hit() for the n <= VW shadow rays r[] to light `light` (all of one
+ * frame; ray l leaves facet skip[l]): blocked[l] as any_hit_avx2() answers
+ * for r[l], its tests counted as it counts them.  Facets are taken in
+ * index order, each against the rays still unblocked that the plane cull
+ * keeps, through the filter and intersect_sheared().
+ */
+AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
+                                const int *skip, int n, signed char *blocked,
+                                rt_counters *counters)
+{
+    _Alignas(32) REAL origin[3][VW], world[3][VW], margin[VW];
+    _Alignas(32) REAL shear_x[VW], shear_y[VW];
+    const int axis[3] = {r[0].kx, r[0].ky, r[0].kz};
+    int blocker[VW];
+    for (int l = 0; l < VW; l++) {
+        const ray *q = &r[l < n ? l : 0];
+        for (int j = 0; j < 3; j++)
+            origin[j][l] = get(q->origin, axis[j]);
+        world[0][l] = q->origin.x;
+        world[1][l] = q->origin.y;
+        world[2][l] = q->origin.z;
+        REAL size = max3(q->origin.x, q->origin.y, q->origin.z);
+        margin[l] = shadow_margin(k->extent > size ? k->extent : size);
+        shear_x[l] = q->sx;
+        shear_y[l] = q->sy;
+        blocker[l] = -1;
+    }
+    vreal o[3], w[3];
+    for (int j = 0; j < 3; j++) {
+        o[j] = v_load(origin[j]);
+        w[j] = v_load(world[j]);
+    }
+    vreal sx = v_load(shear_x), sy = v_load(shear_y), room = v_load(margin);
+    unsigned live = (1u << n) - 1;
+    const REAL *side = &k->light_side[(size_t)light * (size_t)k->count];
+    lanes_kept keep;
+    hit ignored;
+    unsigned char leaves[PACKET_MAX_FACETS] = {0};  /* lanes by facet left */
+    for (int l = 0; l < n; l++)
+        if (skip[l] >= 0)
+            leaves[skip[l]] |= (unsigned char)(1u << l);
+    for (int i = 0; i < k->count && live != 0; i++) {
+        unsigned m = live & ~(unsigned)leaves[i];
+        if (side[i] == side[i] && m != 0) {
+            const struct shadow_plane *p = &k->planes[i];
+            vreal s = v_sub(v_add(v_add(v_mul(v_set1(p->n[0]), w[0]),
+                                        v_mul(v_set1(p->n[1]), w[1])),
+                                  v_mul(v_set1(p->n[2]), w[2])),
+                            v_set1(p->c));
+            vreal culled = v_cmp(v_mul(s, v_set1(side[i])),
+                                 v_add(room, v_set1(p->thick2)), _CMP_GT_OQ);
+            m &= ~(unsigned)v_movemask(culled);
+        }
+        if (m == 0)
+            continue;
+        const tri *f = &k->tris[i];
+        vreal a[3], b[3], c[3];
+        for (int j = 0; j < 3; j++) {
+            a[j] = v_sub(v_set1(get(f->a, axis[j])), o[j]);
+            b[j] = v_sub(v_set1(get(f->b, axis[j])), o[j]);
+            c[j] = v_sub(v_set1(get(f->c, axis[j])), o[j]);
+        }
+        m &= edges_filter(a, b, c, sx, sy, m, &keep, 0);
+        for (; m != 0; m &= m - 1) {
+            int l = __builtin_ctz(m);
+            sheared s = kept_lane(&keep, l);
+            if (intersect_sheared(&s, &r[l], 1, &ignored) &&
+                blocks(&ignored, 1)) {
+                blocker[l] = i;
+                live &= ~(1u << l);
+            }
+        }
+    }
+    for (int l = 0; l < n; l++) {
+        int skipped = skip[l];
+        blocked[l] = blocker[l] >= 0;
+        if (blocker[l] < 0) {
+            counters->tests += (uint64_t)k->count - (skipped >= 0);
+            continue;
+        }
+        int made = (blocker[l] / BLOCK_LANES + 1) * BLOCK_LANES;
+        if (made > k->count)
+            made = k->count;
+        counters->tests += (uint64_t)made - (skipped >= 0 && skipped < made);
+        counters->early_exit_saved +=
+            (uint64_t)(k->count - made) - (skipped >= made);
+    }
+}
+
+/*
+ * The first bounce of the n <= VW camera rays whose nearest hits (found[l],
+ * h[l]) a packet found: hit points and normals as trace_opaque() computes
+ * them, and the shadow rays to each light cast in packets of one frame
+ * (the rays of another frame are left to the trace).
+ */
+static void packet_first_bounce(const KERNEL_T *k, vec origin,
+                                const vec *incoming, const int *found,
+                                const hit *h, int n, first_bounce *out,
+                                rt_counters *counters)
+{
+    for (int l = 0; l < n; l++) {
+        first_bounce *b = &out[l];
+        b->found = found[l];
+        memset(b->blocked, -1, sizeof b->blocked);
+        if (!found[l])
+            continue;
+        b->h = &h[l];
+        const tri *f = &k->tris[h[l].index];
+        b->point = hit_point(f, &h[l], origin, incoming[l], &b->error_bound);
+        b->normal = dot(f->normal, incoming[l]) > 0 ? neg(f->normal)
+                                                    : f->normal;
+    }
+    if (k->planes == NULL)
+        return;
+    for (int light = 0; light < k->light_count; light++) {
+        ray shadow[VW];
+        int skip[VW], lane[VW], m = 0, frame = -1;
+        for (int l = 0; l < n; l++) {
+            const first_bounce *b = &out[l];
+            if (!b->found || k->tris[b->h->index].d == 0)
+                continue;
+            vec to_light = sub(k->lights[light], b->point);
+            if (!(dot(b->normal, to_light) > 0))
+                continue;
+            ray *q = &shadow[m];
+            *q = shadow_ray(b->point, b->error_bound, b->normal,
+                            k->lights[light], to_light);
+            int its = frame_index(q->kz, q->kx != (q->kz + 1) % 3);
+            if (frame < 0)
+                frame = its;
+            if (its != frame)
+                continue;
+            skip[m] = b->h->index;
+            lane[m++] = l;
+        }
+        if (m == 0)
+            continue;
+        signed char blocked[VW];
+        packet_any_hit(k, light, shadow, skip, m, blocked, counters);
+        for (int j = 0; j < m; j++)
+            out[lane[j]].blocked[light] = blocked[j];
+    }
+}
+
+/* One camera ray traced alone, as KERNEL(trace) traces it. */
+static rt_color trace_alone(const KERNEL_T *k, vec origin, vec incoming,
+                            const rt_trace_settings *settings, int simd,
+                            rt_counters *counters, const first_bounce *first)
+{
+    REAL color[3] = {0, 0, 0};
+    trace_opaque(k, origin, incoming, settings, NULL, simd, color, counters,
+                 NULL, first);
+    return (rt_color){color[0], color[1], color[2]};
+}
+#endif
+
+void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
+                        const rt_vec3 corner[4], const rt_vec3 *directions,
+                        int count, const rt_trace_settings *settings,
+                        rt_counters *counters, rt_color *colors)
+{
+    const KERNEL_EYE_T *eye = settings->eye;
+    int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
+    vec origin = from_rt(origin_d);
+#if HAVE_AVX2_KERNEL
+    tile t;
+    int packets = simd && eye != NULL &&
+                  eye->edges != NULL && !k->transparent &&
+                  !settings->octree && settings->recorder == NULL &&
+                  memcmp(&eye->origin, &origin, sizeof origin) == 0 &&
+                  tile_make(eye, corner, &t);
+#else
+    (void)corner;
+    (void)origin;
+    int packets = 0;
+#endif
+    if (!packets) {
+        for (int j = 0; j < count; j++)
+            colors[j] = KERNEL(trace)(k, origin_d, directions[j], settings,
+                                      counters);
+        return;
+    }
+#if HAVE_AVX2_KERNEL
+    int fast = settings->fast_inv_sqrt;
+    ray r[VW];
+    vec incoming[VW];
+    int slot[VW], n = 0;
+    for (int j = 0; j <= count; j++) {
+        if (j < count) {
+            vec in = normalize(from_rt(directions[j]), fast);
+            ray q = prepare(origin, in);
+            if (frame_index(q.kz, q.kx != (q.kz + 1) % 3) != t.frame) {
+                colors[j] = trace_alone(k, origin, in, settings, simd,
+                                        counters, NULL);
+                continue;
+            }
+            r[n] = q;
+            incoming[n] = in;
+            slot[n++] = j;
+            if (n < VW)
+                continue;
+        }
+        if (n == 0)
+            continue;
+        hit h[VW];
+        int found[VW];
+        packet_nearest(k, eye, &t, r, n, h, found, &counters->tests);
+        first_bounce first[VW];
+        packet_first_bounce(k, origin, incoming, found, h, n, first,
+                            counters);
+        for (int l = 0; l < n; l++)
+            colors[slot[l]] = trace_alone(k, origin, incoming[l], settings,
+                                          simd, counters, &first[l]);
+        n = 0;
+    }
+#endif
+}
