@@ -21,38 +21,45 @@
 #endif
 
 /*
- * The hit point and its rounding-error bound per component.  Normally the
- * point is the barycentric combination of the vertices (pbrt-v4's choice:
- * whatever the weights' errors, it lies on the facet's plane to within the
- * bound).  On a sliver the weights themselves are inaccurate - the point
- * may slide along the facet by a large fraction of it - so when that error
+ * The hit point and its rounding-error bound per component: the
+ * barycentric combination of the vertices (pbrt-v4's choice: whatever the
+ * weights' errors, it lies on the facet's plane to within the bound), or,
+ * when the error of the weights along the facet (the hit's point_error)
  * exceeds the error of intersecting the ray with the facet's plane (whose
- * normal is accurate for any shape, see scene.c), the plane's point is
- * used instead.  `direction` is the ray's, in the units of t.
+ * normal is accurate for any shape, see scene.c), the plane's point.  The
+ * weights' bound is a worst case, so the plane's point is the one taken
+ * on almost every hit (over 99 % on the handout's scenes); on a sliver it
+ * keeps the point from sliding along the facet.  `direction` is the ray's,
+ * in the units of t.
  */
 static inline vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
                      vec *error_bound)
 {
+    if (h->point_error > 0) {
+        /* The plane's point first: on most facets it is the one taken,
+         * and then the barycentric one need not be computed. */
+        vec to_facet = sub(f->a, origin);
+        REAL along = dot(f->normal, to_facet),
+             across = dot(f->normal, direction);
+        REAL t = along / across;
+        REAL condition =
+            dot(vabs(f->normal), vabs(to_facet)) / fabs(along) +
+            dot(vabs(f->normal), vabs(direction)) / fabs(across);
+        REAL t_error = fabs(t) * gamma_bound(8) * condition;
+        REAL length = max3(direction.x, direction.y, direction.z);
+        if (t > 0 && isfinite(t_error) && t_error * length < h->point_error) {
+            vec step = scale(direction, t);
+            *error_bound = add(scale(add(vabs(origin), vabs(step)),
+                                     gamma_bound(2)),
+                               scale(vabs(direction), t_error));
+            return add(origin, step);
+        }
+    }
     vec pa = scale(f->a, h->b0), pb = scale(f->b, h->b1),
         pc = scale(f->c, h->b2);
     *error_bound = scale(add(vabs(pa), add(vabs(pb), vabs(pc))),
                          gamma_bound(7));
-    vec point = add(pa, add(pb, pc));
-    if (!(h->point_error > 0))
-        return point;
-    vec to_facet = sub(f->a, origin);
-    REAL along = dot(f->normal, to_facet), across = dot(f->normal, direction);
-    REAL t = along / across;
-    REAL condition = dot(vabs(f->normal), vabs(to_facet)) / fabs(along) +
-                     dot(vabs(f->normal), vabs(direction)) / fabs(across);
-    REAL t_error = fabs(t) * gamma_bound(8) * condition;
-    REAL length = max3(direction.x, direction.y, direction.z);
-    if (!(t > 0 && isfinite(t_error) && t_error * length < h->point_error))
-        return point;
-    vec step = scale(direction, t);
-    *error_bound = add(scale(add(vabs(origin), vabs(step)), gamma_bound(2)),
-                       scale(vabs(direction), t_error));
-    return add(origin, step);
+    return add(pa, add(pb, pc));
 }
 
 
