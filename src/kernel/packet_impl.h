@@ -39,6 +39,7 @@
  * dominates there.
  */
 
+#if HAVE_AVX2_KERNEL
 #define PACKET_MAX_FACETS 64    /* a span's candidates fit a uint64_t */
 #define FRAMES 6                /* kz = 0, 1, 2, without and with the swap */
 
@@ -243,7 +244,6 @@ static double axis_of(rt_vec3 d, int axis)
     return axis == 0 ? d.x : axis == 1 ? d.y : d.z;
 }
 
-#if HAVE_AVX2_KERNEL
 /* The facets not culled for shears in the box lo..hi (bit i: facet i), in
  * frame `frame`: a facet is culled where one edge function's interval lies
  * below -slack and another's above +slack. */
@@ -520,6 +520,15 @@ static rt_color trace_alone(const KERNEL_T *k, vec origin, vec incoming,
                  NULL, first);
     return (rt_color){color[0], color[1], color[2]};
 }
+#else /* no AVX2 kernel: no packets, and nothing prepared for them */
+#define PACKET_MAX_FACETS 0
+static size_t edges_size(int count) { (void)count; return 0; }
+static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
+{
+    (void)eye;
+    (void)count;
+}
+static int packet_prepare_kernel(KERNEL_T *k) { (void)k; return 1; }
 #endif
 
 void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
@@ -527,10 +536,10 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
                         int count, const rt_trace_settings *settings,
                         rt_counters *counters, rt_color *colors)
 {
+#if HAVE_AVX2_KERNEL
     const KERNEL_EYE_T *eye = settings->eye;
     int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
     vec origin = from_rt(origin_d);
-#if HAVE_AVX2_KERNEL
     tile t;
     int packets = simd && eye != NULL &&
                   eye->edges != NULL && !k->transparent &&
@@ -539,7 +548,6 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
                   tile_make(eye, corner, &t);
 #else
     (void)corner;
-    (void)origin;
     int packets = 0;
 #endif
     if (!packets) {
