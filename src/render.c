@@ -291,9 +291,12 @@ static rt_color render_pixel(const job *j, int i, int row,
     return (rt_color){sum.r * inv, sum.g * inv, sum.b * inv};
 }
 
-/* Rays a span of pixels traces at most (samples are at most 1024). */
+/* Rays a span of pixels traces at most (samples are at most 1024), and
+ * its pixels at most: wide enough to share the kernel's tile cull among
+ * many rays, narrow enough that the cull stays tight (32 was the best of
+ * 8 to 128 in instructions per ray, bench/ray-budget.sh). */
 #define SPAN_RAYS 1024
-#define SPAN_PIXELS 8
+#define SPAN_PIXELS 32
 
 /*
  * Renders pixels i0 .. i1 - 1 of a row (the output image's columns) as one
