@@ -5,3 +5,7 @@ raytrace_add_suite(test_kernel INTERNAL
 target_include_directories(raytrace_test_kernel PRIVATE
   "${PROJECT_SOURCE_DIR}/bench")
 raytrace_add_shared_test(test_kernel)
+
+# The camera-ray packets (src/kernel/packet_impl.h) against the scalar
+# loops: scenes built in memory to stress the tile and shadow culls.
+raytrace_add_suite(test_packets INTERNAL)
