@@ -6,6 +6,7 @@
  * Included by kernel_double.c and kernel_float.c with
  *     REAL       the floating-point type (double or float)
  *     REAL_EPS   its machine epsilon (DBL_EPSILON or FLT_EPSILON)
+ *     REAL_MIN, REAL_TRUE_MIN  its smallest normal and subnormal numbers
  *     KERNEL(x)  the name of an exported symbol (rt__kernel_d_##x ...)
  *     KERNEL_T   the kernel's type (rt_kernel_d ...)
  * Everything else here is static.  The parts, each using only those before

@@ -54,8 +54,10 @@
  * vertex minus the eye, eps the kernel's REAL_EPS); a ray's (sx, sy)
  * strays from the corners' box by a few eps (rounding of the directions),
  * worth at most 2 (64 eps) N_p N_q; the cull's own double arithmetic adds
- * under 8 eps N_p N_q.  slack = 1024 eps N_p N_q covers the sum twice; it
- * is infinite (no cull) where a coefficient is not finite.  Padding lanes
+ * under 8 eps N_p N_q.  slack = 1024 eps N_p N_q covers the sum twice.
+ * Where the products are subnormal the rounding errors are absolute, a
+ * few times REAL_TRUE_MIN each: slack adds 64 of them.  It is infinite (no
+ * cull) where a coefficient is not finite.  Padding lanes
  * have zeros, and are masked out.
  */
 #define EDGE_ROWS 12
@@ -108,7 +110,8 @@ static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
                     double ex = q[1] * r[2] - q[2] * r[1];
                     double ey = q[2] * r[0] - q[0] * r[2];
                     double slack = 1024 * (double)REAL_EPS *
-                                   norm[pair[f][0]] * norm[pair[f][1]];
+                                       norm[pair[f][0]] * norm[pair[f][1]] +
+                                   64 * REAL_TRUE_MIN;
                     if (!isfinite(e0) || !isfinite(ex) || !isfinite(ey))
                         slack = INFINITY;
                     rows[(0 + f) * padded + i] = e0;
@@ -167,6 +170,10 @@ static int packet_prepare_kernel(KERNEL_T *k)
                                    k->lights[l].z));
     k->extent = (REAL)extent;
     double margin = (double)shadow_margin(k->extent);
+    /* Below this scale the filter's products may be subnormal, and then
+     * their rounding moves the watertight test's edges by more than any
+     * margin relative to the coordinates: no cull at all. */
+    int tiny = extent < 1024 * sqrt((double)REAL_MIN / (double)REAL_EPS);
     for (int i = 0; i < k->count; i++) {
         const tri *f = &k->tris[i];
         const vec *vertex[3] = {&f->a, &f->b, &f->c};
@@ -197,8 +204,8 @@ static int packet_prepare_kernel(KERNEL_T *k)
                                      (double)p->n[2] * v[j][2] - p->c));
         double thick2 = 2 * thick * (1 + 0x1p-10);
         p->thick2 = (REAL)thick2;
-        int usable = isfinite(length) && length > 0 && isfinite(thick2) &&
-                     (double)p->thick2 >= thick2;
+        int usable = !tiny && isfinite(length) && length > 0 &&
+                     isfinite(thick2) && (double)p->thick2 >= thick2;
         for (int l = 0; l < k->light_count; l++) {
             const vec *L = &k->lights[l];
             double side = (double)p->n[0] * L->x + (double)p->n[1] * L->y +

@@ -76,6 +76,9 @@ HOT_INLINE vec offset_origin(vec point, vec error_bound, vec normal,
               step_away(p.z, offset.z));
 }
 
+/* Lights whose shadow rays a packet casts together (more: one by one). */
+#define PACKET_MAX_LIGHTS 8
+
 /* The shadow ray from `point` (its error bound, its normal facing the
  * ray that hit it) to the light at `light`, to_light = light - point:
  * from the offset origin, with the light at t = 1. */
@@ -123,8 +126,9 @@ static void record_light(const KERNEL_T *k, int simd, const octree *tree,
  * E_l (N.S_l) d C_S,l C_F / 255.  No shadow ray where it cannot matter:
  * d = 0 (k = 1 on a handout facet) or N.S_l <= 0.  With a recorder (NULL
  * in renders, where this code vanishes) each light is recorded under
- * `node`.  given[l], when given and >= 0, is the answer of the shadow ray
- * to light l, found already by a packet (packet_impl.h). */
+ * `node`.  given[l], when given, l < PACKET_MAX_LIGHTS and given[l] >= 0,
+ * is the answer of the shadow ray to light l, found already by a packet
+ * (packet_impl.h). */
 HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                              const tri *f, int index, vec point,
                              vec error_bound, vec normal, REAL weight,
@@ -147,7 +151,8 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
         counters->shadow_rays++;
         ray shadow;
         int blocked;
-        if (given != NULL && given[l] >= 0 && rec == NULL) {
+        if (given != NULL && l < PACKET_MAX_LIGHTS && given[l] >= 0 &&
+            rec == NULL) {
             blocked = given[l];
         } else {
             shadow = shadow_ray(point, error_bound, normal, light, to_light);
@@ -171,9 +176,6 @@ HOT_INLINE void add_direct_light(const KERNEL_T *k, const octree *tree,
                                     w * diffuse[2]});
     }
 }
-
-/* Lights whose shadow rays a packet casts together (more: one by one). */
-#define PACKET_MAX_LIGHTS 8
 
 /* What a packet of camera rays (packet_impl.h) found of one ray's first
  * bounce: the nearest hit (*h, when found), its point, error bound and
