@@ -300,10 +300,9 @@ static rt_color render_pixel(const job *j, int i, int row,
 
 /*
  * Renders pixels i0 .. i1 - 1 of a row (the output image's columns) as one
- * span: their camera rays, all samples, go to the kernel together, with
- * the corners of the span's rectangle of the image plane, and each pixel
- * is the mean of its samples in render_pixel()'s order.  Pinhole renders
- * only: every ray leaves the observer.
+ * span: their camera rays, all samples, go to the kernel together, and
+ * each pixel is the mean of its samples in render_pixel()'s order.
+ * Pinhole renders only: every ray leaves the observer.
  */
 static void render_span(const job *j, int row, int i0, int i1,
                         unsigned char *out, rt_counters *counters,
@@ -319,19 +318,12 @@ static void render_span(const job *j, int row, int i0, int i1,
                                           : sample_ray(j, j->x0 + i, y, sx,
                                                        sy))
                                       .direction;
-    rt_vec3 corner[4];
-    for (int c = 0; c < 4; c++)
-        corner[c] = camera_ray_at(&j->camera,
-                                  j->x0 + (c & 1 ? i1 : i0),
-                                  y + (c >> 1)).direction;
     if (j->kernel.d != NULL)
-        rt__kernel_d_trace_span(j->kernel.d, j->camera.observer, corner,
-                                directions, m, &j->settings, counters,
-                                colors);
+        rt__kernel_d_trace_span(j->kernel.d, j->camera.observer, directions,
+                                m, &j->settings, counters, colors);
     else
-        rt__kernel_f_trace_span(j->kernel.f, j->camera.observer, corner,
-                                directions, m, &j->settings, counters,
-                                colors);
+        rt__kernel_f_trace_span(j->kernel.f, j->camera.observer, directions,
+                                m, &j->settings, counters, colors);
     *rays += (uint64_t)m;
     double inv = 1.0 / (n * n);
     for (int i = i0, k = 0; i < i1; i++) {

@@ -1073,6 +1073,70 @@ START_TEST(telephoto_views_render_identically)
 }
 END_TEST
 
+/* --- an eye far from the origin ---------------------------------------- */
+
+/*
+ * Found by a review: an eye a million units from the origin and a screen a
+ * millionth of a unit wide.  The camera's rounding of the directions (of
+ * the order of eps |O| over |AO|) put one stratified sample's shear outside
+ * the box of the span's four corner rays, and the tile cull built from
+ * that box left out the facet the sample hits: pixel (32, 0) came out as
+ * background.  The cull now takes its box from the rays' own shears.
+ */
+static const char far_eye_scene[] =
+    "700000, -500000, 300000\n"
+    "700000.94072086841, -499999.7177837395, 300000.18814417365, "
+    "700000.9407208655, -499999.7177837299, 300000.18814417365, 64, 4\n"
+    "3\n"
+    "1000700000, 299499999.94183695, -799700000.49500477\n"
+    "1000700000, 299499999.94183695, 1200299999.5049953\n"
+    "1000700000, -700500000.05816293, 200299999.50499529\n"
+    "1\n"
+    "1, 2, 3, 0, 200, 100, 50\n"
+    "20, 40, 90\n"
+    "229639.56580820138, -641108.13025753957, 205927.91316164029, 255, "
+    "255, 255\n";
+
+START_TEST(an_eye_far_from_the_origin_renders_identically)
+{
+    tally_reset();
+    rt_scene *scene = NULL;
+    rt_error error;
+    ck_assert_msg(rt_scene_parse(far_eye_scene, strlen(far_eye_scene),
+                                 "far-eye.scn", &scene, &error) == RT_OK,
+                  "%s", error.message);
+    static const int samples[] = {16, 9, 4, 1};
+    for (int p = 0; p < 2; p++)
+        for (size_t i = 0; i < sizeof samples / sizeof samples[0]; i++) {
+            rt_render_options options;
+            rt_render_options_init(&options);
+            options.precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
+            options.samples = samples[i];
+            options.sampling = RT_SAMPLING_STRATIFIED;
+            char what[128];
+            snprintf(what, sizeof what, "far eye (%s, %d stratified)",
+                     p ? "float" : "double", samples[i]);
+            if (rt_scene_check_precision(scene, options.precision,
+                                         &error) != RT_OK) {
+                printf("test_packets: SKIPPED: %s: %s\n", what,
+                       error.message);
+                tally.skipped++;
+                continue;
+            }
+            tally.cases++;
+            options.kernel = RT_KERNEL_SCALAR;
+            rt_image ref = render_one(scene, &options, what);
+            options.kernel = RT_KERNEL_AUTO;
+            rt_image fast = render_one(scene, &options, what);
+            compare(&ref, &fast, &options, what);
+            rt_image_release(&ref);
+            rt_image_release(&fast);
+        }
+    rt_scene_destroy(scene);
+    tally_finish("an eye far from the origin");
+}
+END_TEST
+
 static Suite *packets_suite(void)
 {
     Suite *s = suite_create("packets");
@@ -1096,6 +1160,7 @@ static Suite *packets_suite(void)
     tcase_add_test(c, sizes_and_regions_render_identically);
     tcase_add_test(c, tessellated_grids_render_identically);
     tcase_add_test(c, telephoto_views_render_identically);
+    tcase_add_test(c, an_eye_far_from_the_origin_renders_identically);
     suite_add_tcase(s, c);
     return s;
 }

@@ -13,11 +13,11 @@
  * (rt__kernel_*_octree_prepare, thread-safe), and only read afterwards;
  * once it exists, nearest_hit and occluded go through it (same answers).
  *
- * trace_span traces `count` camera rays from `origin` whose directions
- * lie in the cone of the four `corner` directions (a span of pixels), the
- * colour of ray j into colors[j], each exactly as trace would give it; with
- * the eye of `origin` in settings, a scene of few facets and the fast loops
- * it shares work among them (packet_impl.h).
+ * trace_span traces `count` camera rays from `origin` (the camera rays of
+ * neighbouring pixels), the colour of ray j into colors[j], each exactly
+ * as trace would give it; with the eye of `origin` in settings, a scene of
+ * few facets and the fast loops it shares work among them
+ * (packet_impl.h).
  *
  * An eye is what one render adds to a kernel: the facets' vertices minus
  * the camera's observer, computed once, so that the fast loops save those
@@ -133,7 +133,7 @@ typedef struct rt_kernel_hit {
         rt_counters *counters);                                              \
     void rt__kernel_##suffix##_trace_span(                                  \
         const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \
-        const rt_vec3 corner[4], const rt_vec3 *directions, int count,       \
+        const rt_vec3 *directions, int count,                                \
         const rt_trace_settings *settings, rt_counters *counters,            \
         rt_color *colors);                                                   \
     int rt__kernel_##suffix##_nearest_hit(const rt_kernel_##suffix *kernel,  \

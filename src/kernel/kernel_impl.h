@@ -172,8 +172,10 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     k->avx2 = cpu_has_avx2();
     if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS &&
         k->light_count <= PACKET_MAX_LIGHTS && !packet_prepare_kernel(k)) {
-        KERNEL(free)(k);
-        return NULL;
+        free(k->planes);        /* out of memory: no shadow packets */
+        free(k->light_side);
+        k->planes = NULL;
+        k->light_side = NULL;
     }
     return k;
 }

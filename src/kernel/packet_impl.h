@@ -2,9 +2,10 @@
  * packet_impl.h - camera rays in packets (part of kernel_impl.h, compiled
  * once per precision; everything here but KERNEL(trace_span) is static).
  *
- * The camera rays of a few neighbouring pixels - a span of one row - leave
- * one point, the eye, in nearly one direction.  Two things are shared
- * among them, and nothing else changes:
+ * The camera rays of a few neighbouring pixels - a span of one row, cut
+ * into chunks of at most CHUNK_RAYS rays - leave one point, the eye, in
+ * nearly one direction.  Two things are shared among them, and nothing
+ * else changes:
  *
  * 1. A tile cull.  For rays from the eye whose axis frame (kx, ky, kz and
  *    the winding swap of prepare()) is the same, each edge function of a
@@ -12,26 +13,29 @@
  *        e(sx, sy) = e0 + sx ex + sy ey,
  *    where (ex, ey, e0) is the cross product of the edge's two vertices
  *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy pz) -
- *    (py - sy pz)(qx - sx qz)).  Over the span's rays, (sx, sy) stays in
- *    the box of the span's four corner rays (the projective map of a
- *    rectangle on which the kz coordinate keeps its sign is convex), so
- *    each edge function stays in an interval.  Where one edge's interval
- *    is below -slack and another's above +slack, every ray of the span has
- *    two edge functions of strictly opposite signs, as computed by the
- *    filter and by intersect(): `slack` bounds the distance between the
- *    computed and the affine values (see facet_edges), so the facet is
- *    left out for the whole span, as the exact filter would leave it out
- *    for each ray.
+ *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as trace()
+ *    prepares them, and the box of the shears of those of one frame is
+ *    taken from the shears themselves: each edge function stays in an
+ *    interval over it.  Where one edge's interval is below -slack and
+ *    another's above +slack, every ray of that frame has two edge
+ *    functions of strictly opposite signs, as computed by the filter and
+ *    by intersect(): `slack` bounds the distance between the computed and
+ *    the affine values (see the facets' edge functions below), so the
+ *    facet is left out for the whole chunk, as the exact filter would
+ *    leave it out for each ray.  (A box from the span's corner rays would
+ *    not do: the camera's rounding of the directions, which grows with the
+ *    eye's distance from the origin, can put a ray's shear outside it.)
  * 2. SIMD across rays.  The facets the cull keeps are tested against
  *    several rays at a time: one facet broadcast, one ray per lane, through
  *    edges_filter() of simd_impl.h - the filter's own operations, so each
  *    lane is bit for bit what the filter computes for that pair - and the
  *    scalar intersect_sheared() decides every lane the filter passes,
  *    from the filter's values, facet by facet in index order, with each
- *    ray's own t_max and the tie rule of replaces().  So each ray gets the hit nearest_scalar() gives it.
+ *    ray's own t_max and the tie rule of replaces().  So each ray gets the
+ *    hit nearest_scalar() gives it.
  *
- * A ray whose frame is not the span's (near the diagonals where the
- * dominant axis changes) is traced alone, as KERNEL(trace) traces it.  The
+ * A ray whose frame is not the chunk's (its first ray's; they differ near
+ * the diagonals where the dominant axis changes) is traced alone, as KERNEL(trace) traces it.  The
  * rest of each ray's path (shading, shadow rays, reflections) is the one
  * trace_opaque() of shade_impl.h.  Only renders of scenes with at most
  * PACKET_MAX_FACETS facets, brute force, the fast loops and no
@@ -48,13 +52,13 @@
  * each frame, as affine functions of the shear, in double, by rows of
  * EDGE_LANES facets: eye->edges[(frame * EDGE_ROWS + row) * padded + i],
  * rows e0 (3, one per edge function), ex (3), ey (3), slack (3).  slack
- * bounds |computed - affine| for a ray of that frame (so |sx|, |sy| <= 1):
- * the shear values px - sx pz carry at most about 2 eps (|px| + |pz|), the
- * edge function built from them at most 48 eps N_p N_q (N the 1-norm of a
- * vertex minus the eye, eps the kernel's REAL_EPS); a ray's (sx, sy)
- * strays from the corners' box by a few eps (rounding of the directions),
- * worth at most 2 (64 eps) N_p N_q; the cull's own double arithmetic adds
- * under 8 eps N_p N_q.  slack = 1024 eps N_p N_q covers the sum twice.
+ * bounds |computed - affine| for a ray of that frame (so |sx|, |sy| <= 1,
+ * and so for every point of a box of such rays' shears): the shear values
+ * px - sx pz carry at most about 2 eps (|px| + |pz|), the edge function
+ * built from them at most 48 eps N_p N_q (N the 1-norm of a vertex minus
+ * the eye, eps the kernel's REAL_EPS); the cull's own double arithmetic
+ * adds under 8 eps N_p N_q.  slack = 1024 eps N_p N_q covers the sum
+ * ten times over.
  * Where the products are subnormal the rounding errors are absolute, a
  * few times REAL_TRUE_MIN each: slack adds 64 of them.  It is infinite (no
  * cull) where a coefficient is not finite.  Padding lanes
@@ -134,7 +138,10 @@ static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
  * from the plane computed here (`thick2`, twice the largest |n.v - c| of
  * its vertices, in case the normal of a sliver is inaccurate).  The margin
  * taken is 4096 eps 3 max(extent, |O|) - over a hundred times those
- * errors, and far below any distance that matters to the cull.
+ * errors, and far below any distance that matters to the cull.  The
+ * argument rests on the hit's t_error bounding the error of t (a blocking
+ * hit has t_error < t < 1 - t_error, so the rounded segment crosses the
+ * plane), as the watertight test's own exactness does.
  * light_side[l count + i] is +1 or -1, the side of light l, or NaN where
  * the light is within the margin of the plane (no cull).
  */
@@ -221,35 +228,13 @@ static int packet_prepare_kernel(KERNEL_T *k)
     return 1;
 }
 
-/* A span's shared part: the frame of its rays and the facets they may
- * hit. */
+/* What the rays of a chunk of a span share: their frame and the facets
+ * they may hit. */
 typedef struct tile {
     int frame;
     int kx, ky, kz;
     uint64_t candidates;    /* bit i: facet i is not culled */
 } tile;
-
-/* The frame prepare() gives a direction, in double. */
-static void frame_of_direction(rt_vec3 d, int *kx, int *ky, int *kz,
-                               int *swapped)
-{
-    double x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
-    *kz = x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
-    *kx = (*kz + 1) % 3;
-    *ky = (*kx + 1) % 3;
-    double dz = *kz == 0 ? d.x : *kz == 1 ? d.y : d.z;
-    *swapped = dz < 0;
-    if (*swapped) {
-        int t = *kx;
-        *kx = *ky;
-        *ky = t;
-    }
-}
-
-static double axis_of(rt_vec3 d, int axis)
-{
-    return axis == 0 ? d.x : axis == 1 ? d.y : d.z;
-}
 
 /* The facets not culled for shears in the box lo..hi (bit i: facet i), in
  * frame `frame`: a facet is culled where one edge function's interval lies
@@ -286,41 +271,6 @@ AVX2 static uint64_t cull(const KERNEL_EYE_T *eye, int frame,
         kept |= (uint64_t)(~culled & 0xfu) << i;
     }
     return eye->count == 64 ? kept : kept & (((uint64_t)1 << eye->count) - 1);
-}
-
-/*
- * The tile of a span whose rays' directions lie in the cone of the four
- * `corner` directions; 0 when the corners do not keep one sign on the
- * frame's kz axis (no cull: the caller traces the rays alone).
- */
-AVX2 static int tile_make(const KERNEL_EYE_T *eye, const rt_vec3 corner[4],
-                          tile *t)
-{
-    rt_vec3 mean = {0, 0, 0};
-    for (int c = 0; c < 4; c++) {
-        mean.x += corner[c].x;
-        mean.y += corner[c].y;
-        mean.z += corner[c].z;
-    }
-    int swapped;
-    frame_of_direction(mean, &t->kx, &t->ky, &t->kz, &swapped);
-    t->frame = frame_index(t->kz, swapped);
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int c = 0; c < 4; c++) {
-        double dz = axis_of(corner[c], t->kz);
-        if (!(swapped ? dz < 0 : dz > 0))
-            return 0;
-        double s[2] = {axis_of(corner[c], t->kx) / dz,
-                       axis_of(corner[c], t->ky) / dz};
-        for (int a = 0; a < 2; a++) {
-            if (!isfinite(s[a]))
-                return 0;
-            lo[a] = s[a] < lo[a] ? s[a] : lo[a];
-            hi[a] = s[a] > hi[a] ? s[a] : hi[a];
-        }
-    }
-    t->candidates = cull(eye, t->frame, lo, hi);
-    return 1;
 }
 
 /*
@@ -538,23 +488,23 @@ static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
 static int packet_prepare_kernel(KERNEL_T *k) { (void)k; return 1; }
 #endif
 
+/* Rays of a span that share one tile cull at most. */
+#define CHUNK_RAYS 64
+
 void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
-                        const rt_vec3 corner[4], const rt_vec3 *directions,
-                        int count, const rt_trace_settings *settings,
+                        const rt_vec3 *directions, int count,
+                        const rt_trace_settings *settings,
                         rt_counters *counters, rt_color *colors)
 {
 #if HAVE_AVX2_KERNEL
     const KERNEL_EYE_T *eye = settings->eye;
     int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
     vec origin = from_rt(origin_d);
-    tile t;
-    int packets = simd && eye != NULL &&
-                  eye->edges != NULL && !k->transparent &&
-                  !settings->octree && settings->recorder == NULL &&
-                  memcmp(&eye->origin, &origin, sizeof origin) == 0 &&
-                  tile_make(eye, corner, &t);
+    int packets = simd && eye != NULL && eye->edges != NULL &&
+                  !k->transparent && !settings->octree &&
+                  settings->recorder == NULL &&
+                  memcmp(&eye->origin, &origin, sizeof origin) == 0;
 #else
-    (void)corner;
     int packets = 0;
 #endif
     if (!packets) {
@@ -565,36 +515,66 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
     }
 #if HAVE_AVX2_KERNEL
     int fast = settings->fast_inv_sqrt;
-    ray r[VW];
-    vec incoming[VW];
-    int slot[VW], n = 0;
-    for (int j = 0; j <= count; j++) {
-        if (j < count) {
-            vec in = normalize(from_rt(directions[j]), fast);
-            ray q = prepare(origin, in);
-            if (frame_index(q.kz, q.kx != (q.kz + 1) % 3) != t.frame) {
-                colors[j] = trace_alone(k, origin, in, settings, simd,
-                                        counters, NULL);
-                continue;
+    for (int begin = 0; begin < count; begin += CHUNK_RAYS) {
+        int end = begin + CHUNK_RAYS < count ? begin + CHUNK_RAYS : count;
+        /* The chunk's rays as trace() prepares them; the tile's frame is
+         * the first ray's, its box of shears the hull of the shears of the
+         * rays of that frame - so every ray packed below lies in it. */
+        ray q[CHUNK_RAYS];
+        vec in[CHUNK_RAYS];
+        tile t = {-1, 0, 0, 0, 0};   /* set by the first ray */
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int j = begin; j < end; j++) {
+            ray *r = &q[j - begin];
+            in[j - begin] = normalize(from_rt(directions[j]), fast);
+            *r = prepare(origin, in[j - begin]);
+            int frame = frame_index(r->kz, r->kx != (r->kz + 1) % 3);
+            if (j == begin) {
+                t.frame = frame;
+                t.kx = r->kx;
+                t.ky = r->ky;
+                t.kz = r->kz;
             }
-            r[n] = q;
-            incoming[n] = in;
-            slot[n++] = j;
-            if (n < VW)
+            if (frame != t.frame)
                 continue;
+            double s[2] = {(double)r->sx, (double)r->sy};
+            for (int a = 0; a < 2; a++) {
+                lo[a] = s[a] < lo[a] ? s[a] : lo[a];
+                hi[a] = s[a] > hi[a] ? s[a] : hi[a];
+            }
         }
-        if (n == 0)
-            continue;
-        hit h[VW];
-        int found[VW];
-        packet_nearest(k, eye, &t, r, n, h, found, &counters->tests);
-        first_bounce first[VW];
-        packet_first_bounce(k, origin, incoming, found, h, n, first,
-                            counters);
-        for (int l = 0; l < n; l++)
-            colors[slot[l]] = trace_alone(k, origin, incoming[l], settings,
-                                          simd, counters, &first[l]);
-        n = 0;
+        t.candidates = cull(eye, t.frame, lo, hi);
+        ray r[VW];
+        vec incoming[VW];
+        int slot[VW], n = 0;
+        for (int j = begin; j <= end; j++) {
+            if (j < end) {
+                const ray *p = &q[j - begin];
+                if (frame_index(p->kz, p->kx != (p->kz + 1) % 3) != t.frame) {
+                    colors[j] = trace_alone(k, origin, in[j - begin],
+                                            settings, simd, counters, NULL);
+                    continue;
+                }
+                r[n] = *p;
+                incoming[n] = in[j - begin];
+                slot[n++] = j;
+                if (n < VW)
+                    continue;
+            }
+            if (n == 0)
+                continue;
+            hit h[VW];
+            int found[VW];
+            packet_nearest(k, eye, &t, r, n, h, found, &counters->tests);
+            first_bounce first[VW];
+            packet_first_bounce(k, origin, incoming, found, h, n, first,
+                                counters);
+            for (int l = 0; l < n; l++)
+                colors[slot[l]] = trace_alone(k, origin, incoming[l],
+                                              settings, simd, counters,
+                                              &first[l]);
+            n = 0;
+        }
     }
 #endif
 }
