@@ -274,19 +274,20 @@ AVX2 static uint64_t cull(const KERNEL_EYE_T *eye, int frame,
 }
 
 /*
- * The nearest hits of the n <= VW rays r[] (all from the eye, all of the
+ * The nearest hits of the n <= VW rays *r[] (all from the eye, all of the
  * tile's frame) among the tile's candidates: found[l] and h[l] as
  * nearest_scalar() gives them to r[l], the same tests counted.
  */
 AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
-                                const tile *t, const ray *r, int n, hit *h,
+                                const tile *t, const ray *const *r, int n,
+                                hit *h,
                                 int *found, uint64_t *tests)
 {
     _Alignas(32) REAL shear_x[VW], shear_y[VW];
     REAL t_max[VW];
     for (int l = 0; l < VW; l++) {
-        shear_x[l] = r[l < n ? l : 0].sx;
-        shear_y[l] = r[l < n ? l : 0].sy;
+        shear_x[l] = r[l < n ? l : 0]->sx;
+        shear_y[l] = r[l < n ? l : 0]->sy;
         t_max[l] = INFINITY;
         found[l] = 0;
     }
@@ -309,7 +310,7 @@ AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
             int l = __builtin_ctz(m);
             hit candidate;
             sheared s = kept_lane(&keep, l);
-            if (!intersect_sheared(&s, &r[l], t_max[l], &candidate))
+            if (!intersect_sheared(&s, r[l], t_max[l], &candidate))
                 continue;
             candidate.index = i;
             if (found[l] && !replaces(k, &h[l], &candidate))
@@ -544,7 +545,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
             }
         }
         t.candidates = cull(eye, t.frame, lo, hi);
-        ray r[VW];
+        const ray *r[VW];
         vec incoming[VW];
         int slot[VW], n = 0;
         for (int j = begin; j <= end; j++) {
@@ -555,7 +556,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
                                             settings, simd, counters, NULL);
                     continue;
                 }
-                r[n] = *p;
+                r[n] = p;
                 incoming[n] = in[j - begin];
                 slot[n++] = j;
                 if (n < VW)
