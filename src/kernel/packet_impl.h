@@ -12,7 +12,7 @@
  *    facet is an affine function of the ray's shear (sx, sy):
  *        e(sx, sy) = e0 + sx ex + sy ey,
  *    where (ex, ey, e0) is the cross product of the edge's two vertices
- *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy pz) -
+ *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy qz) -
  *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as trace()
  *    prepares them, and the box of the shears of those of one frame is
  *    taken from the shears themselves: each edge function stays in an
