@@ -79,6 +79,12 @@ static size_t edges_size(int count)
 
 static int frame_index(int kz, int swapped) { return 2 * kz + swapped; }
 
+/* The frame prepare() chose for *r (it swaps kx and ky when d_kz < 0). */
+static int ray_frame(const ray *r)
+{
+    return frame_index(r->kz, r->kx != (r->kz + 1) % 3);
+}
+
 /* Fills eye->edges from eye->blocks (the vertices minus the eye, as the
  * filter reads them). */
 static void packet_prepare_eye(KERNEL_EYE_T *eye, int count)
@@ -451,7 +457,7 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
             ray *q = &shadow[m];
             *q = shadow_ray(b->point, b->error_bound, b->normal,
                             k->lights[light], to_light);
-            int its = frame_index(q->kz, q->kx != (q->kz + 1) % 3);
+            int its = ray_frame(q);
             if (frame < 0)
                 frame = its;
             if (its != frame)
@@ -529,7 +535,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
             ray *r = &q[j - begin];
             in[j - begin] = normalize(from_rt(directions[j]), fast);
             *r = prepare(origin, in[j - begin]);
-            int frame = frame_index(r->kz, r->kx != (r->kz + 1) % 3);
+            int frame = ray_frame(r);
             if (j == begin) {
                 t.frame = frame;
                 t.kx = r->kx;
@@ -551,7 +557,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
         for (int j = begin; j <= end; j++) {
             if (j < end) {
                 const ray *p = &q[j - begin];
-                if (frame_index(p->kz, p->kx != (p->kz + 1) % 3) != t.frame) {
+                if (ray_frame(p) != t.frame) {
                     colors[j] = trace_alone(k, origin, in[j - begin],
                                             settings, simd, counters, NULL);
                     continue;
