@@ -6,6 +6,7 @@
  * out the camera, drops zero-area facets from what the renderer sees (with a
  * warning), and precomputes per-facet data once.
  */
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -306,6 +307,9 @@ void rt_scene_destroy(rt_scene *scene)
     rt__kernel_f_free(atomic_load(&scene->kernel_f));
     pthread_mutex_destroy(&scene->kernel_lock);
     free(scene->warnings);
+    for (int i = 0; i < scene->source_count; i++)
+        free((char *)scene->sources[i].name);
+    free(scene->sources);
     free(scene);
 }
 
@@ -340,6 +344,17 @@ void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)
 {
     *light = scene->lights[i];
+}
+
+int rt_scene_source_count(const rt_scene *scene)
+{
+    return scene != NULL ? scene->source_count : 0;
+}
+
+const rt_scene_source *rt_scene_source_at(const rt_scene *scene, int i)
+{
+    assert(scene != NULL && i >= 0 && i < scene->source_count);
+    return &scene->sources[i];
 }
 
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i)

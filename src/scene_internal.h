@@ -35,6 +35,8 @@ struct rt_scene {
     int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
     int transparent_count;  /* live facets with t > 0 */
+    rt_scene_source *sources;   /* the files the load read (names owned) */
+    int source_count;
 };
 
 struct rt_notes;

@@ -18,6 +18,7 @@
 #include "raytrace/export.h"
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "raytrace/image.h"
 #include "raytrace/status.h"
@@ -176,6 +177,50 @@ typedef enum rt_scene_format {
  * position only gives a direction and the end of a shadow ray. */
 #define RT_MAX_COORDINATE 1e152
 
+/* A cancellation flag (raytrace/render.h); loads poll it too. */
+typedef struct rt_cancel rt_cancel;
+
+/*
+ * A file a scene refers to (an OBJ's material library), as a resolver hands
+ * it to the loader.  The loader takes ownership of `data` and `name` (both
+ * from malloc; it frees them with free).
+ */
+typedef struct rt_resolved_file {
+    char *data;             /* the file's bytes (need not be NUL-terminated) */
+    size_t length;
+    char *name;             /* how messages name it (a path, usually) */
+    uint64_t device;        /* the file's identity (st_dev, st_ino): one */
+    uint64_t inode;         /* file is read once however it is spelt, and
+                               programs refuse to write over it; 0 and 0
+                               for bytes that are no file (memory) */
+} rt_resolved_file;
+
+/*
+ * Opens the file `reference` (NUL-terminated, as the scene spells it, with
+ * the format's escapes already removed) that the scene called `scene_name`
+ * (the name given to the load; may be NULL) refers to, taking at most
+ * `limit` bytes.  Returns RT_OK with *file filled, or a status with *error
+ * filled and *file untouched; a refusal's message names `reference` and
+ * never quotes any file's content.  Called on the loading thread.
+ */
+typedef rt_status (*rt_resolve_func)(void *user, const char *scene_name,
+                                     const char *reference, size_t limit,
+                                     rt_resolved_file *file, rt_error *error);
+
+/*
+ * The default resolver of rt_scene_load_with (docs/robustness-input.md,
+ * "Files a scene names"): `reference` is taken relative to the folder of
+ * `scene_name` and must stay inside it (no absolute path, no `..`, no
+ * symbolic link leading out); the file is opened without blocking and
+ * without becoming a controlling terminal, and must be a regular file of
+ * at most `limit` bytes.  Refusals outside the folder do not say whether
+ * the file exists.  `user` is unused (NULL).  Thread-safe.
+ */
+RT_API rt_status rt_resolve_in_folder(void *user, const char *scene_name,
+                                      const char *reference, size_t limit,
+                                      rt_resolved_file *file,
+                                      rt_error *error);
+
 /* How to read a scene, for the formats that leave room.  It grows by the
  * rule of raytrace/render.h: `size` first, set by rt_load_options_init;
  * fields beyond it keep their defaults; 0 or a size larger than the
@@ -202,6 +247,12 @@ typedef struct rt_load_options {
     const rt_light *lights;     /* when light_count > 0: the lights, in place
                                    of the file's (copied) */
     int light_count;
+    rt_cancel *cancel;          /* optional: the load polls it and returns
+                                   RT_ERR_CANCELLED soon after it is raised */
+    rt_resolve_func resolve;    /* opens the files the scene names; NULL:
+                                   rt_resolve_in_folder for rt_scene_load_with,
+                                   no file at all for a parse from memory */
+    void *resolve_user;         /* passed to resolve */
 } rt_load_options;
 
 /* Sets size to sizeof(rt_load_options) and the defaults above.
@@ -254,6 +305,24 @@ RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 /* The i-th light (0-based, i < light_count; 0 is the first).
  * Thread-safe. */
 RT_API void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
+
+/* A file a load read: the scene file itself (first, when the scene was
+ * loaded from a path) and every file it names that was read. */
+typedef struct rt_scene_source {
+    const char *name;       /* as messages name it; owned by the scene */
+    uint64_t device;        /* identity (st_dev, st_ino); 0 and 0 when */
+    uint64_t inode;         /* unknown (standard input, memory) */
+    size_t bytes;           /* how many bytes were read */
+} rt_scene_source;
+
+/* How many files the load of `scene` read (0 for a scene built from
+ * memory without a resolver, or by rt_scene_create).  Thread-safe. */
+RT_API int rt_scene_source_count(const rt_scene *scene);
+
+/* The i-th of them (0-based, i < rt_scene_source_count), owned by the
+ * scene.  Thread-safe. */
+RT_API const rt_scene_source *rt_scene_source_at(const rt_scene *scene,
+                                                 int i);
 
 /* The i-th warning (0-based, i < warning_count).  Thread-safe. */
 RT_API const rt_warning *rt_scene_warning(const rt_scene *scene, int i);

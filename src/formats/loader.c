@@ -45,7 +45,7 @@ static rt_status take_options(const rt_load_options *in, rt_load_options *out,
     TAKE(format) TAKE(tessellation) TAKE(width) TAKE(height)
     TAKE(look_from_given) TAKE(look_at_given) TAKE(up_given) TAKE(fov_given)
     TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)
-    TAKE(light_count)
+    TAKE(light_count) TAKE(cancel) TAKE(resolve) TAKE(resolve_user)
 #undef TAKE
     return RT_OK;
 }
