@@ -5,8 +5,11 @@
  *
  * The rule is stated in raytrace/image.h: what the path names decides how it
  * is written.  Regular files (and names not taken yet) are replaced
- * atomically through a temporary file in the same folder; devices, FIFOs,
- * sockets and open descriptors are streams and are written directly; a
+ * atomically through a temporary file in the same folder; devices, FIFOs
+ * and sockets are streams and are written directly; a descriptor of this
+ * process named as a file (/dev/fd/N, /proc/self/fd/N, /dev/stdout, what
+ * bash's >(...) passes) is written through that very descriptor, at its
+ * offset, so that what the caller wrote before and writes after stays; a
  * multiply linked file is rewritten in place from a complete temporary copy
  * so the links stay one file.  Symbolic links are followed here, link by
  * link, so that the temporary file lands beside the final target and the
@@ -14,9 +17,14 @@
  * blocked in the calling thread while a temporary file exists and polled
  * between writes, so an interrupted save removes its temporary file first.
  */
+/* realpath is X/Open's, beyond the _POSIX_C_SOURCE every target is built
+ * with (cmake/RaytraceWarnings.cmake). */
+#define _XOPEN_SOURCE 700
+
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
@@ -43,15 +51,19 @@ typedef enum kind {
     KIND_ABSENT,            /* nothing there yet */
     KIND_REGULAR,
     KIND_LINKED,            /* a regular file with several hard links */
-    KIND_STREAM,            /* device, FIFO, or descriptor via /proc */
+    KIND_STREAM,            /* device, FIFO, or another process's
+                               descriptor through /proc */
     KIND_SOCKET,
-    KIND_DIRECTORY
+    KIND_DIRECTORY,
+    KIND_DESCRIPTOR         /* a descriptor of this process, open for
+                               writing: written through it */
 } kind;
 
 typedef struct destination {
     char *path;             /* the final target (malloc'd) */
     kind kind;
     struct stat st;         /* of the target, when it exists */
+    int fd;                 /* KIND_DESCRIPTOR: the descriptor */
 } destination;
 
 /* A buffered sink over a file descriptor that stops when a blocked
@@ -96,12 +108,20 @@ static int pending_termination(void)
     return 0;
 }
 
+/* Writes everything, waiting for a descriptor the caller made
+ * non-blocking (a write then blocks as on any other stream). */
 static int write_all(int fd, const unsigned char *data, size_t size)
 {
     while (size > 0) {
         ssize_t n = write(fd, data, size);
         if (n < 0 && errno == EINTR)
             continue;
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            struct pollfd ready = {.fd = fd, .events = POLLOUT};
+            if (poll(&ready, 1, -1) < 0 && errno != EINTR)
+                return 0;
+            continue;
+        }
         if (n <= 0)
             return n == 0 ? (errno = EIO, 0) : 0;
         data += n;
@@ -204,6 +224,92 @@ static rt_status io_error(rt_error *error, const char *path, int saved,
                          strerror(saved));
 }
 
+/* The canonical name of folder `folder` ("" for the current one), or NULL
+ * (malloc'd). */
+static char *real_folder(const char *folder)
+{
+    return realpath(folder[0] ? folder : ".", NULL);
+}
+
+/* Non-zero when `real` (a canonical folder) is this process's table of
+ * descriptors: /proc/PID/fd, or a thread's /proc/PID/task/TID/fd. */
+static int own_descriptor_table(const char *real)
+{
+    char *own = realpath("/proc/self", NULL);
+    int same = 0;
+    if (own != NULL) {
+        size_t n = strlen(own);
+        const char *rest = strncmp(real, own, n) == 0 ? real + n : NULL;
+        if (rest != NULL && strncmp(rest, "/task/", 6) == 0) {
+            rest += 6;
+            if (*rest < '0' || *rest > '9')
+                rest = NULL;
+            while (rest != NULL && *rest >= '0' && *rest <= '9')
+                rest++;
+        }
+        same = rest != NULL && strcmp(rest, "/fd") == 0;
+        free(own);
+    }
+    return same;
+}
+
+/*
+ * Non-zero, with *fd set, when `path` names a descriptor of this process:
+ * its last part is a number and its folder is the process's table of
+ * descriptors once canonical (/dev/fd/N and /proc/self/fd/N lead there, and
+ * /dev/stdout is a link to /proc/self/fd/1).  Another process's table
+ * (/proc/PID/fd/N) is not: its descriptors are not this process's to write
+ * through.
+ */
+static int descriptor_named(const char *path, int *fd)
+{
+    const char *slash = strrchr(path, '/');
+    const char *digits = slash ? slash + 1 : path;
+    int number = 0;
+    if (*digits == '\0')
+        return 0;
+    for (const char *c = digits; *c; c++) {
+        if (*c < '0' || *c > '9' || number > (INT_MAX - (*c - '0')) / 10)
+            return 0;
+        number = number * 10 + (*c - '0');
+    }
+    char *folder = copy_string(path, (size_t)(digits - path));
+    char *real = folder ? real_folder(folder) : NULL;
+    int own = real != NULL && own_descriptor_table(real);
+    free(real);
+    free(folder);
+    if (own)
+        *fd = number;
+    return own;
+}
+
+/* Checks that descriptor d->fd is open for writing and not a folder, and
+ * fills d->st. */
+static rt_status check_descriptor(const char *path, destination *d,
+                                  rt_error *error)
+{
+    int flags = fcntl(d->fd, F_GETFL);
+    if (flags < 0)
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: descriptor %d is not "
+                             "open", d->fd);
+    int mode = flags & O_ACCMODE;
+#ifdef O_PATH
+    if (flags & O_PATH)
+        mode = O_RDONLY;
+#endif
+    if (fstat(d->fd, &d->st) != 0)
+        return io_error(error, path, errno, "cannot write the image");
+    if (S_ISDIR(d->st.st_mode))
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: is a directory");
+    if (mode != O_WRONLY && mode != O_RDWR)
+        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                             "cannot write the image: descriptor %d is open "
+                             "for reading only", d->fd);
+    return RT_OK;
+}
+
 /* Follows `path` to what it finally names and says what that is. */
 static rt_status resolve(const char *path, destination *d, rt_error *error)
 {
@@ -213,6 +319,11 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
         return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                              "out of memory");
     for (int links = 0;; links++) {
+        if (descriptor_named(current, &d->fd)) {
+            d->path = current;
+            d->kind = KIND_DESCRIPTOR;
+            return check_descriptor(path, d, error);
+        }
         if (in_proc(current)) {
             /* Let the kernel follow its own links: stat the whole path. */
             free(current);
@@ -515,7 +626,8 @@ static int connect_socket(const char *path)
 static rt_status save_to_stream(const char *path, const destination *d,
                                 const rt_producer *producer, rt_error *error)
 {
-    /* A regular file behind /proc/.../fd/N is rewritten from its start. */
+    /* A regular file behind another process's /proc/PID/fd/N is rewritten
+     * from its start: its offset is that process's. */
     int truncate = d->kind == KIND_STREAM && S_ISREG(d->st.st_mode);
     int fd = d->kind == KIND_SOCKET
                  ? connect_socket(d->path)
@@ -539,6 +651,26 @@ static rt_status save_to_stream(const char *path, const destination *d,
     return status;
 }
 
+/* A descriptor of this process: written through it, at its offset (or at
+ * the end when it was opened for appending), and left open; nothing is
+ * truncated or replaced, so what the caller wrote before and writes after
+ * stays around the bytes. */
+static rt_status save_to_descriptor(const char *path, const destination *d,
+                                    const rt_producer *producer,
+                                    rt_error *error)
+{
+    fd_sink *s = malloc(sizeof *s);
+    if (s == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    *s = (fd_sink){.fd = d->fd};
+    rt_status status = encode(s, producer, error);
+    if (status != RT_OK)
+        status = sink_error(s, status, path, error);
+    free(s);
+    return status;
+}
+
 static int valid_image(const rt_image *image)
 {
     return image != NULL && image->pixels != NULL && image->width > 0 &&
@@ -553,7 +685,9 @@ rt_status rt__save(const char *path, const rt_producer *producer,
                              "expected a path");
     destination d;
     rt_status status = resolve(path, &d, error);
-    if (status == RT_OK)
+    if (status == RT_OK && d.kind == KIND_DESCRIPTOR)
+        status = save_to_descriptor(path, &d, producer, error);
+    else if (status == RT_OK)
         status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
                      ? save_to_stream(path, &d, producer, error)
                      : save_through_temporary(path, &d, producer, error);
@@ -599,7 +733,9 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
         return status;
     }
     int fd = -1;
-    if (d.kind == KIND_STREAM && !S_ISFIFO(d.st.st_mode)) {
+    if (d.kind == KIND_DESCRIPTOR) {
+        /* resolve() found it open for writing: nothing more to try */
+    } else if (d.kind == KIND_STREAM && !S_ISFIFO(d.st.st_mode)) {
         fd = open(d.path, O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
         if (fd < 0)
             status = io_error(error, path, errno, "cannot open for writing");
