@@ -20,3 +20,16 @@ add_test(NAME test_save_privileged COMMAND raytrace_test_save privileged
 set_tests_properties(test_save_privileged PROPERTIES
   SKIP_RETURN_CODE 77
   TIMEOUT 600)
+
+# Descriptors the caller opened (/dev/fd/N, /proc/self/fd/N, /dev/stdout,
+# process substitution), tests/test_save_streams.c: test_save_streams calls
+# the library; test_save_streams_shell runs rt-export in bash with the same
+# destinations, and exits 77, a visible skip, without bash or rt-export.
+raytrace_add_suite(test_save_streams)
+set_tests_properties(test_save_streams PROPERTIES TIMEOUT 300)
+add_test(NAME test_save_streams_shell
+         COMMAND raytrace_test_save_streams shell
+         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+set_tests_properties(test_save_streams_shell PROPERTIES
+  SKIP_RETURN_CODE 77
+  TIMEOUT 300)
