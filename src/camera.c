@@ -8,6 +8,7 @@
  */
 #include <float.h>
 
+#include "error.h"
 #include "scene_internal.h"
 #include "vecmath.h"
 
@@ -52,6 +53,8 @@ const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
 
 rt_ray rt_camera_ray(const rt_camera *camera, int i, int j)
 {
+    if (!RT__EXPECT(camera != NULL))
+        return (rt_ray){{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     /* P = A + (2(i+1/2)/w - 1) AB + (1 - 2(j+1/2)/h)(h/w) AC, with each
      * coefficient's numerator an exact integer: one rounding each. */
     double w = camera->width, h = camera->height;

@@ -4,6 +4,8 @@
 #ifndef RAYTRACE_ERROR_H
 #define RAYTRACE_ERROR_H
 
+#include <assert.h>
+
 #include "raytrace/status.h"
 
 #if defined(__GNUC__)
@@ -20,5 +22,15 @@
 rt_status rt__error_set(rt_error *error, rt_status status, const char *name,
                         int line, int column, const char *fmt, ...)
     RT_PRINTF_LIKE(6, 7);
+
+/*
+ * A precondition of a function that cannot return a status (an accessor's
+ * index, a query's scene): a programmer's error when false (STYLE.md), so
+ * assert() stops a debug build there; with NDEBUG the expression is still
+ * the condition, and the caller returns its documented zero value instead
+ * of reading out of bounds.  `condition` is evaluated twice in debug
+ * builds: give it no side effects.
+ */
+#define RT__EXPECT(condition) (assert(condition), (condition))
 
 #endif /* RAYTRACE_ERROR_H */

@@ -9,6 +9,7 @@
  * ray's hit to the colours of the debug views.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -235,19 +236,22 @@ void rt_ray_tree_destroy(rt_ray_tree *tree)
 
 const rt_ray_node *rt_ray_tree_nodes(const rt_ray_tree *tree, size_t *count)
 {
+    int given = RT__EXPECT(tree != NULL);
     if (count != NULL)
-        *count = tree->count;
-    return tree->nodes;
+        *count = given ? tree->count : 0;
+    return given ? tree->nodes : NULL;
 }
 
 rt_color rt_ray_tree_value(const rt_ray_tree *tree)
 {
+    if (!RT__EXPECT(tree != NULL))
+        return (rt_color){0.0, 0.0, 0.0};
     return tree->value;
 }
 
 size_t rt_ray_tree_truncated(const rt_ray_tree *tree)
 {
-    return tree->truncated;
+    return RT__EXPECT(tree != NULL) ? tree->truncated : 0;
 }
 
 rt_rgb8 rt_debug_facet_color(int index)
@@ -358,6 +362,10 @@ rt_status rt_render_view(const rt_scene *scene,
     if (scene == NULL || image == NULL || image->pixels == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "no scene or no image");
+    if (image->stride < (size_t)image->width * 3)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the image's stride is %zu bytes, less than 3 "
+                             "x its width %d", image->stride, image->width);
     if (view < RT_VIEW_NORMAL || view > RT_VIEW_NS)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "a debug view of %d: expected RT_VIEW_NORMAL.."
@@ -380,7 +388,13 @@ rt_status rt_render_view(const rt_scene *scene,
                              "%d x %d", image->width, image->height, width,
                              height);
     }
-    int max_depth = options != NULL ? options->max_depth : RT_DEFAULT_DEPTH;
+    /* (the tracer took the options: their size is valid) */
+    int max_depth = options != NULL &&
+                            options->size >= offsetof(rt_render_options,
+                                                      max_depth) +
+                                                 sizeof options->max_depth
+                        ? options->max_depth
+                        : RT_DEFAULT_DEPTH;
     double *depth = NULL;
     if (view == RT_VIEW_DEPTH &&
         (depth = malloc((size_t)width * (size_t)height * sizeof *depth)) ==

@@ -82,17 +82,19 @@ void rt_cancel_destroy(rt_cancel *cancel)
 
 void rt_cancel_request(rt_cancel *cancel)
 {
-    atomic_store(&cancel->raised, 1);
+    if (cancel != NULL)
+        atomic_store(&cancel->raised, 1);
 }
 
 void rt_cancel_reset(rt_cancel *cancel)
 {
-    atomic_store(&cancel->raised, 0);
+    if (cancel != NULL)
+        atomic_store(&cancel->raised, 0);
 }
 
 int rt_cancel_requested(const rt_cancel *cancel)
 {
-    return atomic_load(&((rt_cancel *)cancel)->raised);
+    return cancel != NULL && atomic_load(&((rt_cancel *)cancel)->raised);
 }
 
 /* Non-zero once the render must stop: its callback said so, or the caller
@@ -112,6 +114,8 @@ static int stopping(job *j)
 
 void rt_render_options_init(rt_render_options *options)
 {
+    if (options == NULL)
+        return;
     memset(options, 0, sizeof *options);
     options->size = sizeof *options;
     options->max_depth = RT_DEFAULT_DEPTH;
@@ -138,7 +142,7 @@ rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth)
     rt_counters counters = {0};
     rt_trace_settings settings = {max_depth, 0, RT_KERNEL_AUTO, NULL, 0,
                                   NULL};
-    if (!v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
+    if (!RT__EXPECT(scene != NULL) || !v3_is_finite(ray.direction) || v3_max_abs(ray.direction) == 0.0 ||
         max_depth < 0)
         return (rt_color){0.0, 0.0, 0.0};
     return rt__kernel_d_trace(scene->kernel, ray.origin, ray.direction,
@@ -487,11 +491,25 @@ static int prepare_octree(job *j, const rt_scene *scene)
     return 1;
 }
 
+/* RT_OK for a precision rt_precision names, else the refusal. */
+static rt_status check_precision(rt_precision precision, rt_error *error)
+{
+    if (precision != RT_PRECISION_DOUBLE && precision != RT_PRECISION_FLOAT)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a precision of %d: expected RT_PRECISION_DOUBLE "
+                             "or RT_PRECISION_FLOAT", (int)precision);
+    return RT_OK;
+}
+
 rt_status rt_scene_check_precision(const rt_scene *scene,
                                    rt_precision precision, rt_error *error)
 {
-    if (precision != RT_PRECISION_FLOAT)
-        return RT_OK;
+    if (scene == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a scene");
+    rt_status status = check_precision(precision, error);
+    if (status != RT_OK || precision == RT_PRECISION_DOUBLE)
+        return status;
     const rt_camera *c = &scene->camera;
     double largest = fmax(v3_max_abs(c->observer),
                           v3_max_abs(v3_add(c->screen_center,
@@ -597,6 +615,14 @@ rt_status rt_render_image_size(const rt_scene *scene,
 {
     rt_render_options taken;
     int full_width, full_height;
+    if (width == NULL || height == NULL) {
+        if (width != NULL)
+            *width = 0;
+        if (height != NULL)
+            *height = 0;
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a width and a height to fill");
+    }
     *width = *height = 0;
     rt_status status = take_options(options, &taken, error);
     if (status != RT_OK)
@@ -639,7 +665,8 @@ static rt_status check_render(const rt_render_options *options, int width,
     return check_options(options, error);
 }
 
-/* The checks of the options alone. */
+/* The checks of the options alone: every field in its domain (the image
+ * size and region are image_size's, the samples sample_grid's). */
 static rt_status check_options(const rt_render_options *options,
                                rt_error *error)
 {
@@ -647,11 +674,19 @@ static rt_status check_options(const rt_render_options *options,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "a depth of %d: expected 0 or more",
                              options->max_depth);
-    if (options->precision != RT_PRECISION_DOUBLE &&
-        options->precision != RT_PRECISION_FLOAT)
+    if (options->threads < 0)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "a precision of %d: expected RT_PRECISION_DOUBLE "
-                             "or RT_PRECISION_FLOAT", (int)options->precision);
+                             "%d threads: expected 0 (one per core) or more",
+                             options->threads);
+    rt_status status = check_precision(options->precision, error);
+    if (status != RT_OK)
+        return status;
+    if (options->sampling != RT_SAMPLING_REGULAR &&
+        options->sampling != RT_SAMPLING_STRATIFIED)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a sampling of %d: expected RT_SAMPLING_REGULAR "
+                             "or RT_SAMPLING_STRATIFIED",
+                             (int)options->sampling);
     if (options->kernel != RT_KERNEL_AUTO &&
         options->kernel != RT_KERNEL_SCALAR)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
@@ -663,6 +698,17 @@ static rt_status check_options(const rt_render_options *options,
                              "an accel of %d: expected RT_ACCEL_AUTO, "
                              "RT_ACCEL_NONE or RT_ACCEL_OCTREE",
                              (int)options->accel);
+    if (!isfinite(options->aperture))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "an aperture of %g: expected a finite lens "
+                             "radius >= 0 (negative: the scene's)",
+                             options->aperture);
+    if (!(options->focal_distance >= 0.0) ||
+        !isfinite(options->focal_distance))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "a focal distance of %g: expected a finite "
+                             "distance > 0 (0: the scene's)",
+                             options->focal_distance);
     return RT_OK;
 }
 

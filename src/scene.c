@@ -6,7 +6,6 @@
  * out the camera, drops zero-area facets from what the renderer sees (with a
  * warning), and precomputes per-facet data once.
  */
-#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -287,7 +286,8 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                           rt_error *error)
 {
     if (scene == NULL)
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a pointer to fill with the scene");
     *scene = NULL;
     if (desc == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
@@ -315,7 +315,11 @@ void rt_scene_destroy(rt_scene *scene)
 
 void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
 {
+    if (!RT__EXPECT(info != NULL))
+        return;
     memset(info, 0, sizeof *info);
+    if (!RT__EXPECT(s != NULL))
+        return;
     info->width = s->camera.width;
     info->height = s->camera.height;
     info->vertex_count = s->vertex_count;
@@ -331,18 +335,37 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
     info->transparent_facet_count = s->transparent_count;
 }
 
+/* The accessors' index rule: `i` in 0..count-1 of a scene (raytrace/scene.h:
+ * asserted; with NDEBUG, a zero value instead). */
+#define INDEX_OK(scene, i, count)                                            \
+    RT__EXPECT((scene) != NULL && (i) >= 0 && (i) < (scene)->count)
+
 rt_vec3 rt_scene_vertex(const rt_scene *scene, int i)
 {
+    if (!INDEX_OK(scene, i, vertex_count))
+        return (rt_vec3){0.0, 0.0, 0.0};
     return scene->vertices[i];
 }
 
 void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
 {
+    if (!RT__EXPECT(facet != NULL))
+        return;
+    if (!INDEX_OK(scene, i, facet_count)) {
+        memset(facet, 0, sizeof *facet);
+        return;
+    }
     *facet = scene->facets[i];
 }
 
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)
 {
+    if (!RT__EXPECT(light != NULL))
+        return;
+    if (!INDEX_OK(scene, i, light_count)) {
+        memset(light, 0, sizeof *light);
+        return;
+    }
     *light = scene->lights[i];
 }
 
@@ -353,12 +376,15 @@ int rt_scene_source_count(const rt_scene *scene)
 
 const rt_scene_source *rt_scene_source_at(const rt_scene *scene, int i)
 {
-    assert(scene != NULL && i >= 0 && i < scene->source_count);
+    if (!INDEX_OK(scene, i, source_count))
+        return NULL;
     return &scene->sources[i];
 }
 
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
 {
+    if (!INDEX_OK(scene, i, warning_count))
+        return NULL;
     return &scene->warnings[i];
 }
 
@@ -394,7 +420,8 @@ int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
                          rt_hit *hit)
 {
     rt_kernel_hit h;
-    if (!rt__kernel_d_nearest_hit(scene->kernel, ray, t_max, &h))
+    if (!RT__EXPECT(scene != NULL && hit != NULL) ||
+        !rt__kernel_d_nearest_hit(scene->kernel, ray, t_max, &h))
         return 0;
     hit->t = h.t;
     hit->facet = h.facet;
@@ -406,5 +433,7 @@ int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
 int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
                       int skip_facet)
 {
+    if (!RT__EXPECT(scene != NULL))
+        return 0;
     return rt__kernel_d_occluded(scene->kernel, from, to, skip_facet);
 }

@@ -20,6 +20,8 @@
 
 void rt_load_options_init(rt_load_options *options)
 {
+    if (options == NULL)
+        return;
     memset(options, 0, sizeof *options);
     options->size = sizeof *options;
     options->format = RT_SCENE_FORMAT_AUTO;
@@ -47,6 +49,14 @@ static rt_status take_options(const rt_load_options *in, rt_load_options *out,
     TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)
     TAKE(light_count) TAKE(cancel) TAKE(resolve) TAKE(resolve_user)
 #undef TAKE
+    if (out->light_count < 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "a light count of %d: expected 0 (the file's "
+                             "lights) or more", out->light_count);
+    if (out->light_count > 0 && out->lights == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "%d lights: expected an array of lights",
+                             out->light_count);
     return RT_OK;
 }
 
@@ -60,9 +70,9 @@ const char *rt_scene_format_name(rt_scene_format format)
     case RT_SCENE_FORMAT_OBJ:
         return "obj";
     case RT_SCENE_FORMAT_AUTO:
-        break;
+        return "auto";
     }
-    return "auto";
+    return "unknown";
 }
 
 static rt_status refuse_scene_extension(const char *path, rt_error *error)
@@ -188,8 +198,12 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
                               rt_scene **scene, rt_error *error)
 {
     if (scene == NULL)
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected a pointer to fill with the scene");
     *scene = NULL;
+    if (text == NULL && length > 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected scene text");
     rt_load_options taken;
     rt_status status = take_options(options, &taken, name, error);
     if (status != RT_OK)
@@ -218,7 +232,8 @@ rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
                              rt_scene **scene, rt_error *error)
 {
     if (scene == NULL)
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected a pointer to fill with the scene");
     *scene = NULL;
     if (path == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,

@@ -190,7 +190,13 @@ static rt_status read_uint(reader *r, long min, long max, const char *what,
 rt_status rt_ppm_parse(const void *data, size_t length, const char *name,
                        rt_image *image, rt_error *error)
 {
+    if (image == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected an image to fill");
     memset(image, 0, sizeof *image);
+    if (data == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected the bytes of an image");
     reader r = {data, (const unsigned char *)data + length,
                 name ? name : "<memory>", 1, 1};
     if (length < 2 || r.at[0] != 'P' || (r.at[1] != '3' && r.at[1] != '6'))
@@ -256,7 +262,13 @@ rt_status rt_ppm_load(const char *path, rt_image *image, rt_error *error)
 {
     char *data;
     size_t length;
+    if (image == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "expected an image to fill");
     memset(image, 0, sizeof *image);
+    if (path == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a path");
     rt_status status = rt__read_file(path, &data, &length, error);
     if (status != RT_OK)
         return status;

@@ -542,7 +542,8 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         rt_error *error)
 {
     if (scene == NULL)
-        return RT_ERR_ARGUMENT;
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected a pointer to fill with the scene");
     *scene = NULL;
     if (text == NULL && length > 0)
         return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
