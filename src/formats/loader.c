@@ -27,6 +27,45 @@ void rt_load_options_init(rt_load_options *options)
     options->format = RT_SCENE_FORMAT_AUTO;
 }
 
+/* RT_OK when every field of `o` lies in its domain (raytrace/scene.h),
+ * whatever the format reads; else the refusal, naming the field. */
+static rt_status check_options(const rt_load_options *o, const char *name,
+                               rt_error *error)
+{
+    if (o->tessellation != 0 && !(o->tessellation > 0 && o->tessellation < 1))
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected a tessellation tolerance in (0, 1), "
+                             "found %g", o->tessellation);
+    if (o->width < 0 || o->width > RT_MAX_IMAGE_SIDE || o->height < 0 ||
+        o->height > RT_MAX_IMAGE_SIDE)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "an image of %d x %d pixels: expected each side "
+                             "0 (the default) or 1..%d", o->width, o->height,
+                             RT_MAX_IMAGE_SIDE);
+    if (o->fov_given && !(o->fov > 0 && o->fov < 180))
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "a field of view of %g degrees: expected more "
+                             "than 0 and less than 180", o->fov);
+    const char *vector = o->look_from_given && !v3_is_finite(o->look_from)
+                             ? "look_from"
+                         : o->look_at_given && !v3_is_finite(o->look_at)
+                             ? "look_at"
+                         : o->up_given && !v3_is_finite(o->up) ? "up"
+                                                               : NULL;
+    if (vector != NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected finite coordinates for %s", vector);
+    if (o->light_count < 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "a light count of %d: expected 0 (the file's "
+                             "lights) or more", o->light_count);
+    if (o->light_count > 0 && o->lights == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "%d lights: expected an array of lights",
+                             o->light_count);
+    return RT_OK;
+}
+
 /* Copies the caller's options into *out as far as the caller's size
  * reaches; later fields keep their defaults (raytrace/render.h's rule for
  * growing option structs).  NULL: the defaults. */
@@ -49,15 +88,7 @@ static rt_status take_options(const rt_load_options *in, rt_load_options *out,
     TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)
     TAKE(light_count) TAKE(cancel) TAKE(resolve) TAKE(resolve_user)
 #undef TAKE
-    if (out->light_count < 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "a light count of %d: expected 0 (the file's "
-                             "lights) or more", out->light_count);
-    if (out->light_count > 0 && out->lights == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "%d lights: expected an array of lights",
-                             out->light_count);
-    return RT_OK;
+    return check_options(out, name, error);
 }
 
 const char *rt_scene_format_name(rt_scene_format format)
