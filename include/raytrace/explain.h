@@ -123,8 +123,9 @@ typedef struct rt_ray_tree rt_ray_tree;
  * all of them, else 0..samples-1 for one (its value is then that sample's
  * colour, not the pixel's).  On RT_OK *tree is the new tree, to free with
  * rt_ray_tree_destroy.  RT_ERR_ARGUMENT (a pixel outside the image, a bad
- * sample, any option rt_render refuses), RT_ERR_RANGE (as rt_render in
- * float), RT_ERR_NOMEM; then *tree is NULL, *error (may be NULL) says why.
+ * sample, any option rt_render refuses, a NULL scene or tree),
+ * RT_ERR_RANGE (as rt_render in float), RT_ERR_NOMEM; then *tree is NULL,
+ * *error (may be NULL) says why.
  * Thread-safe.
  */
 RT_API rt_status rt_explain_pixel(const rt_scene *scene,
@@ -136,7 +137,9 @@ RT_API rt_status rt_explain_pixel(const rt_scene *scene,
 RT_API void rt_ray_tree_destroy(rt_ray_tree *tree);
 
 /* The rays, *count of them (count may be NULL).  The array lives as long
- * as the tree.  Thread-safe (read only). */
+ * as the tree.  A NULL tree is asserted (NULL and a count of 0 where
+ * NDEBUG is defined), as in the two functions below (a zero value).
+ * Thread-safe (read only). */
 RT_API const rt_ray_node *rt_ray_tree_nodes(const rt_ray_tree *tree,
                                             size_t *count);
 
@@ -182,7 +185,8 @@ RT_API rt_rgb8 rt_debug_facet_color(int index);
  * `image`, of the size rt_render would write (regions apply); `light` is the
  * light of RT_VIEW_SHADOW and RT_VIEW_NS (ignored by the others).  Same
  * statuses as rt_render but RT_ERR_CANCELLED, plus RT_ERR_ARGUMENT for an
- * unknown view or a light outside 0..light_count-1.  It runs on the calling
+ * unknown view, a light outside 0..light_count-1, or an image whose stride
+ * is less than 3 x its width.  It runs on the calling
  * thread and ignores on_row, cancel and stats.  Thread-safe as rt_render.
  */
 RT_API rt_status rt_render_view(const rt_scene *scene,

@@ -26,14 +26,27 @@
  *     completely to the temporary file, its space reserved in the target,
  *     then copied over it.
  *   - a symbolic link: the rule applies to its final target; the link stays.
- *   - a character or block device, a FIFO, a socket, or an open descriptor
- *     named through /proc or /dev/fd (/dev/stdout): written directly, as a
- *     stream, never replaced (no temporary file, no rename).
+ *   - a character or block device, a FIFO or a socket: written directly,
+ *     as a stream, never replaced (no temporary file, no rename).
+ *   - a descriptor of the calling process named as a file: /dev/fd/N,
+ *     /proc/self/fd/N (or /proc/PID/fd/N with its own PID), /dev/stdout and
+ *     /dev/stderr (links to /proc/self/fd/1 and 2), bash's >(command): the
+ *     bytes are written through descriptor N itself, at its current offset
+ *     (at the end when it was opened for appending, as by >>); it is left
+ *     open and nothing is reopened, truncated or replaced, so what the
+ *     caller wrote before and writes after stays around the image.  A
+ *     descriptor that is closed or open only for reading is an error naming
+ *     it.  A caller that also writes to N through stdio flushes its stream
+ *     first.  Another process's /proc/PID/fd/N is opened again as a stream
+ *     (a regular file behind it is rewritten from its start: the offset is
+ *     that process's).
  *   - a directory, a missing folder, a folder that cannot be written to: an
  *     error naming the path and the reason; nothing is created.
  *
- * The temporary file is removed on every failure.  While it exists the
- * calling thread blocks SIGINT, SIGTERM and SIGHUP; if one arrives, the
+ * The temporary file is removed on every failure; a stream or descriptor
+ * that fails half-way keeps what was written before the failure.  While the
+ * temporary file exists the calling thread blocks SIGINT, SIGTERM and
+ * SIGHUP; if one arrives, the
  * temporary file is removed, the target is left as it was, the signal mask is
  * restored (so the signal then takes its usual effect: a program that keeps
  * the default action ends, killed by it) and the call returns
@@ -151,7 +164,8 @@ RT_API rt_status rt_image_save(const char *path, const rt_image *image,
  * Checks, without rendering anything, that rt_image_save could write at
  * `path`: the folder exists and takes a new file (a file is created in it
  * and removed at once), or the device opens for writing, or the FIFO or
- * socket may be written to; a directory is refused.  Leaves nothing behind.
+ * socket may be written to, or the descriptor is open for writing (its
+ * offset untouched); a directory is refused.  Leaves nothing behind.
  * Returns RT_OK or what rt_image_save would return, with the same
  * messages.  Programs call it before a long render so that a bad output
  * fails in milliseconds.  Thread-safe.
@@ -171,8 +185,13 @@ RT_API rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
 RT_API rt_status rt_ppm_save(const char *path, const rt_image *image,
                              rt_ppm_format format, rt_error *error);
 
-/* Parses a P3 or P6 image from memory into a new image (free it with
- * rt_image_release).  `name` is used in messages ("<memory>" when NULL). */
+/* Parses a P3 or P6 image from `length` bytes at `data` into a new image
+ * (free it with rt_image_release).  `name` is used in messages ("<memory>"
+ * when NULL).  RT_ERR_ARGUMENT for a NULL `data` or `image`; the reader's
+ * status (RT_ERR_FORMAT, RT_ERR_SYNTAX, RT_ERR_RANGE, RT_ERR_NOMEM) with the
+ * position in the message for bad bytes; *image is zeroed on failure.
+ * rt_ppm_load reads the file at `path` first (RT_ERR_ARGUMENT for a NULL
+ * path; RT_ERR_IO when it cannot be read).  Thread-safe. */
 RT_API rt_status rt_ppm_parse(const void *data, size_t length,
                               const char *name, rt_image *image,
                               rt_error *error);

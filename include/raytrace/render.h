@@ -139,11 +139,15 @@ typedef enum rt_accel {
 typedef struct rt_cancel rt_cancel;
 
 /* A new flag, not raised, in *cancel; RT_ERR_NOMEM (and *cancel NULL)
- * when out of memory. */
+ * when out of memory, RT_ERR_ARGUMENT when `cancel` is NULL. */
 RT_API rt_status rt_cancel_create(rt_cancel **cancel, rt_error *error);
-RT_API void rt_cancel_destroy(rt_cancel *cancel); /* NULL: no-op */
+/* Frees the flag; NULL: no-op. */
+RT_API void rt_cancel_destroy(rt_cancel *cancel);
+/* Raises the flag; NULL: no-op. */
 RT_API void rt_cancel_request(rt_cancel *cancel);
+/* Lowers the flag; NULL: no-op. */
 RT_API void rt_cancel_reset(rt_cancel *cancel);
+/* Non-zero while the flag is raised; 0 for NULL. */
 RT_API int rt_cancel_requested(const rt_cancel *cancel);
 
 /*
@@ -172,9 +176,11 @@ typedef struct rt_region {
 typedef struct rt_render_options {
     size_t size;                /* sizeof(rt_render_options); set by
                                    rt_render_options_init */
-    int max_depth;              /* reflections after a primary ray; default 5 */
+    int max_depth;              /* reflections after a primary ray, >= 0;
+                                   default 5 */
     int threads;                /* 0: one per online core (default); 1: the
-                                   calling thread only */
+                                   calling thread only; n > 1: n threads
+                                   (at most one per row); negative: refused */
     rt_precision precision;     /* default RT_PRECISION_DOUBLE */
     int fast_inv_sqrt;          /* non-zero: normalise vectors with the
                                    handout's fastInvSqrt (one Newton step)
@@ -191,9 +197,11 @@ typedef struct rt_render_options {
     rt_accel accel;             /* default RT_ACCEL_AUTO */
     double aperture;        /* thin-lens radius a in scene units; negative
                                (the default): the scene's; 0: the pinhole
-                               camera, today's rays exactly */
+                               camera, today's rays exactly; NaN or
+                               infinite: refused */
     double focal_distance;  /* f > 0 in scene units; 0 (the default): the
-                               scene's (|AO| unless the file sets it) */
+                               scene's (|AO| unless the file sets it);
+                               negative, NaN or infinite: refused */
     int width;              /* the image's size in pixels, each in
                                1..RT_MAX_IMAGE_SIDE; 0 (the default): the */
     int height;             /* scene's.  The screen keeps its width 2|AB|
@@ -210,16 +218,18 @@ typedef struct rt_render_options {
 /* Sets size to sizeof(rt_render_options) and the defaults: max_depth 5,
  * all cores, double precision, exact square root, one sample per pixel, no
  * callback, no stats, the fastest kernel, the octree chosen by facet count,
- * the scene's image size, the whole image.  Thread-safe. */
+ * the scene's image size, the whole image.  NULL: no-op.  Thread-safe. */
 RT_API void rt_render_options_init(rt_render_options *options);
 
 /*
  * The size of the image a render of `scene` with `options` (NULL: the
  * defaults) writes: the region's when one is set, else options->width x
  * options->height (each 0 meaning the scene's).  RT_OK, or RT_ERR_ARGUMENT
- * with the reason in *error (may be NULL) when a side is outside
+ * with the reason in *error (may be NULL) when `scene`, `width` or `height`
+ * is NULL, the options' size is wrong, a side is outside
  * 1..RT_MAX_IMAGE_SIDE or the region is empty or reaches outside the
- * image; *width and *height are then 0.  Thread-safe.
+ * image; *width and *height (those given) are then 0.  It reads only the
+ * size, width, height and region of the options.  Thread-safe.
  */
 RT_API rt_status rt_render_image_size(const rt_scene *scene,
                                       const rt_render_options *options,
@@ -229,9 +239,12 @@ RT_API rt_status rt_render_image_size(const rt_scene *scene,
 /*
  * Renders the image (or its region) into `image`, which must have the size
  * rt_render_image_size gives: the scene's width x height by default (see
- * rt_image_init).  Returns RT_OK, RT_ERR_ARGUMENT (the image's size is not
- * the render's, a bad size or region, a negative depth, samples not a square
- * in 1..1024, bad option values or size), RT_ERR_RANGE (a float render of a
+ * rt_image_init).  Returns RT_OK, RT_ERR_ARGUMENT (no scene or image, the
+ * image's size is not the render's, a bad size or region, a negative
+ * depth or thread count, samples not a square in 1..1024, an enum value
+ * the header does not name - precision, sampling, kernel, accel -, a lens
+ * value the fields above refuse, or a bad size of the options; the message
+ * names the field and its value), RT_ERR_RANGE (a float render of a
  * scene float cannot hold or resolve: see rt_scene_check_precision),
  * RT_ERR_NOMEM (nothing is rendered) or RT_ERR_CANCELLED (some rows are
  * finished, the others hold whatever they held before); *error (may be
@@ -251,8 +264,9 @@ RT_API rt_status rt_render(const rt_scene *scene,
 #define RT_FLOAT_SPREAD_MAX 4096.0
 
 /*
- * RT_OK when a render in `precision` can hold and resolve `scene`; else
- * RT_ERR_RANGE with the reason in *error (may be NULL): in float, a
+ * RT_OK when a render in `precision` can hold and resolve `scene`;
+ * RT_ERR_ARGUMENT for a NULL scene or a precision rt_precision does not
+ * name; else RT_ERR_RANGE with the reason in *error (may be NULL): in float, a
  * coordinate beyond FLT_MAX (lights included), or vertices and camera
  * points reaching beyond RT_FLOAT_SPREAD_MAX times the vertices' extent.
  * Double holds every scene the loader accepts.  Thread-safe.
@@ -276,7 +290,9 @@ RT_API rt_status rt_render_rows(const rt_scene *scene,
  * The real-valued colour carried by `ray` (docs/rendering-model.md, "What a
  * ray sees"), following at
  * most `max_depth` reflections; the direction need not be unit length.
- * The value is not clamped.  Thread-safe.
+ * The value is not clamped.  A direction that is zero or not finite, or a
+ * negative depth, gives black.  `scene` must not be NULL (asserted; black
+ * where NDEBUG compiles asserts out).  Thread-safe.
  */
 RT_API rt_color rt_trace(const rt_scene *scene, rt_ray ray, int max_depth);
 

@@ -10,7 +10,17 @@
  *
  * The loader reads from memory (rt_scene_parse); rt_scene_load is a thin
  * wrapper that reads a file first.  On failure the out-pointer is set to NULL,
- * nothing is leaked, and the rt_error (if given) says what and where.
+ * nothing is leaked, and the rt_error (if given) says what and where; a NULL
+ * where an object or out-pointer is expected is RT_ERR_ARGUMENT.
+ *
+ * The accessors (rt_scene_get_info, rt_scene_vertex, rt_scene_facet,
+ * rt_scene_light, rt_scene_source_at, rt_scene_warning) and the queries
+ * (rt_camera_ray, rt_scene_nearest_hit, rt_scene_occluded) return no
+ * status: a NULL scene or out-pointer, or an index outside 0..count-1, is a
+ * programmer's error that an assert stops in a debug build.  Where NDEBUG
+ * compiles asserts out (a Release build) they read nothing out of bounds
+ * and give a zero value instead: a zero vertex, a zeroed facet, light or
+ * info, a NULL pointer, no hit, not occluded, a zero ray.
  */
 #ifndef RAYTRACE_SCENE_H
 #define RAYTRACE_SCENE_H
@@ -135,8 +145,10 @@ typedef struct rt_scene_desc {
  * Builds a scene from `desc`, checking the rules of the rendering model
  * (docs/rendering-model.md): finite coordinates, k and t in [0, 1] with
  * k + t <= 1, n > 0, d >= 0, indices in range, sizes, a >= 0, f >= 0, a
- * camera that is not degenerate.  Messages have no file position; zero-area
- * facets give warnings.  Thread-safe.
+ * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA).  A NULL
+ * `desc` or `scene`, a negative count or a missing array is
+ * RT_ERR_ARGUMENT.  Messages have no file position; zero-area facets give
+ * warnings.  Thread-safe.
  */
 RT_API rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                                  rt_error *error);
@@ -255,8 +267,8 @@ typedef struct rt_load_options {
     void *resolve_user;         /* passed to resolve */
 } rt_load_options;
 
-/* Sets size to sizeof(rt_load_options) and the defaults above.
- * Thread-safe. */
+/* Sets size to sizeof(rt_load_options) and the defaults above.  NULL:
+ * no-op.  Thread-safe. */
 RT_API void rt_load_options_init(rt_load_options *options);
 
 /* The format a path's extension names, case-insensitively (.scn, .nff,
@@ -266,8 +278,8 @@ RT_API rt_status rt_scene_format_from_path(const char *path,
                                            rt_scene_format *format,
                                            rt_error *error);
 
-/* The lower-case name of a format ("scn", "nff", "obj"; "auto").
- * Thread-safe. */
+/* The lower-case name of a format ("scn", "nff", "obj"; "auto"; "unknown"
+ * for a value the enum does not name).  Thread-safe. */
 RT_API const char *rt_scene_format_name(rt_scene_format format);
 
 /*
@@ -275,7 +287,14 @@ RT_API const char *rt_scene_format_name(rt_scene_format format);
  * .scn.  `name` names the input in messages and, for OBJ, locates the
  * material libraries it asks for (relative to the folder of `name`); with
  * RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension (.scn when
- * it has none).  `options` may be NULL (the defaults).  Thread-safe.
+ * it has none).  `options` may be NULL (the defaults).  Every field of
+ * the options is checked whatever the format reads, and one outside its
+ * domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond the library's,
+ * a format the enum does not name, a tessellation outside (0, 1) but 0, a
+ * side outside 1..RT_MAX_IMAGE_SIDE but 0, a given field of view outside
+ * (0, 180), a given look-from, look-at or up that is not finite, a negative
+ * light count or lights without an array.  NULL `text` with a non-zero
+ * length, or a NULL `scene`, is RT_ERR_ARGUMENT too.  Thread-safe.
  */
 RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
                                      const char *name,
@@ -293,17 +312,20 @@ RT_API rt_status rt_scene_load_with(const char *path,
  * the same scene (no other call may be using it). */
 RT_API void rt_scene_destroy(rt_scene *scene);
 
-/* Fills `info`.  Thread-safe. */
+/* Fills `info` (a zeroed info for a NULL scene where asserts are compiled
+ * out).  Thread-safe. */
 RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 
-/* The i-th vertex (0-based, i < vertex_count).  Thread-safe. */
+/* The i-th vertex (0-based, i < vertex_count; else asserted, or the zero
+ * vector where NDEBUG is defined).  Thread-safe. */
 RT_API rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
 
-/* The i-th facet record (0-based, i < facet_count).  Thread-safe. */
+/* The i-th facet record (0-based, i < facet_count; else asserted, or a
+ * zeroed *facet where NDEBUG is defined).  Thread-safe. */
 RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 
-/* The i-th light (0-based, i < light_count; 0 is the first).
- * Thread-safe. */
+/* The i-th light (0-based, i < light_count; 0 is the first; else asserted,
+ * or a zeroed *light where NDEBUG is defined).  Thread-safe. */
 RT_API void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
 
 /* A file a load read: the scene file itself (first, when the scene was
@@ -319,18 +341,20 @@ typedef struct rt_scene_source {
  * memory without a resolver, or by rt_scene_create).  Thread-safe. */
 RT_API int rt_scene_source_count(const rt_scene *scene);
 
-/* The i-th of them (0-based, i < rt_scene_source_count), owned by the
- * scene.  Thread-safe. */
+/* The i-th of them (0-based, i < rt_scene_source_count; else asserted, or
+ * NULL where NDEBUG is defined), owned by the scene.  Thread-safe. */
 RT_API const rt_scene_source *rt_scene_source_at(const rt_scene *scene,
                                                  int i);
 
-/* The i-th warning (0-based, i < warning_count).  Thread-safe. */
+/* The i-th warning (0-based, i < warning_count; else asserted, or NULL
+ * where NDEBUG is defined).  Thread-safe. */
 RT_API const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
 
 /* The primary ray of pixel (column i, row j from the top) of the camera's
  * width x height image, as docs/rendering-model.md ("The camera") defines
  * it: from the observer through the pixel's centre; direction not
- * normalised.  Thread-safe. */
+ * normalised; i and j outside the image give rays beyond the screen.
+ * Thread-safe. */
 RT_API rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
 
 /* A ray-facet intersection. */
