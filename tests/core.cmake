@@ -13,20 +13,19 @@ foreach(suite
     test_extension
     test_readers
     test_api
-    test_api_edges)
+    test_api_edges
+    test_api_accessors)
   raytrace_add_suite(${suite})
 endforeach()
-# The accessors' bad calls, tests/test_api_edges.c: in a debug build each
-# must abort naming its function (test_api_edges_asserts); where NDEBUG
+# The accessors' bad calls, tests/test_api_accessors.c: in a debug build
+# each must abort naming its function (test_api_accessors); where NDEBUG
 # compiles asserts out (Release) each returns its zero value
-# (test_api_edges_fallbacks).  The entry that does not apply to the build
-# exits 77, a visible skip.
-add_test(NAME test_api_edges_asserts COMMAND raytrace_test_api_edges asserts
+# (test_api_accessors_fallbacks).  The entry that does not apply to the
+# build exits 77, a visible skip.
+add_test(NAME test_api_accessors_fallbacks
+         COMMAND raytrace_test_api_accessors fallbacks
          WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
-add_test(NAME test_api_edges_fallbacks
-         COMMAND raytrace_test_api_edges fallbacks
-         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
-set_tests_properties(test_api_edges_asserts test_api_edges_fallbacks
+set_tests_properties(test_api_accessors test_api_accessors_fallbacks
   PROPERTIES SKIP_RETURN_CODE 77)
 # The handout's seed scenes, skipped when ../shared is absent.
 raytrace_add_shared_test(test_render)

@@ -1,35 +1,23 @@
 /*
- * test_api_edges.c - every public function at the edges of its domain:
- * NULL where an object is expected, and values outside what its header
- * allows.
+ * test_api_edges.c - every public function that returns a status, at the
+ * edges of its domain: NULL where an object is expected, and values
+ * outside what its header allows.
  *
- * The rule (docs/api.md, "Errors"): a function that returns an rt_status
- * answers such a call with RT_ERR_ARGUMENT (RT_ERR_FORMAT for an image
- * format that names none, as its header says), fills the rt_error with a
- * non-empty message, and accepts a NULL rt_error too; a function that
- * returns a value treats an index or pointer outside its domain as a
- * programmer's error: an assert stops a debug build, and where NDEBUG
- * compiles asserts out it returns a zero value instead of reading out of
- * bounds.  The tables below list every RT_API function of
- * include/raytrace/ (rt_resolve_in_folder is declared there but not yet
- * defined, so it cannot be called).
- *
- * One program, three ctest entries: without arguments the statuses
- * (test_api_edges, run by the sanitizer pass like every suite); with
- * `asserts`, each accessor's bad call in a child that must die of SIGABRT
- * naming the function (test_api_edges_asserts, skipped with 77 where
- * NDEBUG is defined: a Release build); with `fallbacks`, the zero values
- * those calls return where NDEBUG is defined (test_api_edges_fallbacks,
- * skipped with 77 in a debug build, where the calls abort).
+ * The rule (docs/api.md, "Arguments at the edges"): such a call answers
+ * RT_ERR_ARGUMENT (RT_ERR_FORMAT for an image format that names none, as
+ * its header says), fills the rt_error with a non-empty message that names
+ * the field, and accepts a NULL rt_error too.  The tables below list every
+ * RT_API function of include/raytrace/ that returns a status
+ * (rt_resolve_in_folder is declared there but not yet defined, so it
+ * cannot be called), and the NULL no-ops of those that return none; the
+ * accessors' asserts are test_api_accessors.c's.  It runs in the sanitizer
+ * pass like every suite.
  */
 #include <check.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "testutil.h"
 
@@ -586,191 +574,13 @@ START_TEST(functions_without_a_status_take_null_as_their_headers_say)
 END_TEST
 
 /* ------------------------------------------------------------------ */
-/* Accessors: asserted (debug) or a zero value (NDEBUG)                 */
-
-/* A bad call of a function that returns a value; `zero` says whether what
- * it returned is the documented zero value (used where NDEBUG is defined;
- * a debug build must abort inside the call). */
-typedef struct accessor_case {
-    const char *function;   /* the name the assert message gives */
-    const char *call;
-    int (*zero)(void);
-} accessor_case;
-
-static rt_facet_info filled_facet(void)
-{
-    rt_facet_info f;
-    memset(&f, 0x7f, sizeof f);
-    return f;
-}
-
-static int is_zero(const void *data, size_t size)
-{
-    const unsigned char *b = data;
-    for (size_t i = 0; i < size; i++)
-        if (b[i] != 0)
-            return 0;
-    return 1;
-}
-
-static const rt_ray some_ray = {{0, 0, -5}, {0, 0, 1}};
-
-#define ACCESSOR(name, function, expression)                                 \
-    static int name(void) { return (expression); }
-#define ACCESSOR_ROW(name, function, expression) {function, #expression, name},
-
-static int vertex_is_zero(int i)
-{
-    rt_vec3 v = rt_scene_vertex(scene, i);
-    return v.x == 0 && v.y == 0 && v.z == 0;
-}
-
-static int facet_is_zero(int i)
-{
-    rt_facet_info f = filled_facet();
-    rt_scene_facet(scene, i, &f);
-    return is_zero(&f, sizeof f);
-}
-
-static int light_is_zero(int i)
-{
-    rt_light l;
-    memset(&l, 0x7f, sizeof l);
-    rt_scene_light(scene, i, &l);
-    return is_zero(&l, sizeof l);
-}
-
-static int info_is_zero(void)
-{
-    rt_scene_info info;
-    memset(&info, 0x7f, sizeof info);
-    rt_scene_get_info(NULL, &info);
-    return is_zero(&info, sizeof info);
-}
-
-static int camera_ray_is_zero(void)
-{
-    rt_ray r = rt_camera_ray(NULL, 0, 0);
-    return is_zero(&r, sizeof r);
-}
-
-static int trace_is_zero(void)
-{
-    rt_color c = rt_trace(NULL, some_ray, 1);
-    return c.r == 0 && c.g == 0 && c.b == 0;
-}
-
-static int tree_nodes_are_none(void)
-{
-    size_t count = 7;
-    return rt_ray_tree_nodes(NULL, &count) == NULL && count == 0;
-}
-
-static int tree_value_is_zero(void)
-{
-    rt_color c = rt_ray_tree_value(NULL);
-    return c.r == 0 && c.g == 0 && c.b == 0;
-}
-
-#define ACCESSOR_CASES(X)                                                    \
-    X(a1, "rt_scene_vertex", vertex_is_zero(-1))                             \
-    X(a2, "rt_scene_vertex", vertex_is_zero(3))                              \
-    X(a3, "rt_scene_vertex", (rt_scene_vertex(NULL, 0).x == 0))              \
-    X(a4, "rt_scene_facet", facet_is_zero(-1))                               \
-    X(a5, "rt_scene_facet", facet_is_zero(1))                                \
-    X(a6, "rt_scene_facet", (rt_scene_facet(scene, 0, NULL), 1))             \
-    X(a7, "rt_scene_light", light_is_zero(-1))                               \
-    X(a8, "rt_scene_light", light_is_zero(1))                                \
-    X(a9, "rt_scene_light", (rt_scene_light(scene, 0, NULL), 1))             \
-    X(a10, "rt_scene_warning", rt_scene_warning(scene, -1) == NULL)          \
-    X(a11, "rt_scene_warning", rt_scene_warning(scene, 0) == NULL)           \
-    X(a12, "rt_scene_source_at", rt_scene_source_at(scene, -1) == NULL)      \
-    X(a13, "rt_scene_source_at", rt_scene_source_at(scene, 0) == NULL)       \
-    X(a14, "rt_scene_get_info", info_is_zero())                              \
-    X(a15, "rt_scene_get_info", (rt_scene_get_info(scene, NULL), 1))         \
-    X(a16, "rt_scene_nearest_hit",                                           \
-      rt_scene_nearest_hit(NULL, some_ray, 10, &(rt_hit){0}) == 0)           \
-    X(a17, "rt_scene_nearest_hit",                                           \
-      rt_scene_nearest_hit(scene, some_ray, 10, NULL) == 0)                  \
-    X(a18, "rt_scene_occluded",                                              \
-      rt_scene_occluded(NULL, some_ray.origin, some_ray.direction, -1) == 0) \
-    X(a19, "rt_camera_ray", camera_ray_is_zero())                            \
-    X(a20, "rt_trace", trace_is_zero())                                      \
-    X(a21, "rt_ray_tree_nodes", tree_nodes_are_none())                       \
-    X(a22, "rt_ray_tree_value", tree_value_is_zero())                        \
-    X(a23, "rt_ray_tree_truncated", rt_ray_tree_truncated(NULL) == 0)
-
-ACCESSOR_CASES(ACCESSOR)
-
-static const accessor_case accessor_cases[] = {ACCESSOR_CASES(ACCESSOR_ROW)};
-#define ACCESSOR_COUNT (sizeof accessor_cases / sizeof accessor_cases[0])
-
-/* Makes the bad call in a child with its standard error in a pipe:
- * returns the wait status and what the child wrote. */
-static int call_in_child(const accessor_case *c, char *said, size_t size)
-{
-    int fds[2];
-    ck_assert_int_eq(pipe(fds), 0);
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        close(fds[0]);
-        dup2(fds[1], 2);
-        signal(SIGABRT, SIG_DFL);
-        (void)c->zero();
-        _exit(0);
-    }
-    close(fds[1]);
-    size_t used = 0;
-    ssize_t n;
-    while (used + 1 < size && (n = read(fds[0], said + used,
-                                        size - used - 1)) > 0)
-        used += (size_t)n;
-    said[used] = '\0';
-    close(fds[0]);
-    int status;
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    return status;
-}
-
-START_TEST(each_accessor_asserts_its_index_and_pointers)
-{
-    for (size_t i = 0; i < ACCESSOR_COUNT; i++) {
-        const accessor_case *c = &accessor_cases[i];
-        char said[4096];
-        int status = call_in_child(c, said, sizeof said);
-        ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == SIGABRT,
-                      "%s did not abort (wait status %d)", c->call, status);
-        ck_assert_msg(strstr(said, c->function) != NULL,
-                      "%s aborted without naming %s: %s", c->call,
-                      c->function, said);
-    }
-}
-END_TEST
-
-START_TEST(each_accessor_returns_a_zero_value_where_asserts_are_compiled_out)
-{
-    for (size_t i = 0; i < ACCESSOR_COUNT; i++)
-        ck_assert_msg(accessor_cases[i].zero(), "%s returned something else "
-                      "than its zero value", accessor_cases[i].call);
-}
-END_TEST
-
-/* ------------------------------------------------------------------ */
-
-static TCase *with_fixture(const char *name)
-{
-    TCase *tc = tcase_create(name);
-    tcase_add_checked_fixture(tc, setup, teardown);
-    tcase_set_timeout(tc, 60);
-    return tc;
-}
 
 static Suite *edges_suite(void)
 {
     Suite *s = suite_create("api_edges");
-    TCase *tc = with_fixture("statuses");
+    TCase *tc = tcase_create("statuses");
+    tcase_add_checked_fixture(tc, setup, teardown);
+    tcase_set_timeout(tc, 60);
     tcase_add_test(tc, every_status_function_refuses_null_with_argument_and_a_message);
     tcase_add_test(tc, out_of_range_values_are_refused_with_their_status_and_a_message);
     tcase_add_test(tc, every_function_taking_render_options_refuses_each_bad_field);
@@ -781,42 +591,4 @@ static Suite *edges_suite(void)
     return s;
 }
 
-static Suite *accessor_suite(int asserts)
-{
-    Suite *s = suite_create(asserts ? "api_edges_asserts"
-                                    : "api_edges_fallbacks");
-    TCase *tc = with_fixture("accessors");
-    if (asserts)
-        tcase_add_test(tc, each_accessor_asserts_its_index_and_pointers);
-    else
-        tcase_add_test(tc, each_accessor_returns_a_zero_value_where_asserts_are_compiled_out);
-    suite_add_tcase(s, tc);
-    return s;
-}
-
-int main(int argc, char **argv)
-{
-#ifdef NDEBUG
-    int asserts_on = 0;
-#else
-    int asserts_on = 1;
-#endif
-    if (argc > 1 && strcmp(argv[1], "asserts") == 0) {
-        if (!asserts_on) {
-            printf("skipped: NDEBUG is defined (a release build), so the "
-                   "accessors' asserts are compiled out; "
-                   "test_api_edges_fallbacks checks their zero values\n");
-            return RT_TEST_SKIPPED;
-        }
-        return rt_test_run_suite(accessor_suite(1));
-    }
-    if (argc > 1 && strcmp(argv[1], "fallbacks") == 0) {
-        if (asserts_on) {
-            printf("skipped: a debug build, where the bad calls abort "
-                   "(test_api_edges_asserts checks that)\n");
-            return RT_TEST_SKIPPED;
-        }
-        return rt_test_run_suite(accessor_suite(0));
-    }
-    return rt_test_run_suite(edges_suite());
-}
+RT_CHECK_MAIN(edges_suite)

@@ -184,26 +184,7 @@ static void assert_link(const char *path, const char *target)
 /* ------------------------------------------------------------------ */
 /* Images and their bytes                                               */
 
-typedef struct bytes {
-    unsigned char *data;
-    size_t size, capacity;
-} bytes;
-
-static int bytes_add(void *user, const void *data, size_t size)
-{
-    bytes *b = user;
-    if (b->size + size > b->capacity) {
-        size_t capacity = 2 * (b->size + size) + 256;
-        unsigned char *grown = realloc(b->data, capacity);
-        if (grown == NULL)
-            return 0;
-        b->data = grown;
-        b->capacity = capacity;
-    }
-    memcpy(b->data + b->size, data, size);
-    b->size += size;
-    return 1;
-}
+typedef rt_test_bytes bytes;
 
 static int count_bytes(void *user, const void *data, size_t size)
 {
@@ -237,7 +218,8 @@ static bytes encode(const rt_image *image, rt_image_format format)
 {
     bytes b = {NULL, 0, 0};
     rt_error error = {0};
-    rt_status status = rt_image_write_to(bytes_add, &b, image, format, &error);
+    rt_status status = rt_image_write_to(rt_test_bytes_add, &b, image,
+                                         format, &error);
     ck_assert_msg(status == RT_OK, "rt_image_write_to: %s", error.message);
     return b;
 }
@@ -1091,7 +1073,7 @@ START_TEST(png_decodes_back_to_every_byte_of_the_image)
                       "the refusal does not mention libpng: %s",
                       error.message);
         bytes b = {NULL, 0, 0};
-        ck_assert_int_eq(rt_image_write_to(bytes_add, &b, &image,
+        ck_assert_int_eq(rt_image_write_to(rt_test_bytes_add, &b, &image,
                                            RT_IMAGE_PNG, NULL),
                          RT_ERR_FORMAT);
         ck_assert_uint_eq(b.size, 0);
@@ -1363,8 +1345,8 @@ static int save_to_dev_stdout(void *arg, char *note, size_t size)
     if (make_pattern(&image, 200, 150) != RT_OK)
         return say(1, note, size, "no memory for the image");
     bytes expected = {NULL, 0, 0};
-    rt_status status = rt_image_write_to(bytes_add, &expected, &image,
-                                         RT_IMAGE_P6, NULL);
+    rt_status status = rt_image_write_to(rt_test_bytes_add, &expected,
+                                         &image, RT_IMAGE_P6, NULL);
     int fds[2];
     if (status != RT_OK || pipe(fds) != 0 || dup2(fds[1], 1) != 1)
         return say(1, note, size, "cannot set up the pipe");

@@ -22,8 +22,6 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <ftw.h>
-#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,94 +30,57 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "testutil.h"
+#include "hostile_util.h"
 
 /* ------------------------------------------------------------------ */
-/* Folders, files and bytes                                             */
+/* Names, files and bytes                                               */
 
-typedef struct path_t {
-    char s[PATH_MAX];
-} path_t;
-
-static path_t at(const char *dir, const char *name)
-{
-    path_t p;
-    int n = snprintf(p.s, sizeof p.s, "%s/%s", dir, name);
-    ck_assert(n > 0 && (size_t)n < sizeof p.s);
-    return p;
-}
+typedef rt_test_bytes bytes;
 
 /* "/dev/fd/N" and the like, for descriptor `fd`. */
-static path_t fd_name(const char *format, int fd)
+typedef struct fd_path {
+    char s[96];
+} fd_path;
+
+static fd_path fd_name(const char *format, int fd)
 {
-    path_t p;
+    fd_path p;
     snprintf(p.s, sizeof p.s, format, fd);
     return p;
 }
 
-static path_t scratch(void)
+/* A scratch folder (hostile_util's) and the names made in it, freed with
+ * it. */
+typedef struct folder {
+    char *dir;
+    char *names[4];
+    int count;
+} folder;
+
+static folder new_folder(void)
 {
-    const char *base = getenv("TMPDIR");
-    path_t p = at(base && *base ? base : "/tmp", "rt-test-streams-XXXXXX");
-    ck_assert_msg(mkdtemp(p.s) != NULL, "mkdtemp: %s", strerror(errno));
-    return p;
+    return (folder){make_temp_dir(), {NULL}, 0};
 }
 
-static int remove_entry(const char *path, const struct stat *st, int type,
-                        struct FTW *walk)
+static const char *in(folder *f, const char *name)
 {
-    (void)st, (void)type, (void)walk;
-    remove(path);
-    return 0;
+    ck_assert_int_lt(f->count, 4);
+    return f->names[f->count++] = join(f->dir, name);
 }
 
-static void remove_tree(const path_t *dir)
+static void folder_remove(folder *f)
 {
-    nftw(dir->s, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
-}
-
-typedef struct bytes {
-    unsigned char *data;
-    size_t size, capacity;
-} bytes;
-
-static int bytes_add(void *user, const void *data, size_t size)
-{
-    bytes *b = user;
-    if (b->size + size > b->capacity) {
-        size_t capacity = 2 * (b->size + size) + 256;
-        unsigned char *grown = realloc(b->data, capacity);
-        if (grown == NULL)
-            return 0;
-        b->data = grown;
-        b->capacity = capacity;
-    }
-    memcpy(b->data + b->size, data, size);
-    b->size += size;
-    return 1;
-}
-
-/* A width x height image whose bytes take many values. */
-static rt_image pattern(int width, int height)
-{
-    rt_image image;
-    ck_assert_int_eq(rt_image_init(&image, width, height, NULL), RT_OK);
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++) {
-            unsigned char *p = rt_image_pixel(&image, x, y);
-            p[0] = (unsigned char)(x * 37 + y * 11);
-            p[1] = (unsigned char)(x * y);
-            p[2] = (unsigned char)(255 - x - y);
-        }
-    return image;
+    for (int i = 0; i < f->count; i++)
+        free(f->names[i]);
+    remove_dir(f->dir);
 }
 
 /* The P6 bytes of `image`. */
 static bytes encode(const rt_image *image)
 {
     bytes b = {NULL, 0, 0};
-    ck_assert_int_eq(rt_image_write_to(bytes_add, &b, image, RT_IMAGE_P6,
-                                       NULL), RT_OK);
+    ck_assert_int_eq(rt_image_write_to(rt_test_bytes_add, &b, image,
+                                       RT_IMAGE_P6, NULL), RT_OK);
     return b;
 }
 
@@ -168,38 +129,6 @@ static void save_ok(const char *path, const rt_image *image)
 /* ------------------------------------------------------------------ */
 /* Children                                                             */
 
-typedef int (*job_fn)(const void *arg, char *note, size_t size);
-
-/* Runs `job` in a child; returns its exit code (128 + a signal) and its
- * note. */
-static int run_child(job_fn job, const void *arg, char *note, size_t size)
-{
-    int fds[2];
-    ck_assert_int_eq(pipe(fds), 0);
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        close(fds[0]);
-        char text[1024] = "";
-        int code = job(arg, text, sizeof text);
-        if (write(fds[1], text, strlen(text)) < 0)
-            code = 99;
-        _exit(code);
-    }
-    close(fds[1]);
-    size_t used = 0;
-    ssize_t n;
-    while (used + 1 < size &&
-           (n = read(fds[0], note + used, size - used - 1)) > 0)
-        used += (size_t)n;
-    note[used] = '\0';
-    close(fds[0]);
-    int status;
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
-}
-
 /* A reader of the pipe `fds`, copying it into the file `to` until the
  * writers are gone. */
 static pid_t start_reader(const int fds[2], const char *to)
@@ -233,41 +162,40 @@ static void assert_reader_done(pid_t reader)
 /* ------------------------------------------------------------------ */
 /* The library: descriptors other than 0, 1 and 2                       */
 
-START_TEST(dev_fd_to_a_pipe_carries_the_image_to_its_reader)
+/* Saves an image larger than a pipe holds to /dev/fd/N, N the write end
+ * of a pipe (made non-blocking and small when `non_blocking`) whose reader
+ * must receive exactly its bytes. */
+static void through_a_pipe(int non_blocking)
 {
-    path_t dir = scratch(), got = at(dir.s, "received");
-    rt_image image = pattern(200, 150);     /* more than a pipe holds */
+    folder dir = new_folder();
+    const char *got = in(&dir, "received");
+    rt_image image = make_image(200, 150);
     bytes expected = encode(&image);
     int fds[2];
     ck_assert_int_eq(pipe(fds), 0);
-    pid_t reader = start_reader(fds, got.s);
+    if (non_blocking) {
+        (void)fcntl(fds[1], F_SETPIPE_SZ, 4096);  /* full at once */
+        ck_assert_int_eq(fcntl(fds[1], F_SETFL, O_NONBLOCK), 0);
+    }
+    pid_t reader = start_reader(fds, got);
     save_ok(fd_name("/dev/fd/%d", fds[1]).s, &image);
     close(fds[1]);
     assert_reader_done(reader);
-    assert_holds(got.s, "", &expected, "");
+    assert_holds(got, "", &expected, "");
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
+}
+
+START_TEST(dev_fd_to_a_pipe_carries_the_image_to_its_reader)
+{
+    through_a_pipe(0);
 }
 END_TEST
 
 START_TEST(a_non_blocking_pipe_is_waited_for_not_refused)
 {
-    path_t dir = scratch(), got = at(dir.s, "received");
-    rt_image image = pattern(200, 150);
-    bytes expected = encode(&image);
-    int fds[2];
-    ck_assert_int_eq(pipe(fds), 0);
-    (void)fcntl(fds[1], F_SETPIPE_SZ, 4096);  /* full at once */
-    ck_assert_int_eq(fcntl(fds[1], F_SETFL, O_NONBLOCK), 0);
-    pid_t reader = start_reader(fds, got.s);
-    save_ok(fd_name("/dev/fd/%d", fds[1]).s, &image);
-    close(fds[1]);
-    assert_reader_done(reader);
-    assert_holds(got.s, "", &expected, "");
-    rt_image_release(&image);
-    free(expected.data);
-    remove_tree(&dir);
+    through_a_pipe(1);
 }
 END_TEST
 
@@ -276,23 +204,24 @@ END_TEST
  * descriptor: the file must hold all three, and be the same file. */
 static void append_through(const char *format)
 {
-    path_t dir = scratch(), file = at(dir.s, "log");
-    rt_test_write_file(file.s, "HEADER\n");
-    ino_t before = inode_of(file.s);
-    int fd = open(file.s, O_WRONLY | O_APPEND);
+    folder dir = new_folder();
+    const char *file = in(&dir, "log");
+    rt_test_write_file(file, "HEADER\n");
+    ino_t before = inode_of(file);
+    int fd = open(file, O_WRONLY | O_APPEND);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 0, SEEK_SET), 0);  /* appending ignores it */
-    rt_image image = pattern(7, 5);
+    rt_image image = make_image(7, 5);
     bytes expected = encode(&image);
-    path_t name = fd_name(format, fd);
+    fd_path name = fd_name(format, fd);
     save_ok(name.s, &image);
     write_text_fd(fd, "TRAILER\n");
     close(fd);
-    assert_holds(file.s, "HEADER\n", &expected, "TRAILER\n");
-    ck_assert_msg(inode_of(file.s) == before, "%s replaced the file", name.s);
+    assert_holds(file, "HEADER\n", &expected, "TRAILER\n");
+    ck_assert_msg(inode_of(file) == before, "%s replaced the file", name.s);
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 
 START_TEST(dev_fd_to_a_file_opened_for_appending_keeps_before_and_after)
@@ -317,46 +246,48 @@ END_TEST
 
 START_TEST(dev_fd_to_a_positioned_file_writes_at_its_offset_truncating_nothing)
 {
-    path_t dir = scratch(), file = at(dir.s, "image.bin");
+    folder dir = new_folder();
+    const char *file = in(&dir, "image.bin");
     char old[301];
     memset(old, 'x', 300);
     old[300] = '\0';
-    rt_test_write_file(file.s, old);
-    int fd = open(file.s, O_RDWR);
+    rt_test_write_file(file, old);
+    int fd = open(file, O_RDWR);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 7, SEEK_SET), 7);
-    rt_image image = pattern(6, 4);         /* 83 bytes, inside the 300 */
+    rt_image image = make_image(6, 4);         /* 83 bytes, inside the 300 */
     bytes expected = encode(&image);
     save_ok(fd_name("/dev/fd/%d", fd).s, &image);
     ck_assert_int_eq(lseek(fd, 0, SEEK_CUR), 7 + (off_t)expected.size);
     close(fd);
-    assert_holds(file.s, "xxxxxxx", &expected, old + 7 + expected.size);
+    assert_holds(file, "xxxxxxx", &expected, old + 7 + expected.size);
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 END_TEST
 
 START_TEST(a_link_to_dev_fd_writes_through_the_descriptor_and_stays_a_link)
 {
-    path_t dir = scratch(), file = at(dir.s, "log"),
-           link = at(dir.s, "out.ppm");
-    rt_test_write_file(file.s, "HEADER\n");
-    int fd = open(file.s, O_WRONLY | O_APPEND);
+    folder dir = new_folder();
+    const char *file = in(&dir, "log"),
+               *link = in(&dir, "out.ppm");
+    rt_test_write_file(file, "HEADER\n");
+    int fd = open(file, O_WRONLY | O_APPEND);
     ck_assert_int_ge(fd, 0);
-    path_t name = fd_name("/dev/fd/%d", fd);
-    ck_assert_int_eq(symlink(name.s, link.s), 0);
-    rt_image image = pattern(5, 3);
+    fd_path name = fd_name("/dev/fd/%d", fd);
+    ck_assert_int_eq(symlink(name.s, link), 0);
+    rt_image image = make_image(5, 3);
     bytes expected = encode(&image);
-    save_ok(link.s, &image);
+    save_ok(link, &image);
     close(fd);
-    assert_holds(file.s, "HEADER\n", &expected, "");
+    assert_holds(file, "HEADER\n", &expected, "");
     struct stat st;
-    ck_assert_int_eq(lstat(link.s, &st), 0);
+    ck_assert_int_eq(lstat(link, &st), 0);
     ck_assert_msg(S_ISLNK(st.st_mode), "the link was replaced");
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 END_TEST
 
@@ -368,21 +299,22 @@ START_TEST(a_scene_saved_to_dev_fd_goes_through_the_descriptor)
                                 &scene, &error) == RT_OK, "%s",
                   error.message);
     bytes expected = {NULL, 0, 0};
-    ck_assert_int_eq(rt_scene_write_scn(scene, 0, bytes_add, &expected,
+    ck_assert_int_eq(rt_scene_write_scn(scene, 0, rt_test_bytes_add, &expected,
                                         NULL, NULL), RT_OK);
-    path_t dir = scratch(), file = at(dir.s, "scenes.txt");
-    rt_test_write_file(file.s, "# before\n");
-    int fd = open(file.s, O_WRONLY | O_APPEND);
+    folder dir = new_folder();
+    const char *file = in(&dir, "scenes.txt");
+    rt_test_write_file(file, "# before\n");
+    int fd = open(file, O_WRONLY | O_APPEND);
     ck_assert_int_ge(fd, 0);
     rt_status status = rt_scene_save_scn(scene, fd_name("/dev/fd/%d", fd).s,
                                          0, NULL, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     write_text_fd(fd, "# after\n");
     close(fd);
-    assert_holds(file.s, "# before\n", &expected, "# after\n");
+    assert_holds(file, "# before\n", &expected, "# after\n");
     free(expected.data);
     rt_scene_destroy(scene);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 END_TEST
 
@@ -390,7 +322,7 @@ END_TEST
  * names `path` and says `reason`. */
 static void assert_refused(const char *path, const char *reason)
 {
-    rt_image image = pattern(4, 4);
+    rt_image image = make_image(4, 4);
     rt_error saved = {0}, checked = {0};
     rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &saved);
     rt_status check = rt_image_save_check(path, &checked);
@@ -416,25 +348,27 @@ END_TEST
 
 START_TEST(a_descriptor_open_for_reading_is_refused_and_left_as_it_was)
 {
-    path_t dir = scratch(), file = at(dir.s, "kept");
-    rt_test_write_file(file.s, "kept as it was\n");
-    int fd = open(file.s, O_RDONLY);
+    folder dir = new_folder();
+    const char *file = in(&dir, "kept");
+    rt_test_write_file(file, "kept as it was\n");
+    int fd = open(file, O_RDONLY);
     ck_assert_int_ge(fd, 0);
     char reason[64];
     snprintf(reason, sizeof reason, "descriptor %d is open for reading only",
              fd);
     assert_refused(fd_name("/dev/fd/%d", fd).s, reason);
     close(fd);
-    assert_holds(file.s, "kept as it was\n", NULL, "");
-    remove_tree(&dir);
+    assert_holds(file, "kept as it was\n", NULL, "");
+    folder_remove(&dir);
 }
 END_TEST
 
 START_TEST(the_check_accepts_an_open_descriptor_and_moves_nothing)
 {
-    path_t dir = scratch(), file = at(dir.s, "log");
-    rt_test_write_file(file.s, "HEADER\n");
-    int fd = open(file.s, O_RDWR);
+    folder dir = new_folder();
+    const char *file = in(&dir, "log");
+    rt_test_write_file(file, "HEADER\n");
+    int fd = open(file, O_RDWR);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 3, SEEK_SET), 3);
     rt_error error = {0};
@@ -442,8 +376,8 @@ START_TEST(the_check_accepts_an_open_descriptor_and_moves_nothing)
                   RT_OK, "%s", error.message);
     ck_assert_int_eq(lseek(fd, 0, SEEK_CUR), 3);
     close(fd);
-    assert_holds(file.s, "HEADER\n", NULL, "");
-    remove_tree(&dir);
+    assert_holds(file, "HEADER\n", NULL, "");
+    folder_remove(&dir);
 }
 END_TEST
 
@@ -458,9 +392,10 @@ static void hold_open_until_closed(int wait_fd)
 
 START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
 {
-    path_t dir = scratch(), file = at(dir.s, "theirs");
-    rt_test_write_file(file.s, "an old content longer than nothing\n");
-    int fd = open(file.s, O_WRONLY | O_APPEND);
+    folder dir = new_folder();
+    const char *file = in(&dir, "theirs");
+    rt_test_write_file(file, "an old content longer than nothing\n");
+    int fd = open(file, O_WRONLY | O_APPEND);
     int wait_fds[2];
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(pipe(wait_fds), 0);
@@ -475,7 +410,7 @@ START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
     close(fd);              /* only the holder has it now */
     char name[64];
     snprintf(name, sizeof name, "/proc/%ld/fd/%d", (long)holder, fd);
-    rt_image image = pattern(5, 5);
+    rt_image image = make_image(5, 5);
     bytes expected = encode(&image);
     rt_error error = {0};
     rt_status status = rt_image_save(name, &image, RT_IMAGE_P6, &error);
@@ -483,10 +418,10 @@ START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
     int wait_status;
     ck_assert_int_eq(waitpid(holder, &wait_status, 0), holder);
     ck_assert_msg(status == RT_OK, "%s: %s", name, error.message);
-    assert_holds(file.s, "", &expected, "");
+    assert_holds(file, "", &expected, "");
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 END_TEST
 
@@ -502,7 +437,7 @@ typedef struct standard_case {
     const char *then;       /* and after */
 } standard_case;
 
-static int save_to_standard(const void *arg, char *note, size_t size)
+static int save_to_standard(void *arg, char *note, size_t size)
 {
     const standard_case *c = arg;
     int fd = open(c->file, O_WRONLY | c->flags);
@@ -531,11 +466,12 @@ static int save_to_standard(const void *arg, char *note, size_t size)
 static void standard_case_run(standard_case c, const char *old,
                               const char *kept)
 {
-    path_t dir = scratch(), file = at(dir.s, "out");
-    rt_test_write_file(file.s, old);
-    c.file = file.s;
+    folder dir = new_folder();
+    const char *file = in(&dir, "out");
+    rt_test_write_file(file, old);
+    c.file = file;
     char note[1024];
-    int code = run_child(save_to_standard, &c, note, sizeof note);
+    int code = run_in_child(save_to_standard, &c, note, sizeof note);
     ck_assert_msg(code == 0, "%s", note);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 9, 7, NULL), RT_OK);
@@ -543,10 +479,10 @@ static void standard_case_run(standard_case c, const char *old,
     bytes expected = encode(&image);
     char before[256];
     snprintf(before, sizeof before, "%s%s", kept, c.first);
-    assert_holds(file.s, before, &expected, c.then);
+    assert_holds(file, before, &expected, c.then);
     rt_image_release(&image);
     free(expected.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 
 START_TEST(dev_stdout_appended_to_a_log_keeps_the_log)
@@ -595,21 +531,21 @@ static const char *bash_path(void)
 /* Runs `script` in bash in `dir` with $1 rt-export and $2 a scene, after
  * rendering $1's image to reference.ppm the plain way; fails the test
  * unless it exits 0.  Returns the reference image. */
-static bytes run_shell(const path_t *dir, const char *script)
+static bytes run_shell(folder *dir, const char *script)
 {
     char whole[4096];
     snprintf(whole, sizeof whole,
              "set -e; " RENDER " -o reference.ppm >/dev/null; %s", script);
-    path_t err = at(dir->s, "..err"), out = at(dir->s, "..out");
+    const char *err = in(dir, "..err"), *out = in(dir, "..out");
     fflush(NULL);
     pid_t pid = fork();
     ck_assert_int_ge(pid, 0);
     if (pid == 0) {
-        int e = open(err.s, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int o = open(out.s, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int in = open("/dev/null", O_RDONLY);
-        if (e < 0 || o < 0 || in < 0 || chdir(dir->s) != 0 ||
-            dup2(e, 2) != 2 || dup2(o, 1) != 1 || dup2(in, 0) != 0)
+        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        int o = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        int none = open("/dev/null", O_RDONLY);
+        if (e < 0 || o < 0 || none < 0 || chdir(dir->dir) != 0 ||
+            dup2(e, 2) != 2 || dup2(o, 1) != 1 || dup2(none, 0) != 0)
             _exit(126);
         signal(SIGPIPE, SIG_DFL);
         execl(bash_path(), "bash", "-c", whole, "bash", RT_EXPORT_PATH,
@@ -618,15 +554,15 @@ static bytes run_shell(const path_t *dir, const char *script)
     }
     int status;
     ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    char *text = rt_test_read_file(err.s, NULL);
+    char *text = rt_test_read_file(err, NULL);
     ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0,
                   "bash -c '%s' failed: %s", script, text ? text : "");
     free(text);
-    unlink(err.s);
-    unlink(out.s);
-    path_t reference = at(dir->s, "reference.ppm");
+    unlink(err);
+    unlink(out);
+    const char *reference = in(dir, "reference.ppm");
     size_t size;
-    char *data = rt_test_read_file(reference.s, &size);
+    char *data = rt_test_read_file(reference, &size);
     ck_assert_ptr_nonnull(data);
     ck_assert_uint_gt(size, 65536);
     return (bytes){(unsigned char *)data, size, size};
@@ -637,11 +573,12 @@ static bytes run_shell(const path_t *dir, const char *script)
 static void shell_case(const char *script, const char *file,
                        const char *before, const char *after)
 {
-    path_t dir = scratch(), path = at(dir.s, file);
+    folder dir = new_folder();
+    const char *path = in(&dir, file);
     bytes reference = run_shell(&dir, script);
-    assert_holds(path.s, before, &reference, after);
+    assert_holds(path, before, &reference, after);
     free(reference.data);
-    remove_tree(&dir);
+    folder_remove(&dir);
 }
 
 START_TEST(rt_export_into_a_process_substitution_delivers_the_image)

@@ -107,6 +107,22 @@ long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff)
     return count;
 }
 
+int rt_test_bytes_add(void *user, const void *data, size_t size)
+{
+    rt_test_bytes *b = user;
+    if (b->size + size > b->capacity) {
+        size_t capacity = 2 * (b->size + size) + 256;
+        unsigned char *grown = realloc(b->data, capacity);
+        if (grown == NULL)
+            return 0;
+        b->data = grown;
+        b->capacity = capacity;
+    }
+    memcpy(b->data + b->size, data, size);
+    b->size += size;
+    return 1;
+}
+
 char *rt_test_read_file(const char *path, size_t *size)
 {
     FILE *file = fopen(path, "rb");

@@ -53,6 +53,14 @@ rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads);
  * largest channel difference (through *max_diff when not NULL). */
 long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff);
 
+/* A growing buffer of bytes and the rt_write_func that appends to it
+ * (`user`: the rt_test_bytes, zeroed to start); free `data` when done. */
+typedef struct rt_test_bytes {
+    unsigned char *data;
+    size_t size, capacity;
+} rt_test_bytes;
+int rt_test_bytes_add(void *user, const void *data, size_t size);
+
 /* The whole file at `path`, malloc'd and NUL-terminated (the NUL not
  * counted), its length through *size when not NULL; NULL when it cannot
  * be opened.  Fails the test when out of memory. */

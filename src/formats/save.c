@@ -622,7 +622,30 @@ static int connect_socket(const char *path)
     return fd;
 }
 
-/* A device, FIFO, socket or open descriptor: written as a stream. */
+/* Writes the bytes to descriptor `fd` as a stream, closing it when `owned`
+ * (a descriptor of the caller's stays open). */
+static rt_status stream_to(int fd, int owned, const char *path,
+                           const rt_producer *producer, rt_error *error)
+{
+    fd_sink *s = malloc(sizeof *s);
+    if (s == NULL) {
+        if (owned)
+            close(fd);
+        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                             "out of memory");
+    }
+    *s = (fd_sink){.fd = fd};
+    rt_status status = encode(s, producer, error);
+    if (owned && close(fd) != 0 && status == RT_OK)
+        status = RT_ERR_IO, s->error = errno;
+    if (status != RT_OK)
+        status = sink_error(s, status, path, error);
+    free(s);
+    return status;
+}
+
+/* A device, FIFO, socket or another process's descriptor: opened and
+ * written as a stream. */
 static rt_status save_to_stream(const char *path, const destination *d,
                                 const rt_producer *producer, rt_error *error)
 {
@@ -635,40 +658,7 @@ static rt_status save_to_stream(const char *path, const destination *d,
                                      (truncate ? O_TRUNC : 0));
     if (fd < 0)
         return io_error(error, path, errno, "cannot open for writing");
-    fd_sink *s = malloc(sizeof *s);
-    if (s == NULL) {
-        close(fd);
-        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                             "out of memory");
-    }
-    *s = (fd_sink){.fd = fd};
-    rt_status status = encode(s, producer, error);
-    if (close(fd) != 0 && status == RT_OK)
-        status = RT_ERR_IO, s->error = errno;
-    if (status != RT_OK)
-        status = sink_error(s, status, path, error);
-    free(s);
-    return status;
-}
-
-/* A descriptor of this process: written through it, at its offset (or at
- * the end when it was opened for appending), and left open; nothing is
- * truncated or replaced, so what the caller wrote before and writes after
- * stays around the bytes. */
-static rt_status save_to_descriptor(const char *path, const destination *d,
-                                    const rt_producer *producer,
-                                    rt_error *error)
-{
-    fd_sink *s = malloc(sizeof *s);
-    if (s == NULL)
-        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                             "out of memory");
-    *s = (fd_sink){.fd = d->fd};
-    rt_status status = encode(s, producer, error);
-    if (status != RT_OK)
-        status = sink_error(s, status, path, error);
-    free(s);
-    return status;
+    return stream_to(fd, 1, path, producer, error);
 }
 
 static int valid_image(const rt_image *image)
@@ -685,8 +675,12 @@ rt_status rt__save(const char *path, const rt_producer *producer,
                              "expected a path");
     destination d;
     rt_status status = resolve(path, &d, error);
+    /* A descriptor of this process: written through it, at its offset (at
+     * the end when it appends), and left open; nothing is truncated or
+     * replaced, so what the caller wrote before and writes after stays
+     * around the bytes. */
     if (status == RT_OK && d.kind == KIND_DESCRIPTOR)
-        status = save_to_descriptor(path, &d, producer, error);
+        status = stream_to(d.fd, 0, path, producer, error);
     else if (status == RT_OK)
         status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
                      ? save_to_stream(path, &d, producer, error)
