@@ -6,7 +6,7 @@ Usage:
 
 Writes a scene: a square ground of half-size RATIO * 1.7 made of two
 facets, an eye 1.7 above its centre looking along it (so the horizon falls
-between the two middle rows of a 64 x 64 image), a light 1e30 away along
+between the two middle rows of a 32 x 32 image), a light 1e30 away along
 the ground's normal; ORIENTATION `flat` puts the ground on z = 0,
 `tilted` turns the whole scene by two rotations with rational sines (3/5,
 4/5 about x, then 5/13, 12/13 about z), so that no coordinate is round.
@@ -28,7 +28,7 @@ import struct
 import sys
 from fractions import Fraction as Q
 
-SIDE = 64
+SIDE = 32
 HEIGHT = 1.7
 GROUND = (200, 150, 100)
 SKY = (40, 80, 200)
