@@ -50,3 +50,9 @@ foreach(group
                          ENVIRONMENT RT_TEST_ACCEL=${accel})
   endforeach()
 endforeach()
+
+# A ground far wider than the eye is high, against exact images from
+# tests/reference/stiff_ground.py (python3; without it a visible skip).
+raytrace_add_suite(test_stiff_ground)
+set_tests_properties(test_stiff_ground PROPERTIES LABELS robustness
+                     SKIP_RETURN_CODE 77 TIMEOUT 600)

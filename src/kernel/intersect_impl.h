@@ -27,12 +27,17 @@ typedef struct ray {
     vec direction;
     int kx, ky, kz;
     REAL sx, sy, sz;
+    vec origin_bound;       /* zero for an origin given exactly (the eye);
+                               for a ray leaving a hit, the error bound of
+                               that hit point (shade_impl.h), which the
+                               offset origin inherits */
 } ray;
 
 static ray prepare(vec origin, vec direction)
 {
     ray r;
     r.origin = origin;
+    r.origin_bound = mk(0, 0, 0);
     r.direction = direction;
     vec d = vabs(direction);
     r.kz = d.x >= d.y ? (d.x >= d.z ? 0 : 2) : (d.y >= d.z ? 1 : 2);
@@ -47,6 +52,15 @@ static ray prepare(vec origin, vec direction)
     r.sx = get(direction, r.kx) / dz;
     r.sy = get(direction, r.ky) / dz;
     r.sz = 1 / dz;
+    return r;
+}
+
+/* A ray from the offset origin of a hit point whose error bound is
+ * `point_bound` (offset_origin in shade_impl.h). */
+static inline ray prepare_leaving(vec origin, vec direction, vec point_bound)
+{
+    ray r = prepare(origin, direction);
+    r.origin_bound = point_bound;
     return r;
 }
 
@@ -85,10 +99,55 @@ typedef struct hit {
     REAL t;
     REAL t_error;           /* bound on the rounding error of t */
     REAL point_error;       /* estimate of the error of the point the
-                               barycentric weights give, along the facet */
+                               barycentric weights give, along the facet;
+                               negative for a crossing (below): the hit
+                               point is then the ray's at t */
     REAL b0, b1, b2;        /* barycentric weights of a, b, c */
     int index;              /* into the kernel's tris */
 } hit;
+
+/*
+ * A hit whose t the watertight test cannot tell from 0 - the facet far
+ * larger than the ray's distance to its plane, so that t's sum of
+ * barycentric terms cancels (a ground of half-size 1e6 seen from 1.7
+ * above) - decided instead by where the ray's line crosses the facet's
+ * plane, computed to about 30 digits with a rigorous bound
+ * (plane_crossing.c): a hit when that t provably exceeds 0 and lies
+ * below t_max.  Not inlined: it is met on a tiny fraction of tests.
+ */
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+static int crossing(const tri *f, const ray *r, REAL t_max, hit *h)
+{
+    double a[3] = {f->a.x, f->a.y, f->a.z}, b[3] = {f->b.x, f->b.y, f->b.z},
+           c[3] = {f->c.x, f->c.y, f->c.z};
+    double o[3] = {r->origin.x, r->origin.y, r->origin.z},
+           d[3] = {r->direction.x, r->direction.y, r->direction.z};
+    /* How far the origin may lie from the point the ray really leaves:
+     * the hit point's bound, the offset (at most sqrt(3) times as much
+     * per component) and the two roundings of adding it; a facet whose
+     * plane passes within that distance is the ray's own surface or a
+     * neighbour through the same point, never a hit. */
+    double origin_error =
+        2 * (2.8 * (double)max3(r->origin_bound.x, r->origin_bound.y,
+                                r->origin_bound.z) +
+             2 * REAL_EPS * (double)max3(r->origin.x, r->origin.y,
+                                         r->origin.z));
+    double t, error;
+    if (!rt__plane_crossing(a, b, c, o, d, origin_error, &t, &error))
+        return 0;
+    REAL t_real = (REAL)t;
+    /* |exact - t_real| <= error + |t - t_real|, rounded up into REAL */
+    double bound = (error + fabs(t - (double)t_real)) * (1 + 4 * REAL_EPS);
+    REAL t_error = (REAL)bound;
+    if (!(t_real > t_error && t_real < t_max))
+        return 0;
+    h->t = t_real;
+    h->t_error = t_error;
+    h->point_error = -1;
+    return 1;
+}
 
 
 /*
@@ -111,6 +170,7 @@ typedef struct hit {
  * with u, v, w.
  */
 static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
+                                                     const tri *f,
                                                      const ray *r,
                                                      REAL t_max, hit *h)
 {
@@ -133,8 +193,11 @@ static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
     bz *= r->sz;
     cz *= r->sz;
     REAL t = b0 * az + b1 * bz + b2 * cz;
-    if (!(t > 0 && t < t_max))
-        return 0;   /* t_error >= 0 (or NaN): the test below fails too */
+    if (!(t < t_max))
+        return 0;   /* beyond the nearest so far (or NaN) */
+    if (!(t > 0) && !(az > 0 || bz > 0 || cz > 0))
+        return 0;   /* the facet wholly behind the origin (the signs of
+                       the scaled z are exact): the common case */
 
     REAL abs_det = fabs(det);
     REAL max_x = max3(ax, bx, cx), max_y = max3(ay, by, cy);
@@ -147,11 +210,16 @@ static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
     REAL edge_ratio = max3(u, v, w) / abs_det;  /* <= 1: all of one sign */
     REAL t_error = 4 * (gamma_bound(3) * edge_ratio * max_z +
                         edge_error * max_z + dz * edge_ratio);
-    if (!(t > t_error && t < t_max))
-        return 0;
-    h->t = t;
-    h->t_error = t_error;
-    h->point_error = edge_error * (max_x + max_y);
+    if (!(t > t_error)) {
+        /* t cannot be told from 0: provably behind the origin (or NaN),
+         * or decided by the crossing of the facet's plane */
+        if (!(t >= -t_error) || !crossing(f, r, t_max, h))
+            return 0;
+    } else {
+        h->t = t;
+        h->t_error = t_error;
+        h->point_error = edge_error * (max_x + max_y);
+    }
     h->b0 = b0;
     h->b1 = b1;
     h->b2 = b2;
@@ -176,7 +244,7 @@ static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
     s.u = s.cx * s.by - s.cy * s.bx;
     s.v = s.ax * s.cy - s.ay * s.cx;
     s.w = s.bx * s.ay - s.by * s.ax;
-    return intersect_sheared(&s, r, t_max, h);
+    return intersect_sheared(&s, f, r, t_max, h);
 }
 
 /*

@@ -32,6 +32,7 @@
 #include "kernel.h"
 
 #include "fast_inv_sqrt.h"
+#include "kernel/plane_crossing.h"
 #include "real_impl.h"
 
 /* A facet that can be hit, with what shading needs precomputed. */

@@ -316,7 +316,8 @@ AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
             int l = __builtin_ctz(m);
             hit candidate;
             sheared s = kept_lane(&keep, l);
-            if (!intersect_sheared(&s, r[l], t_max[l], &candidate))
+            if (!intersect_sheared(&s, &k->tris[i], r[l], t_max[l],
+                                   &candidate))
                 continue;
             candidate.index = i;
             if (found[l] && !replaces(k, &h[l], &candidate))
@@ -396,7 +397,7 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
         for (; m != 0; m &= m - 1) {
             int l = __builtin_ctz(m);
             sheared s = kept_lane(&keep, l);
-            if (intersect_sheared(&s, &r[l], 1, &ignored) &&
+            if (intersect_sheared(&s, f, &r[l], 1, &ignored) &&
                 blocks(&ignored, 1)) {
                 blocker[l] = i;
                 live &= ~(1u << l);

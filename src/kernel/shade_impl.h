@@ -35,6 +35,15 @@
 static inline vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
                      vec *error_bound)
 {
+    if (h->point_error < 0) {
+        /* A crossing (intersect_impl.h): t is accurate, the point the
+         * ray's. */
+        vec step = scale(direction, h->t);
+        *error_bound = add(scale(add(vabs(origin), vabs(step)),
+                                 gamma_bound(2)),
+                           scale(vabs(direction), h->t_error));
+        return add(origin, step);
+    }
     if (h->point_error > 0) {
         /* The plane's point first: on most facets it is the one taken,
          * and then the barycentric one need not be computed. */
@@ -86,7 +95,7 @@ HOT_INLINE ray shadow_ray(vec point, vec error_bound, vec normal, vec light,
                           vec to_light)
 {
     vec origin = offset_origin(point, error_bound, normal, to_light);
-    return prepare(origin, sub(light, origin));
+    return prepare_leaving(origin, sub(light, origin), error_bound);
 }
 
 /* The terms d C_S,l C_F / 255 of facet `index` for light `l`. */
@@ -205,6 +214,7 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
 {
     REAL weight = 1;
     int skip = -1, fast = settings->fast_inv_sqrt, node = -1;
+    vec origin_bound = mk(0, 0, 0);     /* of the point `origin` leaves */
     for (int bounce = 0;; bounce++) {
         if (rec != NULL)
             node = rt__record_ray(rec, bounce == 0 ? RT_RAY_CAMERA
@@ -218,7 +228,7 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
             if (found)
                 h = *first->h;
         } else {
-            ray r = prepare(origin, incoming);
+            ray r = prepare_leaving(origin, incoming, origin_bound);
             found = nearest(k, simd, tree, bounce == 0 ? settings->eye : NULL,
                             &r, INFINITY, skip, &h, counters);
         }
@@ -259,6 +269,7 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
         weight *= f->k;
         vec reflected = sub(incoming, scale(normal, 2 * dot(incoming, normal)));
         origin = offset_origin(point, error_bound, normal, reflected);
+        origin_bound = error_bound;
         incoming = normalize(reflected, fast);
         skip = h.index;
         counters->reflection_rays++;
@@ -268,6 +279,7 @@ HOT_INLINE void trace_opaque(const KERNEL_T *k, vec origin, vec incoming,
 /* A ray still to follow, with the weight its colour carries. */
 typedef struct ray_task {
     vec origin, incoming;   /* incoming is unit */
+    vec origin_bound;       /* the error bound of the point it leaves */
     REAL weight;
     int skip;               /* the facet it leaves, or -1 */
     int level;              /* 0 for the camera ray */
@@ -321,11 +333,12 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
                              : rt__record_ray(rec, RT_RAY_CAMERA, -1, 0,
                                               to_rt(origin), to_rt(incoming),
                                               1.0);
-    stack[used++] = (ray_task){origin, incoming, 1, -1, 0, camera};
+    stack[used++] = (ray_task){origin, incoming, mk(0, 0, 0), 1, -1, 0,
+                               camera};
     int ok = 1;
     while (used > 0) {
         ray_task p = stack[--used];
-        ray r = prepare(p.origin, p.incoming);
+        ray r = prepare_leaving(p.origin, p.incoming, p.origin_bound);
         hit h;
         if (!nearest(k, simd, tree, p.level == 0 ? settings->eye : NULL, &r,
                      INFINITY, p.skip, &h, counters)) {
@@ -382,7 +395,8 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
         if (refracts) {
             ray_task task = {
                 offset_origin(point, error_bound, normal, refracted),
-                normalize(refracted, fast), p.weight * f->t, h.index,
+                normalize(refracted, fast), error_bound, p.weight * f->t,
+                h.index,
                 p.level + 1, -1};
             if (rec != NULL)
                 task.node = record_task(rec, RT_RAY_REFRACTED, p.node, &task);
@@ -392,7 +406,8 @@ static int trace_transparent(const KERNEL_T *k, vec origin, vec incoming,
         if (mirror_weight > 0) {
             ray_task task = {
                 offset_origin(point, error_bound, normal, mirror),
-                normalize(mirror, fast), p.weight * mirror_weight, h.index,
+                normalize(mirror, fast), error_bound,
+                p.weight * mirror_weight, h.index,
                 p.level + 1, -1};
             if (rec != NULL)
                 task.node = record_task(rec, RT_RAY_REFLECTED, p.node, &task);

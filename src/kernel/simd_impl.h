@@ -213,7 +213,8 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
             int lane = __builtin_ctz(m), i = b * BLOCK_LANES + lane;
             m &= m - 1;
             sheared s = kept_lane(&keep, lane);
-            if (i != skip && intersect_sheared(&s, r, t_max, &candidate)) {
+            if (i != skip &&
+                intersect_sheared(&s, &k->tris[i], r, t_max, &candidate)) {
                 candidate.index = i;
                 if (found && !replaces(k, h, &candidate))
                     continue;
@@ -258,7 +259,8 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
             int lane = __builtin_ctz(m), i = b * BLOCK_LANES + lane;
             m &= m - 1;
             sheared s = kept_lane(&keep, lane);
-            if (i != skip && intersect_sheared(&s, r, t_max, &ignored) &&
+            if (i != skip &&
+                intersect_sheared(&s, &k->tris[i], r, t_max, &ignored) &&
                 blocks(&ignored, t_max)) {
                 int made = (b + 1) * BLOCK_LANES;
                 if (made > k->count)
