@@ -530,6 +530,12 @@ rt_status rt_scene_check_precision(const rt_scene *scene,
                              "a float render cannot hold coordinates of "
                              "%g (float ends at %g): render in double",
                              fmax(largest, lights), (double)FLT_MAX);
+    if (largest > RT_FLOAT_MAX_COORDINATE)
+        return rt__error_set(error, RT_ERR_RANGE, scene->name, 0, 0,
+                             "a float render cannot hold vertex or camera "
+                             "coordinates of %g: its intersection test "
+                             "overflows beyond %g: render in double",
+                             largest, RT_FLOAT_MAX_COORDINATE);
     double extent = scene->vertex_count > 1 ? v3_max_abs(v3_sub(high, low))
                                             : 0;
     if (extent > 0 && largest > RT_FLOAT_SPREAD_MAX * extent)

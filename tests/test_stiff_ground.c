@@ -146,6 +146,28 @@ START_TEST(stiff_ground_renders_the_exact_image_in_every_kernel)
 }
 END_TEST
 
+/* Beyond RT_FLOAT_MAX_COORDINATE a float render refuses the scene (its
+ * edge functions would overflow: measured, a ground of half-size 1e20
+ * renders as sky), and says what to do; double takes it. */
+START_TEST(float_refuses_coordinates_beyond_its_products_range)
+{
+    const ground_case c = {"1e18", "tilted", RT_PRECISION_FLOAT};
+    char scene_path[256], expected_path[256];
+    generate(&c, scene_path, expected_path, sizeof scene_path);
+    rt_scene *scene;
+    rt_error error;
+    ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK, "%s",
+                  error.message);
+    ck_assert_int_eq(rt_scene_check_precision(scene, RT_PRECISION_FLOAT,
+                                              &error), RT_ERR_RANGE);
+    ck_assert_msg(strstr(error.message, "render in double") != NULL, "%s",
+                  error.message);
+    ck_assert_int_eq(rt_scene_check_precision(scene, RT_PRECISION_DOUBLE,
+                                              &error), RT_OK);
+    rt_scene_destroy(scene);
+}
+END_TEST
+
 static Suite *stiff_ground_suite(void)
 {
     Suite *s = suite_create("stiff_ground");
@@ -153,6 +175,7 @@ static Suite *stiff_ground_suite(void)
     tcase_set_timeout(c, 300);
     tcase_add_loop_test(c, stiff_ground_renders_the_exact_image_in_every_kernel,
                         0, CASE_COUNT);
+    tcase_add_test(c, float_refuses_coordinates_beyond_its_products_range);
     suite_add_tcase(s, c);
     return s;
 }

@@ -263,11 +263,21 @@ RT_API rt_status rt_render(const rt_scene *scene,
  * (docs/accuracy.md, "Float's rule"). */
 #define RT_FLOAT_SPREAD_MAX 4096.0
 
+/* A float render refuses a vertex, observer or screen coordinate of
+ * magnitude beyond this: the intersection test multiplies differences of
+ * coordinates, which overflow float from about 1.3e19 (the square root of
+ * FLT_MAX over 2); this leaves a factor of 100 for its error bounds, as
+ * RT_MAX_COORDINATE does in double (measured: a ground of half-size 5e18
+ * renders exactly in float, one of 1e20 not at all; docs/accuracy.md).
+ * Lights may be farther, up to FLT_MAX. */
+#define RT_FLOAT_MAX_COORDINATE 1e17
+
 /*
  * RT_OK when a render in `precision` can hold and resolve `scene`;
  * RT_ERR_ARGUMENT for a NULL scene or a precision rt_precision does not
  * name; else RT_ERR_RANGE with the reason in *error (may be NULL): in float, a
- * coordinate beyond FLT_MAX (lights included), or vertices and camera
+ * coordinate beyond FLT_MAX (lights included), a vertex or camera
+ * coordinate beyond RT_FLOAT_MAX_COORDINATE, or vertices and camera
  * points reaching beyond RT_FLOAT_SPREAD_MAX times the vertices' extent.
  * Double holds every scene the loader accepts.  Thread-safe.
  */
