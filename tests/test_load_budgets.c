@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "formats/tessellate.h"
+#include "load_util.h"
 #include "raytrace/raytrace.h"
 #include "scene_internal.h"
 #include "testutil.h"
@@ -54,45 +55,12 @@ static rt_scene *load_nff(const char *text)
     return scene;
 }
 
-static rt_scene_info info_of(const rt_scene *scene)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    return info;
-}
-
 static int facets_of(const char *text)
 {
     rt_scene *scene = load_nff(text);
-    int n = info_of(scene).facet_count;
+    int n = load_info(scene).facet_count;
     rt_scene_destroy(scene);
     return n;
-}
-
-static int count_warnings(const rt_scene *scene, const char *words)
-{
-    int n = 0, count = info_of(scene).warning_count;
-    for (int i = 0; i < count; i++)
-        n += strstr(rt_scene_warning(scene, i)->message, words) != NULL;
-    return n;
-}
-
-/* A growing text. */
-typedef struct buffer {
-    char *data;
-    size_t length, capacity;
-} buffer;
-
-static void append(buffer *t, const char *s)
-{
-    size_t n = strlen(s);
-    if (t->length + n + 1 > t->capacity) {
-        t->capacity = 2 * (t->length + n + 1);
-        t->data = realloc(t->data, t->capacity);
-        ck_assert_ptr_nonnull(t->data);
-    }
-    memcpy(t->data + t->length, s, n + 1);
-    t->length += n;
 }
 
 /* ------------------------------------------------------------------ */
@@ -169,17 +137,13 @@ START_TEST(the_issue_s_hostile_views_cost_what_the_file_weighs)
     /* 40 spheres behind the eye and 40 sub-pixel ones, at 16384 x 16384
      * (each once got the finest cut, 198 024 facets, and a warning per
      * zero-area facet): now 8 facets each, a few hundred bytes of file. */
-    buffer t = {0};
-    append(&t, "v from 0 0 0 at 0 0 1 up 0 1 0 angle 45 hither 1 "
-               "resolution 16384 16384\nl 0 0 0\n");
-    char line[64];
-    for (int i = 0; i < 40; i++) {
-        snprintf(line, sizeof line, "s 0 0 -%d 1\ns %d 0 1e9 1\n", 10 + i,
-                 i);
-        append(&t, line);
-    }
+    load_text t = {0};
+    load_text_add(&t, "v from 0 0 0 at 0 0 1 up 0 1 0 angle 45 hither 1 "
+                      "resolution 16384 16384\nl 0 0 0\n");
+    for (int i = 0; i < 40; i++)
+        load_text_add(&t, "s 0 0 -%d 1\ns %d 0 1e9 1\n", 10 + i, i);
     rt_scene *scene = load_nff(t.data);
-    rt_scene_info info = info_of(scene);
+    rt_scene_info info = load_info(scene);
     ck_assert_int_eq(info.facet_count, 80 * 8);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
     ck_assert_int_le(info.warning_count, 4);
@@ -228,7 +192,7 @@ START_TEST(a_file_past_its_facet_budget_is_refused_naming_the_primitive)
     status = parse_as(RT_SCENE_FORMAT_NFF, text, strlen(text), 1e-3, NULL,
                       &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
-    ck_assert_int_eq(info_of(scene).facet_count, 9800);
+    ck_assert_int_eq(load_info(scene).facet_count, 9800);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -276,10 +240,10 @@ START_TEST(zero_area_facets_are_left_out_of_a_sphere_with_one_warning)
                        "hither 1 resolution 256 256\nl 1e6 0 -1\n"
                        "s 1e6 0 0 5e-10\n";
     rt_scene *scene = load_nff(text);
-    rt_scene_info info = info_of(scene);
+    rt_scene_info info = load_info(scene);
     ck_assert_int_gt(info.facet_count, 0);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
-    ck_assert_int_eq(count_warnings(scene, "facets of zero area left out"),
+    ck_assert_int_eq(load_count_warnings(scene, "facets of zero area left out"),
                      1);
     int dropped = 0;
     for (int i = 0; i < info.warning_count; i++) {
@@ -302,42 +266,27 @@ END_TEST
 /* ------------------------------------------------------------------ */
 /* Lights                                                               */
 
-static rt_status nff_with_lights(int count, rt_error *error)
+/* Loads a file of `count` lights in `format` (NFF: the lights from line
+ * 2; .scn: from line 10); checks the count of a scene that loads. */
+static rt_status with_lights(rt_scene_format format, int count,
+                             rt_error *error)
 {
-    buffer t = {0};
-    append(&t, "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
-               "resolution 8 8\n");
-    char line[48];
-    for (int i = 0; i < count; i++) {
-        snprintf(line, sizeof line, "l %d 0 0\n", i);
-        append(&t, line);
-    }
-    append(&t, "s 0 0 0 1\n");
+    int nff = format == RT_SCENE_FORMAT_NFF;
+    load_text t = {0};
+    load_text_add(&t, "%s",
+                  nff ? "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
+                        "resolution 8 8\n"
+                      : "0 0 10\n0 0 5 4 0 5 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n"
+                        "1\n1 2 3 0 255 255 255\n0 0 0\n");
+    for (int i = 0; i < count; i++)
+        load_text_add(&t, nff ? "l %d 0 0\n" : "%d 0 4 255 255 255\n", i);
+    if (nff)
+        load_text_add(&t, "s 0 0 0 1\n");
     rt_scene *scene = NULL;
-    rt_status status = parse_as(RT_SCENE_FORMAT_NFF, t.data, t.length, 0,
-                                NULL, &scene, error);
+    rt_status status = parse_as(format, t.data, t.length, 0, NULL, &scene,
+                                error);
     if (status == RT_OK)
-        ck_assert_int_eq(info_of(scene).light_count, count);
-    rt_scene_destroy(scene);
-    free(t.data);
-    return status;
-}
-
-static rt_status scn_with_lights(int count, rt_error *error)
-{
-    buffer t = {0};
-    append(&t, "0 0 10\n0 0 5 4 0 5 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n1\n"
-               "1 2 3 0 255 255 255\n0 0 0\n");
-    char line[48];
-    for (int i = 0; i < count; i++) {
-        snprintf(line, sizeof line, "%d 0 4 255 255 255\n", i);
-        append(&t, line);
-    }
-    rt_scene *scene = NULL;
-    rt_status status = parse_as(RT_SCENE_FORMAT_SCN, t.data, t.length, 0,
-                                NULL, &scene, error);
-    if (status == RT_OK)
-        ck_assert_int_eq(info_of(scene).light_count, count);
+        ck_assert_int_eq(load_info(scene).light_count, count);
     rt_scene_destroy(scene);
     free(t.data);
     return status;
@@ -347,16 +296,16 @@ START_TEST(lights_past_the_limit_are_refused_at_the_first_one_past)
 {
     rt_error error;
     ck_assert_int_eq(RT_MAX_LIGHTS, 64);
-    ck_assert_int_eq(nff_with_lights(64, &error), RT_OK);
-    ck_assert_int_eq(nff_with_lights(65, &error), RT_ERR_LIMIT);
+    ck_assert_int_eq(with_lights(RT_SCENE_FORMAT_NFF, 64, &error), RT_OK);
+    ck_assert_int_eq(with_lights(RT_SCENE_FORMAT_NFF, 65, &error), RT_ERR_LIMIT);
     /* the 65th `l` is on line 66 */
     ck_assert_int_eq(error.line, 66);
     ck_assert_int_eq(error.column, 1);
     ck_assert_str_eq(error.message,
                      "t.nff:66:1: expected at most 64 lights (each one costs "
                      "every hit a shadow ray), found light 65");
-    ck_assert_int_eq(scn_with_lights(64, &error), RT_OK);
-    ck_assert_int_eq(scn_with_lights(65, &error), RT_ERR_LIMIT);
+    ck_assert_int_eq(with_lights(RT_SCENE_FORMAT_SCN, 64, &error), RT_OK);
+    ck_assert_int_eq(with_lights(RT_SCENE_FORMAT_SCN, 65, &error), RT_ERR_LIMIT);
     /* the first light is on line 10, the 65th on line 74 */
     ck_assert_int_eq(error.line, 74);
     ck_assert_str_eq(error.message,
@@ -414,9 +363,9 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
     ck_assert_double_eq(f.k, 0.5);
     ck_assert_double_eq(f.t, 0.5);
     ck_assert_double_eq(f.n, 1.5);
-    ck_assert_int_eq(info_of(scene).transparent_facet_count,
-                     info_of(scene).live_facet_count);
-    ck_assert_int_eq(count_warnings(scene, "Ks + T = 1e+308 + 1e+308 is "
+    ck_assert_int_eq(load_info(scene).transparent_facet_count,
+                     load_info(scene).live_facet_count);
+    ck_assert_int_eq(load_count_warnings(scene, "Ks + T = 1e+308 + 1e+308 is "
                                            "more than 1"),
                      1);
     rt_scene_destroy(scene);
