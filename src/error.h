@@ -1,10 +1,11 @@
 /*
- * error.h - filling an rt_error (internal).
+ * error.h - filling an rt_error, and showing names in messages (internal).
  */
 #ifndef RAYTRACE_ERROR_H
 #define RAYTRACE_ERROR_H
 
 #include <assert.h>
+#include <stddef.h>
 
 #include "raytrace/status.h"
 
@@ -17,7 +18,8 @@
 /*
  * Sets *error (when not NULL) to status at (line, column) with a message
  * formatted by fmt; the message is prefixed with "name:line:column: " when
- * line > 0, with "name: " when line == 0 and name != NULL.  Returns status.
+ * line > 0, with "name: " when line == 0 and name != NULL, the name shown
+ * by rt__escape_name.  Returns status.
  */
 rt_status rt__error_set(rt_error *error, rt_status status, const char *name,
                         int line, int column, const char *fmt, ...)
@@ -32,5 +34,17 @@ rt_status rt__error_set(rt_error *error, rt_status status, const char *name,
  * builds: give it no side effects.
  */
 #define RT__EXPECT(condition) (assert(condition), (condition))
+
+/*
+ * Writes `name` (NUL-terminated) into out[0..size) as messages show it, so
+ * that a file's name cannot drive the terminal it is printed on: a
+ * backslash becomes `\\`; a control byte (0x00-0x1F), DEL (0x7F), a byte
+ * that is not part of well-formed UTF-8, and the UTF-8 encoding of a C1
+ * control (U+0080-U+009F) become `\xNN`, byte by byte; other characters,
+ * UTF-8 included, stay as they are.  Stops before an escape or a character
+ * that would not fit whole; out is always NUL-terminated (size > 0).
+ * Returns the length written.  Thread-safe.
+ */
+size_t rt__escape_name(const char *name, char *out, size_t size);
 
 #endif /* RAYTRACE_ERROR_H */

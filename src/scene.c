@@ -3,8 +3,10 @@
  *
  * rt_scene_create is the one way scenes are made (the `.scn` parser is a
  * client of it).  Building checks the rules the renderer relies on, works
- * out the camera, drops zero-area facets from what the renderer sees (with a
- * warning), and precomputes per-facet data once.
+ * out the camera, drops from what the renderer sees the facets no ray can
+ * meet - zero-area facets (a warning each, the first few, then one that
+ * counts the rest) and exact repeats of the facet before them (one
+ * warning) - and precomputes per-facet data once.
  */
 #include <math.h>
 #include <stdio.h>
@@ -83,7 +85,7 @@ static double orient2d(double ax, double ay, double bx, double by, double cx,
  * Accurate to an ulp per component whatever the facet's shape, zero exactly
  * when the vertices are collinear.
  */
-static rt_vec3 exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
     double largest = fmax(v3_max_abs(a), fmax(v3_max_abs(b), v3_max_abs(c)));
     int exponent = 0;
@@ -101,7 +103,7 @@ static rt_vec3 exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
  * shape (slivers and needles included); zero for a zero-area facet. */
 static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
-    return v3_normalize(exact_cross(a, b, c));
+    return v3_normalize(rt__exact_cross(a, b, c));
 }
 
 static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
@@ -121,6 +123,11 @@ static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
         (d->more_light_count > 0 && d->more_lights == NULL))
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected an array of further lights");
+    if (d->more_light_count > RT_MAX_LIGHTS - 1)
+        return rt__error_set(error, RT_ERR_LIMIT, NULL, 0, 0,
+                             "expected at most %d lights (each one costs "
+                             "every hit a shadow ray), found %.0f",
+                             RT_MAX_LIGHTS, 1.0 + d->more_light_count);
     if (!v3_is_finite(d->observer) || !v3_is_finite(d->screen_center) ||
         !v3_is_finite(d->screen_right) || !v3_is_finite(d->light_position))
         what = "the camera and the light";
@@ -181,22 +188,94 @@ static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
     return RT_OK;
 }
 
-static void add_degenerate_warning(rt_scene *s, int facet, int line)
+/* The kind of the builder's warning for each zero-area facet. */
+static const char zero_area_kind[] = "zero-area facets";
+
+static void add_degenerate_warning(rt_notes *notes, const char *name,
+                                   int facet, int line)
 {
-    rt_warning *w = &s->warnings[s->warning_count++];
-    w->line = line;
-    w->column = line > 0 ? 1 : 0;
-    const char *name = s->name ? s->name : "<memory>";
-    if (line > 0)
-        snprintf(w->message, sizeof w->message,
-                 "%s:%d:1: warning: facet %d has zero area (its vertices are "
-                 "collinear); it is never hit",
-                 name, line, facet + 1);
+    rt__notes_add_kind(notes, zero_area_kind, name, line, 1,
+                       "facet %d has zero area (its vertices are "
+                       "collinear); it is never hit", facet + 1);
+}
+
+/* Whether facet f has the vertex positions of facet g, in the same order
+ * (bit for bit: the intersection test then computes the same for both). */
+static int same_corners(const rt_scene_desc *d, const rt_facet_desc *f,
+                        const rt_facet_desc *g)
+{
+    for (int j = 0; j < 3; j++)
+        if (memcmp(&d->vertices[f->vertex[j]], &d->vertices[g->vertex[j]],
+                   sizeof(rt_vec3)) != 0)
+            return 0;
+    return 1;
+}
+
+/* The repeats found: how many, and the first. */
+typedef struct repeats {
+    int count;
+    int first, first_line, of;      /* facet, its line, the one it repeats */
+} repeats;
+
+static void add_repeat_warning(rt_notes *notes, const char *name,
+                               const repeats *r)
+{
+    if (r->count == 0)
+        return;
+    int line = r->first_line;
+    if (r->count == 1)
+        rt__notes_add(notes, name, line, 1,
+                      "facet %d repeats facet %d exactly (the same vertices "
+                      "in the same order): it is never hit and changes no "
+                      "pixel", r->first + 1, r->of + 1);
     else
-        snprintf(w->message, sizeof w->message,
-                 "%s: warning: facet %d has zero area (its vertices are "
-                 "collinear); it is never hit",
-                 name, facet + 1);
+        rt__notes_add(notes, name, line, 1,
+                      "%d facets repeat the facet just before them exactly "
+                      "(the same vertices in the same order), the first "
+                      "facet %d: they are never hit and change no pixel",
+                      r->count, r->first + 1);
+}
+
+/* Fills the facet records and counts, sorting out the facets no ray can
+ * meet (docs/robustness-input.md, "Facets no ray meets"); their warnings go
+ * to `notes`. */
+static void add_facets(rt_scene *s, const rt_scene_desc *d,
+                       const char *name, const int *facet_lines,
+                       rt_notes *notes)
+{
+    repeats r = {0, 0, 0, 0};
+    int previous = -1;      /* the last facet the renderer keeps */
+    for (int i = 0; i < d->facet_count; i++) {
+        const rt_facet_desc *f = &d->facets[i];
+        rt_facet_info *info = &s->facets[i];
+        rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
+                c = d->vertices[f->vertex[2]];
+        memcpy(info->vertex, f->vertex, sizeof info->vertex);
+        info->k = f->k;
+        info->t = f->t;
+        info->n = f->n > 0.0 ? f->n : 1.0;
+        info->d = f->d_given ? f->d : 1.0 - f->k - f->t;
+        info->color = f->color;
+        info->line = facet_lines ? facet_lines[i] : 0;
+        info->normal = facet_normal(a, b, c);
+        info->degenerate = 0;
+        if (v3_max_abs(info->normal) == 0.0) {
+            info->degenerate = RT_FACET_ZERO_AREA;
+            add_degenerate_warning(notes, name, i, info->line);
+            continue;
+        }
+        if (previous >= 0 && same_corners(d, f, &d->facets[previous])) {
+            info->degenerate = RT_FACET_REPEATED;
+            if (r.count++ == 0)
+                r.first = i, r.first_line = info->line, r.of = previous;
+            continue;
+        }
+        previous = i;
+        s->live_count++;
+        s->reflective_count += f->k > 0.0;
+        s->transparent_count += f->t > 0.0;
+    }
+    add_repeat_warning(notes, name, &r);
 }
 
 rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
@@ -224,12 +303,9 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
-    size_t noted = notes ? (size_t)notes->count : 0;
-    s->warnings = malloc((nf + noted ? nf + noted : 1) * sizeof *s->warnings);
     s->light_count = 1 + d->more_light_count;
     s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
-    if ((name && !s->name) || !s->vertices || !s->facets ||
-        !s->warnings || !s->lights) {
+    if ((name && !s->name) || !s->vertices || !s->facets || !s->lights) {
         rt_scene_destroy(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
@@ -237,9 +313,6 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
         memcpy(s->vertices, d->vertices, nv * sizeof *s->vertices);
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
-    if (noted > 0)
-        memcpy(s->warnings, notes->items, noted * sizeof *s->warnings);
-    s->warning_count = (int)noted;
     s->background = d->background;
     s->lights[0] = (rt_light){d->light_position, d->light_color};
     for (int i = 0; i < d->more_light_count; i++)
@@ -249,27 +322,26 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     if (d->focal_distance > 0.0)
         s->camera.focal_distance = d->focal_distance;
 
-    for (int i = 0; i < d->facet_count; i++) {
-        const rt_facet_desc *f = &d->facets[i];
-        rt_facet_info *info = &s->facets[i];
-        rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
-                c = d->vertices[f->vertex[2]];
-        memcpy(info->vertex, f->vertex, sizeof info->vertex);
-        info->k = f->k;
-        info->t = f->t;
-        info->n = f->n > 0.0 ? f->n : 1.0;
-        info->d = f->d_given ? f->d : 1.0 - f->k - f->t;
-        info->color = f->color;
-        info->line = facet_lines ? facet_lines[i] : 0;
-        info->normal = facet_normal(a, b, c);
-        info->degenerate = v3_max_abs(info->normal) == 0.0;
-        if (info->degenerate) {
-            add_degenerate_warning(s, i, info->line);
-            continue;
-        }
-        s->live_count++;
-        s->reflective_count += f->k > 0.0;
-        s->transparent_count += f->t > 0.0;
+    /* The reader's warnings, then the builder's, stored as they come. */
+    rt_notes warnings;
+    memset(&warnings, 0, sizeof warnings);
+    rt__notes_append(&warnings, notes);
+    add_facets(s, d, name, facet_lines, &warnings);
+    rt__notes_settle(&warnings);
+    if (warnings.count > 0 && warnings.count < warnings.capacity) {
+        rt_warning *fitted = realloc(warnings.items, (size_t)warnings.count *
+                                                         sizeof *fitted);
+        if (fitted != NULL)
+            warnings.items = fitted;
+    }
+    s->warnings = warnings.items;
+    s->warning_count = warnings.count;
+    warnings.items = NULL;
+    int failed = warnings.failed;
+    rt__notes_free(&warnings);
+    if (failed) {
+        rt_scene_destroy(s);
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
@@ -280,6 +352,15 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     }
     *out = s;
     return RT_OK;
+}
+
+size_t rt__scene_bytes(const rt_scene *s)
+{
+    return sizeof *s + (s->name ? strlen(s->name) + 1 : 0) +
+           (size_t)s->vertex_count * sizeof *s->vertices +
+           (size_t)s->facet_count * sizeof *s->facets +
+           (size_t)s->warning_count * sizeof *s->warnings +
+           (size_t)s->light_count * sizeof *s->lights;
 }
 
 rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,

@@ -4,7 +4,8 @@
  * A scene keeps two views of its facets: the records as the file gave them
  * (for accessors and the course's API), and the double-precision kernel
  * (kernel.h), which holds only the facets that can be hit, with what the
- * renderer needs precomputed.  Zero-area facets are absent from the kernel:
+ * renderer needs precomputed.  Zero-area facets and exact repeats of the
+ * facet before them (rt_facet_info.degenerate) are absent from the kernel:
  * the renderer never spends a test on them.
  */
 #ifndef RAYTRACE_SCENE_INTERNAL_H
@@ -59,6 +60,16 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
  */
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
                             int width, int height, rt_camera *camera);
+
+/* (b - a) x (c - a) from the vertices without rounding the edges: each
+ * component to within an ulp whatever the facet's shape, and zero exactly
+ * when the vertices are collinear.  Thread-safe. */
+rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c);
+
+/* The bytes of a scene's own records (itself, its name, vertices, facet
+ * records, warnings and lights; not its kernels): what a load leaves in
+ * memory besides the renderer's data.  For tests of the budgets. */
+size_t rt__scene_bytes(const rt_scene *scene);
 
 /* What a kernel of any precision is built from: the scene's own arrays. */
 void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);

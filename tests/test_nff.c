@@ -535,7 +535,10 @@ START_TEST(every_refusal_names_its_line_column_and_cause)
         {VIEW "s 0 0 0 1\n", 1.5, RT_ERR_ARGUMENT, 0, 0,
          "expected a tessellation tolerance in (0, 1), found 1.5"},
         {VIEW "s 0 0 0 1\n", 1e-9, RT_ERR_LIMIT, 9, 1,
-         "expected at most 16777216 facets in all"},
+         "expected at most 1051488 facets in all for a file of 91 bytes "
+         "(1048576 + 32 a byte, at most 16777216), found that this sphere "
+         "brings them to more than 16777216: give a larger tessellation "
+         "tolerance (--tessellate) (now 1e-09 for this sphere)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         rt_scene *scene = (rt_scene *)1;

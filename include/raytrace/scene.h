@@ -41,6 +41,14 @@ extern "C" {
 /* Limits the loader enforces (docs/scene-format.md). */
 #define RT_MAX_IMAGE_SIDE 16384
 
+/* The most lights a scene may have (docs/robustness-input.md): every hit
+ * casts one shadow ray per light, so the time of a render grows linearly
+ * with them (100 000 lights took 14 minutes at 400 x 400), and the kernel
+ * keeps a diffuse term per facet and light.  64 covers the SPD scenes (at
+ * most 7) and a grid of 8 x 8 point lights standing for an area light.
+ * rt_scene_create and every reader refuse more (RT_ERR_LIMIT). */
+#define RT_MAX_LIGHTS 64
+
 typedef struct rt_scene rt_scene;
 
 /* A point light: its position and its colour C_S. */
@@ -82,21 +90,33 @@ typedef struct rt_facet_info {
     double k;               /* reflection coefficient in [0, 1] */
     rt_rgb8 color;
     rt_vec3 normal;         /* unit (b-a)x(c-a); zero for a zero-area facet */
-    int degenerate;         /* non-zero for a zero-area facet (never hit) */
+    int degenerate;         /* 0, or why no ray ever meets the facet:
+                               RT_FACET_ZERO_AREA, RT_FACET_REPEATED */
     int line;               /* line of the record in the source */
     double t;               /* transparency in [0, 1], k + t <= 1 */
     double n;               /* refractive index, > 0 (1 when not given) */
     double d;               /* diffuse weight >= 0 (1 - k - t in .scn) */
 } rt_facet_info;
 
+/* Values of rt_facet_info.degenerate: facets the renderer leaves out, as
+ * no ray can meet them (docs/robustness-input.md, "Facets no ray meets").
+ * A repeated facet has the vertex positions of the facet before it that the
+ * renderer keeps, in the same order: the tie rule of rt_scene_nearest_hit
+ * keeps that earlier one wherever both are met, so the repeat changes no
+ * pixel; it only cost every ray there a test. */
+#define RT_FACET_ZERO_AREA 1    /* its vertices are collinear */
+#define RT_FACET_REPEATED 2     /* an exact repeat of the facet before it */
+
 /* Sizes and settings of a scene. */
 typedef struct rt_scene_info {
     int width, height;
     int vertex_count;
     int facet_count;        /* as in the file, degenerate ones included */
-    int live_facet_count;   /* facets that can be hit */
+    int live_facet_count;   /* facets that can be hit: facet_count less the
+                               zero-area and repeated ones */
     int reflective_facet_count; /* live facets with k > 0 */
-    int warning_count;
+    int warning_count;      /* warnings stored (rt_scene_warning); a warning
+                               may stand for many ("... and N more") */
     rt_rgb8 background;
     rt_vec3 light_position; /* the first light */
     rt_rgb8 light_color;
@@ -145,10 +165,12 @@ typedef struct rt_scene_desc {
  * Builds a scene from `desc`, checking the rules of the rendering model
  * (docs/rendering-model.md): finite coordinates, k and t in [0, 1] with
  * k + t <= 1, n > 0, d >= 0, indices in range, sizes, a >= 0, f >= 0, a
- * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA).  A NULL
- * `desc` or `scene`, a negative count or a missing array is
- * RT_ERR_ARGUMENT.  Messages have no file position; zero-area facets give
- * warnings.  Thread-safe.
+ * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA), at most
+ * RT_MAX_LIGHTS lights.  A NULL `desc` or `scene`, a negative count or a
+ * missing array is RT_ERR_ARGUMENT.  Messages have no file position;
+ * zero-area facets give warnings (the first 8 one by one, then one that
+ * counts the others and lists their lines), and exact repeats of the facet
+ * before them one warning.  Thread-safe.
  */
 RT_API rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                                  rt_error *error);

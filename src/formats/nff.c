@@ -10,7 +10,11 @@
  * tokens of the file first, so a polygon's vertex count is checked against
  * the values left before anything is allocated for it.  Spheres and cones
  * are tessellated (tessellate.c) once the whole file is read, when the view
- * that sets the default tolerance is known.
+ * that sizes their facets is known: each as finely as it looks from the eye
+ * (nothing finer than a pixel, the coarsest behind the eye), all of them
+ * within a budget of facets proportional to the file's size.  The load's
+ * cancellation flag is polled every RT_LOAD_POLL entities, vertices and
+ * primitives.
  */
 #include <ctype.h>
 #include <limits.h>
@@ -33,11 +37,14 @@
 #define MAX_NONCONVEX_VERTICES 1024
 /* The default tolerance keeps a silhouette within DEFAULT_PIXELS of the
  * true one at the file's resolution and facets about DEFAULT_FACET_PIXELS
- * across, within these bounds. */
+ * across, within these bounds (docs/formats.md, "Tessellation"). */
 #define DEFAULT_PIXELS 0.25
 #define DEFAULT_FACET_PIXELS 5.0
 #define DEFAULT_TOLERANCE_MIN 5e-5
 #define DEFAULT_TOLERANCE_MAX 0.05
+/* The coarsest cuts: an octahedron, a three-sided prism (or pyramid). */
+#define COARSEST_BANDS 2
+#define COARSEST_SEGMENTS 3
 
 typedef struct token {
     const char *text;
@@ -71,6 +78,8 @@ typedef struct nff_light {
 typedef struct parser {
     const char *text, *at, *end;
     const char *name;
+    const rt_load_options *options;
+    long polls;             /* items handled, for the cancellation poll */
     int line;               /* of `at` */
     const char *line_start;
     long tokens_left;       /* tokens from `at` on */
@@ -134,14 +143,24 @@ static const char *token_end(const char *c, const char *end)
     return c;
 }
 
-static long count_tokens(const char *at, const char *end)
+/* The tokens of the input; -1 when the load is cancelled meanwhile. */
+static long count_tokens(const char *at, const char *end,
+                         const rt_load_options *options)
 {
     long count = 0;
     while (scan(&at, end, NULL, NULL)) {
         at = token_end(at, end);
-        count++;
+        if (count++ % (16 * RT_LOAD_POLL) == 0 && rt__load_cancelled(options))
+            return -1;
     }
     return count;
+}
+
+/* Non-zero when the load is cancelled, looked at on the first item and
+ * every RT_LOAD_POLL items after it. */
+static int poll_cancel(parser *p)
+{
+    return p->polls++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options);
 }
 
 /* The next token; 0 at the end of the input. */
@@ -478,6 +497,12 @@ static rt_status view(parser *p, const token *v)
 /* l x y z [r g b]: the colour only on the same line. */
 static rt_status light(parser *p, const token *l)
 {
+    if (p->light_count == RT_MAX_LIGHTS)
+        return rt__error_set(p->error, RT_ERR_LIMIT, p->name, l->line,
+                             l->column,
+                             "expected at most %d lights (each one costs "
+                             "every hit a shadow ray), found light %d",
+                             RT_MAX_LIGHTS, RT_MAX_LIGHTS + 1);
     if (grow((void **)&p->lights, &p->light_capacity, p->light_count,
              sizeof *p->lights) != 0)
         return out_of_memory(p);
@@ -534,11 +559,23 @@ static rt_status material(parser *p, const token *f)
               "model, which has no highlights: ignored");
     if (ks + tr > 1) {
         char text[200];
-        snprintf(text, sizeof text,
-                 "Ks + T = %g is more than 1 (the model needs k + t <= 1): "
-                 "both scaled by 1/%g (the first is here)", ks + tr, ks + tr);
-        warn_once(p, ONCE_KT, &ks_t, text);
         double sum = ks + tr;
+        if (isfinite(sum)) {
+            snprintf(text, sizeof text,
+                     "Ks + T = %g is more than 1 (the model needs k + t <= "
+                     "1): both scaled by 1/%g (the first is here)", sum, sum);
+        } else {
+            /* Both near DBL_MAX: halved first (exactly), so that the sum
+             * and the ratios stay finite. */
+            snprintf(text, sizeof text,
+                     "Ks + T = %g + %g is more than 1 (the model needs k + t "
+                     "<= 1): both scaled by 1/(Ks + T) (the first is here)",
+                     ks, tr);
+            ks *= 0.5;
+            tr *= 0.5;
+            sum = ks + tr;
+        }
+        warn_once(p, ONCE_KT, &ks_t, text);
         ks /= sum;
         tr /= sum;
     }
@@ -593,6 +630,18 @@ static rt_status radius(parser *p, const char *what, rt_vec3 center,
                     "a radius that keeps the surface within coordinates of "
                     "magnitude 1e152 (the renderer's arithmetic overflows "
                     "beyond)");
+    /* The spacing of doubles at the centre: a smaller radius moves no
+     * coordinate of it, so no surface is there to cut. */
+    double largest = v3_max_abs(center);
+    double spacing = nextafter(largest, INFINITY) - largest;
+    if (*r != 0 && fabs(*r) < spacing) {
+        char expected[200];
+        snprintf(expected, sizeof expected,
+                 "a radius of at least %g, the spacing of doubles at its "
+                 "centre (a smaller surface cannot be represented)",
+                 spacing);
+        return fail(p, RT_ERR_RANGE, t, expected);
+    }
     return RT_OK;
 }
 
@@ -689,6 +738,9 @@ static rt_status polygon(parser *p, const token *entity, int patch)
         p->point_capacity = n;
     }
     for (int i = 0; i < n; i++) {
+        if (i % RT_LOAD_POLL == RT_LOAD_POLL - 1 &&
+            rt__load_cancelled(p->options))
+            return rt__load_cancel(p->error, p->name);
         if ((status = triple(p, "a vertex", 1, &p->points[i], NULL)) != RT_OK)
             return status;
         if (patch) {
@@ -728,18 +780,11 @@ static rt_status polygon(parser *p, const token *entity, int patch)
     return RT_OK;
 }
 
-/* The default tolerance of a surface of radius r around `center`: its
- * silhouette within DEFAULT_PIXELS of the true one at the file's
- * resolution and angle, seen from `from` at its nearest depth. */
-static double default_tolerance(const parser *p, rt_vec3 center, double r)
+/* The tolerance that keeps a silhouette of radius rho pixels within
+ * DEFAULT_PIXELS of the true one and facets about DEFAULT_FACET_PIXELS
+ * across where they face the eye, within the default bounds. */
+static double smooth_tolerance(double rho)
 {
-    rt_vec3 w = v3_normalize(v3_sub(p->at_point, p->from));
-    double depth = v3_dot(v3_sub(center, p->from), w) - r;
-    if (!(depth > 0.1 * r))
-        depth = 0.1 * r;
-    double half_width = depth * tan(p->angle * PI / 360.0);
-    double pixels_per_unit = 0.5 * p->width / half_width;
-    double rho = pixels_per_unit * r;  /* the radius in pixels */
     double tol = DEFAULT_PIXELS / rho;
     /* facets about DEFAULT_FACET_PIXELS across where they face the eye
      * (a band of angle pi / bands ~ sqrt(2) acos(1 - tol)): flat shading
@@ -754,57 +799,175 @@ static double default_tolerance(const parser *p, rt_vec3 center, double r)
     return tol;
 }
 
-static rt_status too_many(parser *p, const primitive *prim, double facets)
+/* How a primitive is cut: a tolerance, or 0 for the coarsest cut; and at
+ * most `most_facets` facets (0: no cap but the budget). */
+typedef struct cut {
+    double tolerance;
+    double most_facets;
+} cut;
+
+/*
+ * The default cut of a primitive from the file's view (docs/formats.md,
+ * "Tessellation"), with r its radius (a cone's larger one) and `center`
+ * its centre (a cone's midpoint):
+ * - in front of the eye (its nearest depth along the view, at least a
+ *   tenth of r, is positive): sized by its radius in pixels there, rho; the
+ *   coarsest when it is smaller than a pixel (2 rho < 1);
+ * - entirely behind the eye (its bounding sphere behind the plane of the
+ *   eye): the coarsest, as only reflections can show it;
+ * - otherwise (around or beside the eye): as if seen from the distance of
+ *   its farthest point, so rho is at most the focal length in pixels, and
+ *   at most as many facets as the image has pixels.
+ */
+static cut default_cut(const parser *p, const primitive *prim)
 {
+    cut c = {0.0, 0.0};
+    double r = prim->r0 > prim->r1 ? prim->r0 : prim->r1;
+    rt_vec3 center = prim->cone ? v3_scale(v3_add(prim->base, prim->apex), 0.5)
+                                : prim->base;
+    rt_vec3 w = v3_normalize(v3_sub(p->at_point, p->from));
+    double along = v3_dot(v3_sub(center, p->from), w);
+    double depth = along - r;
+    if (depth > 0) {
+        if (!(depth > 0.1 * r))
+            depth = 0.1 * r;
+        double half_width = depth * tan(p->angle * PI / 360.0);
+        double pixels_per_unit = 0.5 * p->width / half_width;
+        double rho = pixels_per_unit * r;  /* the radius in pixels */
+        if (2.0 * rho >= 1.0)
+            c.tolerance = smooth_tolerance(rho);
+        return c;
+    }
+    double reach = r;       /* the radius of a sphere holding the primitive */
+    if (prim->cone) {
+        double half = 0.5 * v3_length(v3_sub(prim->apex, prim->base));
+        reach = sqrt(half * half + r * r);
+    }
+    if (!(along + reach > 0))
+        return c;
+    double farthest = v3_length(v3_sub(center, p->from)) + reach;
+    double focal = 0.5 * p->width / tan(p->angle * PI / 360.0);
+    c.tolerance = smooth_tolerance(focal * r / farthest);
+    c.most_facets = (double)p->width * (double)p->height;
+    return c;
+}
+
+/* The bands of a sphere cut by `c` (tol_bands: the bands its tolerance
+ * gives, 0 when it needs too many). */
+static int sphere_bands(const cut *c, int tol_bands)
+{
+    if (c->tolerance == 0)
+        return COARSEST_BANDS;
+    if (tol_bands == 0 || c->most_facets == 0 ||
+        rt__tess_sphere_facet_count(tol_bands) <= c->most_facets)
+        return tol_bands;
+    /* the most bands b with 4 b (b - 1) <= most_facets */
+    int most = (int)floor(0.5 * (1.0 + sqrt(1.0 + c->most_facets)));
+    while (most > COARSEST_BANDS && rt__tess_sphere_facet_count(most) >
+                                        c->most_facets)
+        most--;
+    return most > COARSEST_BANDS ? most : COARSEST_BANDS;
+}
+
+static int cone_segments(const cut *c, int tol_segments, const primitive *p)
+{
+    if (c->tolerance == 0)
+        return COARSEST_SEGMENTS;
+    if (tol_segments == 0 || c->most_facets == 0 ||
+        rt__tess_cone_facet_count(tol_segments, p->r0, p->r1) <=
+            c->most_facets)
+        return tol_segments;
+    double per_segment = rt__tess_cone_facet_count(1, p->r0, p->r1);
+    double most = floor(c->most_facets / per_segment);
+    return most > COARSEST_SEGMENTS ? (int)most : COARSEST_SEGMENTS;
+}
+
+static rt_status too_many(parser *p, const primitive *prim, double facets,
+                          double budget, double tolerance)
+{
+    char tol[48] = "", total[48];
+    if (tolerance > 0)
+        snprintf(tol, sizeof tol, " (now %g for this %s)", tolerance,
+                 prim->cone ? "cone" : "sphere");
+    if (p->mesh.facet_count + facets > RT_TESS_MAX_FACETS)
+        snprintf(total, sizeof total, "more than %d", RT_TESS_MAX_FACETS);
+    else
+        snprintf(total, sizeof total, "%.0f", p->mesh.facet_count + facets);
     return rt__error_set(p->error, RT_ERR_LIMIT, p->name, prim->line,
                          prim->column,
-                         "expected at most %d facets in all, found that "
-                         "this %s brings them to %.0f: use a larger "
-                         "tessellation tolerance",
+                         "expected at most %.0f facets in all for a file of "
+                         "%zu bytes (%d + %d a byte, at most %d), found that "
+                         "this %s brings them to %s: give a larger "
+                         "tessellation tolerance (--tessellate)%s",
+                         budget, (size_t)(p->end - p->text),
+                         RT_TESS_BUDGET_BASE, RT_TESS_BUDGET_PER_BYTE,
                          RT_TESS_MAX_FACETS, prim->cone ? "cone" : "sphere",
-                         p->mesh.facet_count + facets);
+                         total, tol);
+}
+
+/* Cuts primitive `prim` into the mesh: 0, -1 (out of memory) or
+ * RT_TESS_CANCELLED, after checking its facets against `budget`. */
+static rt_status cut_primitive(parser *p, const primitive *prim,
+                               const cut *c, int bands, int segments,
+                               double budget)
+{
+    const rt_facet_desc *m = &p->materials[prim->material];
+    double facets;
+    if (prim->cone)
+        facets = segments == 0 ? 1e300
+                               : rt__tess_cone_facet_count(segments, prim->r0,
+                                                           prim->r1);
+    else
+        facets = bands == 0 ? 1e300 : rt__tess_sphere_facet_count(bands);
+    if (p->mesh.facet_count + facets > budget)
+        return too_many(p, prim, facets, budget, c->tolerance);
+    int done = prim->cone
+                   ? rt__tess_cone(&p->mesh, prim->base, prim->r0, prim->apex,
+                                   prim->r1, prim->inward, segments, m,
+                                   prim->line)
+                   : rt__tess_sphere(&p->mesh, prim->base, prim->r0,
+                                     prim->inward, bands, m, prim->line);
+    if (done == RT_TESS_CANCELLED)
+        return rt__load_cancel(p->error, p->name);
+    return done == 0 ? RT_OK : out_of_memory(p);
 }
 
 static rt_status tessellate(parser *p, double option)
 {
+    double budget = rt__tess_budget((size_t)(p->end - p->text));
     double last_tol = -1;
     int last_bands = 0, last_segments = 0;
+    const primitive *first_dropped = NULL;
+    p->mesh.cancel = p->options->cancel;
     for (int i = 0; i < p->primitive_count; i++) {
         const primitive *prim = &p->primitives[i];
-        double r = prim->r0 > prim->r1 ? prim->r0 : prim->r1;
-        rt_vec3 center = prim->cone ? v3_scale(v3_add(prim->base, prim->apex),
-                                               0.5)
-                                    : prim->base;
-        double tol = option > 0 ? option : default_tolerance(p, center, r);
-        if (tol != last_tol) {
-            last_tol = tol;
-            last_bands = rt__tess_sphere_bands(tol);
-            last_segments = rt__tess_circle_segments(tol);
+        if (poll_cancel(p))
+            return rt__load_cancel(p->error, p->name);
+        cut c = {option, 0.0};
+        if (!(option > 0))
+            c = default_cut(p, prim);
+        if (c.tolerance > 0 && c.tolerance != last_tol) {
+            last_tol = c.tolerance;
+            last_bands = rt__tess_sphere_bands(c.tolerance);
+            last_segments = rt__tess_circle_segments(c.tolerance);
         }
-        const rt_facet_desc *m = &p->materials[prim->material];
-        if (prim->cone) {
-            double facets = last_segments == 0
-                                ? 1e300
-                                : rt__tess_cone_facet_count(last_segments,
-                                                            prim->r0,
-                                                            prim->r1);
-            if (p->mesh.facet_count + facets > RT_TESS_MAX_FACETS)
-                return too_many(p, prim, facets);
-            if (rt__tess_cone(&p->mesh, prim->base, prim->r0, prim->apex,
-                              prim->r1, prim->inward, last_segments, m,
-                              prim->line) != 0)
-                return out_of_memory(p);
-        } else {
-            double facets = last_bands == 0
-                                ? 1e300
-                                : rt__tess_sphere_facet_count(last_bands);
-            if (p->mesh.facet_count + facets > RT_TESS_MAX_FACETS)
-                return too_many(p, prim, facets);
-            if (rt__tess_sphere(&p->mesh, prim->base, prim->r0, prim->inward,
-                                last_bands, m, prim->line) != 0)
-                return out_of_memory(p);
-        }
+        int dropped = p->mesh.dropped;
+        rt_status status =
+            cut_primitive(p, prim, &c, sphere_bands(&c, last_bands),
+                          cone_segments(&c, last_segments, prim), budget);
+        if (status != RT_OK)
+            return status;
+        if (dropped == 0 && p->mesh.dropped > 0)
+            first_dropped = prim;
     }
+    if (first_dropped != NULL)
+        rt__notes_add(&p->notes, p->name, first_dropped->line,
+                      first_dropped->column,
+                      "%d facets of zero area left out of spheres and cones "
+                      "(their vertices round together: the radius is small "
+                      "for the coordinates of the centre; the first such "
+                      "%s is here)", p->mesh.dropped,
+                      first_dropped->cone ? "cone" : "sphere");
     return RT_OK;
 }
 
@@ -814,6 +977,8 @@ static rt_status parse(parser *p, const rt_load_options *options,
     rt_status status = RT_OK;
     token t;
     while (status == RT_OK && next_token(p, &t)) {
+        if (poll_cancel(p))
+            return rt__load_cancel(p->error, p->name);
         if (is_word(&t, "v"))
             status = view(p, &t);
         else if (is_word(&t, "b"))
@@ -895,6 +1060,8 @@ static rt_status parse(parser *p, const rt_load_options *options,
     }
     if (p->notes.failed)
         status = out_of_memory(p);
+    else if (rt__load_cancelled(options))
+        status = rt__load_cancel(p->error, p->name);
     else
         status = rt__reader_finish(&d, p->name, p->mesh.facet_lines,
                                    &p->notes, options, scene, p->error);
@@ -939,7 +1106,10 @@ rt_status rt__nff_parse(const char *text, size_t length, const char *name,
     if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
         p.at += 3;          /* a UTF-8 byte-order mark: not a column */
     p.line_start = p.at;
-    p.tokens_left = count_tokens(p.at, p.end);
+    p.options = options;
+    p.tokens_left = count_tokens(p.at, p.end, options);
+    if (p.tokens_left < 0)
+        return rt__load_cancel(error, shown);
     p.c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
     if (p.c_locale == (locale_t)0)
         return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,

@@ -7,7 +7,8 @@
  * every token, and stops at the first broken rule with a message
  * "name:line:column: expected ..., found ...".  Before allocating for a
  * count it checks that the file has that many lines left, so a hostile count
- * cannot make it allocate more than the input's size justifies.
+ * cannot make it allocate more than the input's size justifies.  The load's
+ * cancellation flag is polled every RT_LOAD_POLL records.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -37,6 +38,8 @@ typedef struct token {
 typedef struct parser {
     const char *at, *end;
     const char *name;
+    const rt_load_options *options;
+    long records;           /* records read, for the cancellation poll */
     int line;               /* line of the next line to read */
     int record_lines_left;  /* lines with content from `at` on */
     locale_t c_locale;
@@ -95,10 +98,14 @@ static int is_blank(int c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-static int count_record_lines(const char *at, const char *end)
+/* The lines with content; -1 when the load is cancelled meanwhile. */
+static int count_record_lines(const char *at, const char *end,
+                              const rt_load_options *options)
 {
     int count = 0;
-    while (at < end) {
+    for (long lines = 0; at < end; lines++) {
+        if (lines % (16 * RT_LOAD_POLL) == 0 && rt__load_cancelled(options))
+            return -1;
         const char *eol = line_end(at, end);
         const char *c = at;
         while (c < eol && is_blank(*c))
@@ -134,6 +141,8 @@ static rt_status next_record(parser *p)
             continue;
         p->record_line = line;
         p->record_lines_left--;
+        if (p->records++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options))
+            return rt__load_cancel(p->error, p->name);
         p->value_count = 0;
         int comma_allowed = 0;
         c = start;
@@ -504,6 +513,15 @@ static rt_status parse(parser *p, const char *text,
         rt_light *light = &lights[d.more_light_count];
         static const char what[] = "a further light `x, y, z, R, G, B`";
         TRY(expect_values(p, text, 1, 6, what));
+        if (d.more_light_count == RT_MAX_LIGHTS - 1) {
+            status = rt__error_set(p->error, RT_ERR_LIMIT, p->name,
+                                   p->record_line, p->values[0].column,
+                                   "expected at most %d lights (each one "
+                                   "costs every hit a shadow ray), found "
+                                   "light %d", RT_MAX_LIGHTS,
+                                   RT_MAX_LIGHTS + 1);
+            goto done;
+        }
         /* Something that is not a number is named before any count. */
         for (int i = 0; i < p->value_count; i++) {
             double ignored;
@@ -523,6 +541,10 @@ static rt_status parse(parser *p, const char *text,
         d.more_light_count++;
     }
     d.more_lights = lights;
+    if (rt__load_cancelled(options)) {
+        status = rt__load_cancel(p->error, p->name);
+        goto done;
+    }
     status = rt__reader_finish(&d, p->name, facet_lines, NULL, options, scene,
                                p->error);
     goto done;
@@ -563,7 +585,10 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
     p.error = error;
     if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
         p.at += 3;          /* a UTF-8 byte-order mark: not a column */
-    p.record_lines_left = count_record_lines(p.at, p.end);
+    p.options = options;
+    p.record_lines_left = count_record_lines(p.at, p.end, options);
+    if (p.record_lines_left < 0)
+        return rt__load_cancel(error, p.name);
     p.c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
     if (p.c_locale == (locale_t)0)
         return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,

@@ -14,6 +14,11 @@
  * A cone or cylinder is two circles of `segments` points joined by
  * planar trapezoids: its deviation is r (1 - cos(pi / segments)) at the wider
  * end, so the segment count comes straight from the tolerance.
+ *
+ * A curved surface whose vertices round together (a radius of a few ulps of
+ * its centre's coordinates) would give facets of zero area, which no ray
+ * meets: they are left out and counted in the mesh, for the reader's one
+ * warning.
  */
 #include "formats/tessellate.h"
 
@@ -22,7 +27,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "raytrace/render.h"
+#include "scene_internal.h"
 #include "vecmath.h"
+
+/* Facets cut between two polls of the cancellation flag. */
+#define POLL_FACETS 4096
 
 #define PI 3.14159265358979323846
 
@@ -52,6 +62,13 @@ static int grow(void **array, int *capacity, double needed, size_t size,
     *array = grown;
     *capacity = (int)bigger;
     return 0;
+}
+
+double rt__tess_budget(size_t bytes)
+{
+    double budget = RT_TESS_BUDGET_BASE + RT_TESS_BUDGET_PER_BYTE *
+                                              (double)bytes;
+    return budget < RT_TESS_MAX_FACETS ? budget : RT_TESS_MAX_FACETS;
 }
 
 int rt__tess_reserve(rt_tess_mesh *mesh, double vertices, double facets)
@@ -94,6 +111,28 @@ static void add_facet(rt_tess_mesh *mesh, const rt_facet_desc *facet,
     f->vertex[1] = inward ? c : b;
     f->vertex[2] = inward ? b : c;
     mesh->facet_lines[mesh->facet_count++] = line;
+}
+
+/* A facet of a curved surface: as add_facet, unless its corners are
+ * collinear (counted instead). */
+static void add_surface_facet(rt_tess_mesh *mesh, const rt_facet_desc *facet,
+                              int line, int a, int b, int c, int inward)
+{
+    const rt_vec3 *v = mesh->vertices;
+    rt_vec3 n = rt__exact_cross(v[a], v[b], v[c]);
+    if (n.x == 0 && n.y == 0 && n.z == 0) {
+        mesh->dropped++;
+        return;
+    }
+    add_facet(mesh, facet, line, a, b, c, inward);
+}
+
+/* Non-zero when the mesh's flag is raised; looked at when `done` (facets
+ * cut so far) crosses a multiple of POLL_FACETS. */
+static int cancelled(const rt_tess_mesh *mesh, long before, long done)
+{
+    return mesh->cancel != NULL && before / POLL_FACETS != done / POLL_FACETS &&
+           rt_cancel_requested(mesh->cancel);
 }
 
 int rt__tess_circle_segments(double tolerance)
@@ -240,18 +279,22 @@ int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
     int south = add_vertex(mesh, v3_add(center, v3(0, 0, -radius)));
 #define RING(i, j) (first + ((i) - 1) * m + ((j) % m))
     for (int j = 0; j < m; j++)
-        add_facet(mesh, facet, line, north, RING(1, j), RING(1, j + 1),
-                  inward);
-    for (int i = 1; i < bands - 1; i++)
+        add_surface_facet(mesh, facet, line, north, RING(1, j),
+                          RING(1, j + 1), inward);
+    for (int i = 1; i < bands - 1; i++) {
+        /* a band of 2m facets (at most 2^13 below RT_TESS_MAX_FACETS) */
+        if (cancelled(mesh, 2L * m * (i - 1), 2L * m * i))
+            return RT_TESS_CANCELLED;
         for (int j = 0; j < m; j++) {
-            add_facet(mesh, facet, line, RING(i, j), RING(i + 1, j),
-                      RING(i + 1, j + 1), inward);
-            add_facet(mesh, facet, line, RING(i, j), RING(i + 1, j + 1),
-                      RING(i, j + 1), inward);
+            add_surface_facet(mesh, facet, line, RING(i, j), RING(i + 1, j),
+                              RING(i + 1, j + 1), inward);
+            add_surface_facet(mesh, facet, line, RING(i, j),
+                              RING(i + 1, j + 1), RING(i, j + 1), inward);
         }
+    }
     for (int j = 0; j < m; j++)
-        add_facet(mesh, facet, line, RING(bands - 1, j), south,
-                  RING(bands - 1, j + 1), inward);
+        add_surface_facet(mesh, facet, line, RING(bands - 1, j), south,
+                          RING(bands - 1, j + 1), inward);
 #undef RING
     return 0;
 }
@@ -296,13 +339,17 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
         add_vertex(mesh, apex);
     for (int j = 0; j < n; j++) {
         int k = (j + 1) % n;
+        if (cancelled(mesh, 2L * j - 2, 2L * j))
+            return RT_TESS_CANCELLED;
         if (r0 > 0 && r1 > 0) {
-            add_facet(mesh, facet, line, b0 + j, b0 + k, a0 + k, inward);
-            add_facet(mesh, facet, line, b0 + j, a0 + k, a0 + j, inward);
+            add_surface_facet(mesh, facet, line, b0 + j, b0 + k, a0 + k,
+                              inward);
+            add_surface_facet(mesh, facet, line, b0 + j, a0 + k, a0 + j,
+                              inward);
         } else if (r0 > 0) {
-            add_facet(mesh, facet, line, b0 + j, b0 + k, a0, inward);
+            add_surface_facet(mesh, facet, line, b0 + j, b0 + k, a0, inward);
         } else {
-            add_facet(mesh, facet, line, b0, a0 + k, a0 + j, inward);
+            add_surface_facet(mesh, facet, line, b0, a0 + k, a0 + j, inward);
         }
     }
     return 0;

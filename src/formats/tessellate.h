@@ -5,7 +5,8 @@
  * facets is farther from the true surface than `tolerance` times its radius
  * (measured along the radius), and every facet is wound counter-clockwise
  * seen from outside (outward normal (b - a) x (c - a)) unless asked to face
- * inward.
+ * inward.  A curved surface emits no zero-area facet (it counts them in
+ * the mesh instead), and polls the mesh's cancellation flag as it goes.
  */
 #ifndef RAYTRACE_TESSELLATE_H
 #define RAYTRACE_TESSELLATE_H
@@ -15,6 +16,25 @@
 /* The most facets a mesh may hold (16 Mi): about 1 GiB of descriptions. */
 #define RT_TESS_MAX_FACETS (1 << 24)
 
+/*
+ * The facets a file of `bytes` bytes may make in all (rt__tess_budget):
+ * RT_TESS_BUDGET_BASE + RT_TESS_BUDGET_PER_BYTE * bytes, at most
+ * RT_TESS_MAX_FACETS.  A facet costs about 300 bytes at the peak of a load
+ * (docs/robustness-input.md), and one line of 10 bytes (`s 0 0 0 1`) can
+ * ask for the finest sphere (198 024 facets), so without a budget a few
+ * hundred bytes took gigabytes.  The base holds five of the finest spheres
+ * in any file (about 300 MB at the peak), every SPD scene at its own
+ * resolution (at most 54 400 facets), and the per-byte term lets a large
+ * file of small spheres keep the tessellation the view asks for (the SPD's
+ * balls at size 4: 4 facets a byte).  --tessellate (a larger tolerance)
+ * is the way to fewer facets.
+ */
+#define RT_TESS_BUDGET_BASE (1 << 20)
+#define RT_TESS_BUDGET_PER_BYTE 32
+
+/* The budget above for a file of `bytes` bytes. */
+double rt__tess_budget(size_t bytes);
+
 /* A growing list of vertices and facets, with each facet's source line. */
 typedef struct rt_tess_mesh {
     rt_vec3 *vertices;
@@ -22,7 +42,13 @@ typedef struct rt_tess_mesh {
     rt_facet_desc *facets;
     int *facet_lines;
     int facet_count, facet_capacity;
+    int dropped;            /* zero-area facets of curved surfaces, left out */
+    const rt_cancel *cancel; /* polled while a surface is cut; may be NULL */
 } rt_tess_mesh;
+
+/* What rt__tess_sphere and rt__tess_cone return when the mesh's flag was
+ * raised (0: done; -1: out of memory). */
+#define RT_TESS_CANCELLED 1
 
 void rt__tess_mesh_free(rt_tess_mesh *mesh);
 
@@ -55,14 +81,16 @@ double rt__tess_sphere_vertex_count(int bands);
 double rt__tess_cone_facet_count(int segments, double r0, double r1);
 
 /* Appends a sphere (poles along z) with every facet a copy of `facet`
- * (its vertex indices replaced) on `line`.  0, or -1 out of memory. */
+ * (its vertex indices replaced) on `line`; bands >= 2 (2: an octahedron,
+ * the coarsest).  0, -1 out of memory, or RT_TESS_CANCELLED. */
 int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
                     int inward, int bands, const rt_facet_desc *facet,
                     int line);
 
 /* Appends the open surface between the circle of radius r0 around `base`
  * and that of radius r1 around `apex`, perpendicular to the axis (no
- * caps); r0, r1 >= 0, not both 0, base != apex. */
+ * caps); r0, r1 >= 0, not both 0, base != apex, segments >= 3.  Returns as
+ * rt__tess_sphere. */
 int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
                   double r1, int inward, int segments,
                   const rt_facet_desc *facet, int line);

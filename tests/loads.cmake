@@ -1,0 +1,7 @@
+# What a load may cost and what it says (docs/robustness-input.md, "Budgets
+# of a load"): tests/test_load_budgets.c (the cut of NFF's spheres and
+# cones, the facet budget, lights, Ks + T, cancellation) and
+# tests/test_load_warnings.c (warnings stored as needed and summarised,
+# repeated facets, names shown escaped).  Included from tests/CMakeLists.txt.
+raytrace_add_suite(test_load_budgets INTERNAL SOURCES load_util.c)
+raytrace_add_suite(test_load_warnings INTERNAL SOURCES load_util.c)
