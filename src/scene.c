@@ -8,12 +8,14 @@
  * counts the rest) and exact repeats of the facet before them (one
  * warning) - and precomputes per-facet data once.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "error.h"
+#include "kernel/plane_crossing.h"
 #include "formats/reader.h"
 #include "scene_internal.h"
 #include "vecmath.h"
@@ -211,6 +213,36 @@ static int same_corners(const rt_scene_desc *d, const rt_facet_desc *f,
     return 1;
 }
 
+/* The kind of the warning for a facet whose plane passes through the eye
+ * (or too near it to tell). */
+static const char edge_on_kind[] = "facets edge-on to the eye";
+
+/*
+ * Warns when the eye lies in the plane of the facet (a, b, c), or so near
+ * it that the renderer cannot tell its side: within about 1e-30 of the
+ * facet's size, the limit of the crossing test (docs/robustness.md,
+ * "Facets far larger than their distance"), in either precision.  Camera
+ * rays never meet such a facet.  Plain double first: a distance well above
+ * its rounding needs nothing more.
+ */
+static void check_edge_on(rt_notes *notes, const char *name, int facet,
+                          int line, rt_vec3 normal, rt_vec3 a, rt_vec3 b,
+                          rt_vec3 c, rt_vec3 eye)
+{
+    rt_vec3 to_a = v3_sub(a, eye);
+    double reach = fabs(to_a.x) + fabs(to_a.y) + fabs(to_a.z);
+    if (fabs(v3_dot(normal, to_a)) > 64 * DBL_EPSILON * reach)
+        return;
+    double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z},
+           pc[3] = {c.x, c.y, c.z}, o[3] = {eye.x, eye.y, eye.z};
+    if (rt__plane_side(pa, pb, pc, o) != 0)
+        return;
+    rt__notes_add_kind(notes, edge_on_kind, name, line, 1,
+                       "facet %d lies in a plane through the eye (or within "
+                       "1e-30 of its size from it): camera rays never meet "
+                       "it", facet + 1);
+}
+
 /* The repeats found: how many, and the first. */
 typedef struct repeats {
     int count;
@@ -271,6 +303,8 @@ static void add_facets(rt_scene *s, const rt_scene_desc *d,
             continue;
         }
         previous = i;
+        check_edge_on(notes, name, i, info->line, info->normal, a, b, c,
+                      d->observer);
         s->live_count++;
         s->reflective_count += f->k > 0.0;
         s->transparent_count += f->t > 0.0;

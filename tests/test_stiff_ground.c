@@ -168,6 +168,59 @@ START_TEST(float_refuses_coordinates_beyond_its_products_range)
 }
 END_TEST
 
+/* The number of warnings of `scene` that contain `text`. */
+static int warnings_with(const rt_scene *scene, const char *text)
+{
+    rt_scene_info info;
+    rt_scene_get_info(scene, &info);
+    int found = 0;
+    for (int i = 0; i < info.warning_count; i++)
+        found += strstr(rt_scene_warning(scene, i)->message, text) != NULL;
+    return found;
+}
+
+/* Beyond the measured limit (a ratio of 1e30) the loader says which
+ * facets the eye cannot be placed against - here both halves of the
+ * ground at 1e32 - and says nothing at 1e30 or for a ground seen from
+ * 1.7 above at ordinary ratios. */
+START_TEST(the_loader_warns_beyond_the_crossing_s_limit)
+{
+    static const struct {
+        const char *ratio;
+        int warnings;
+    } cases[] = {{"1e3", 0}, {"1e16", 0}, {"1e30", 0}, {"1e32", 2}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const ground_case c = {cases[k].ratio, "tilted", RT_PRECISION_DOUBLE};
+        char scene_path[256], expected_path[256];
+        generate(&c, scene_path, expected_path, sizeof scene_path);
+        rt_scene *scene;
+        rt_error error;
+        ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK,
+                      "%s", error.message);
+        ck_assert_msg(warnings_with(scene, "plane through the eye") ==
+                          cases[k].warnings,
+                      "ratio %s: expected %d warnings", cases[k].ratio,
+                      cases[k].warnings);
+        rt_scene_destroy(scene);
+    }
+}
+END_TEST
+
+/* An eye exactly in a facet's plane: the facet is named (camera rays
+ * never meet it), the others not. */
+START_TEST(the_loader_names_a_facet_in_a_plane_through_the_eye)
+{
+    rt_scene *scene = rt_test_scene_from_string(
+        "0,0,0\n0,1,0, 1,1,0, 16,16\n"
+        "6\n-1,2,0\n1,2,0\n0,3,0\n-1,2,-1\n1,2,-1\n0,3,-1\n"
+        "2\n1,2,3, 0, 255,0,0\n4,5,6, 0, 0,255,0\n"
+        "0,0,0\n0,0,5, 255,255,255\n");
+    ck_assert_int_eq(warnings_with(scene, "plane through the eye"), 1);
+    ck_assert_int_eq(warnings_with(scene, "facet 1 lies in a plane"), 1);
+    rt_scene_destroy(scene);
+}
+END_TEST
+
 static Suite *stiff_ground_suite(void)
 {
     Suite *s = suite_create("stiff_ground");
@@ -176,6 +229,8 @@ static Suite *stiff_ground_suite(void)
     tcase_add_loop_test(c, stiff_ground_renders_the_exact_image_in_every_kernel,
                         0, CASE_COUNT);
     tcase_add_test(c, float_refuses_coordinates_beyond_its_products_range);
+    tcase_add_test(c, the_loader_warns_beyond_the_crossing_s_limit);
+    tcase_add_test(c, the_loader_names_a_facet_in_a_plane_through_the_eye);
     suite_add_tcase(s, c);
     return s;
 }

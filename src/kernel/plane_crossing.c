@@ -148,31 +148,52 @@ static double length_above(const dd n[3])
     return sqrt(squares) * (1 + 8 * U) + errors;
 }
 
+/* The plane's normal n = (b - a) x (c - a) and n.(a - o), both from the
+ * corners relative to o scaled by 2^-e (returned): n scaled by 2^-2e,
+ * n.(a - o) by 2^-3e. */
+static int plane_terms(const double a[3], const double b[3],
+                       const double c[3], const double o[3], dd n[3],
+                       dd *along)
+{
+    dd corner[3][3];
+    const double *vertex[3] = {a, b, c};
+    for (int v = 0; v < 3; v++)
+        for (int i = 0; i < 3; i++)
+            corner[v][i] = exact_difference(vertex[v][i], o[i]);
+    int e = exponent_above(&corner[0][0], 9);
+    for (int v = 0; v < 3; v++)
+        for (int i = 0; i < 3; i++)
+            corner[v][i] = scaled(corner[v][i], -e);
+    for (int i = 0; i < 3; i++)
+        n[i] = cross_sum(corner[0], corner[1], corner[2], i);
+    *along = dot3(n, corner[0]);
+    return e;
+}
+
+int rt__plane_side(const double a[3], const double b[3], const double c[3],
+                   const double o[3])
+{
+    dd n[3], along;
+    plane_terms(a, b, c, o, n, &along);
+    if (!sign_certain(along, 0))
+        return 0;
+    return along.hi > 0 ? 1 : -1;
+}
+
 int rt__plane_crossing(const double a[3], const double b[3],
                        const double c[3], const double o[3],
                        const double d[3], double origin_error, double *t,
                        double *error)
 {
-    dd corner[3][3], direction[3];
-    const double *vertex[3] = {a, b, c};
-    for (int v = 0; v < 3; v++)
-        for (int i = 0; i < 3; i++)
-            corner[v][i] = exact_difference(vertex[v][i], o[i]);
+    /* t = n.(a - o) / n.d, both scaled: t = (N / D) 2^(e - f). */
+    dd n[3], along, direction[3];
+    int e = plane_terms(a, b, c, o, n, &along);
     for (int i = 0; i < 3; i++)
         direction[i] = exact(d[i]);
-    int e = exponent_above(&corner[0][0], 9),
-        f = exponent_above(direction, 3);
-    for (int v = 0; v < 3; v++)
-        for (int i = 0; i < 3; i++)
-            corner[v][i] = scaled(corner[v][i], -e);
+    int f = exponent_above(direction, 3);
     for (int i = 0; i < 3; i++)
         direction[i] = scaled(direction[i], -f);
-    /* n = (b - a) x (c - a) from the corners relative to o; then
-     * t = n.(a - o) / n.d, both scaled: t = (N / D) 2^(e - f). */
-    dd n[3];
-    for (int i = 0; i < 3; i++)
-        n[i] = cross_sum(corner[0], corner[1], corner[2], i);
-    dd along = dot3(n, corner[0]), across = dot3(n, direction);
+    dd across = dot3(n, direction);
     /* |along| / |n| is the origin's distance from the plane (scaled) */
     double room = ldexp(origin_error, -e) * length_above(n) * (1 + 8 * U);
     if (!sign_certain(along, room) || !sign_certain(across, 0))

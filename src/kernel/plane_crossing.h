@@ -30,4 +30,13 @@ int rt__plane_crossing(const double a[3], const double b[3],
                        const double d[3], double origin_error, double *t,
                        double *error);
 
+/*
+ * Which side of the plane through a, b, c (finite, not of zero area) the
+ * point o lies on: 1 on the side of (b - a) x (c - a), -1 on the other,
+ * 0 when the double-double evaluation cannot tell (o in the plane, or
+ * within about 1e-30 of the facet's size from it).  Thread-safe.
+ */
+int rt__plane_side(const double a[3], const double b[3], const double c[3],
+                   const double o[3]);
+
 #endif /* RAYTRACE_PLANE_CROSSING_H */
