@@ -258,7 +258,11 @@ START_TEST(zero_area_facets_are_left_out_of_a_sphere_with_one_warning)
     double rho = 128 / tan(PI / 8) * 5e-10 / 1.5e-9;
     ck_assert_int_eq(info.facet_count + dropped,
                      expected_sphere_facets(rho, 1e300));
-    ck_assert_int_le(info.warning_count, 3);
+    /* Besides those, only the facets the rounding puts in the plane
+     * x = 1e6, which holds the eye, are named (edge-on: never seen). */
+    ck_assert_int_le(info.warning_count -
+                         load_count_warnings(scene, "plane through the eye"),
+                     3);
     rt_scene_destroy(scene);
 }
 END_TEST
