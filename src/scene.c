@@ -215,7 +215,7 @@ static int same_corners(const rt_scene_desc *d, const rt_facet_desc *f,
 
 /* The kind of the warning for a facet whose plane passes through the eye
  * (or too near it to tell). */
-static const char edge_on_kind[] = "facets edge-on to the eye";
+static const char edge_on_kind[] = "facets in a plane through the eye";
 
 /*
  * Warns when the eye lies in the plane of the facet (a, b, c), or so near
