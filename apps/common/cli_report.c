@@ -1,13 +1,16 @@
 /*
  * cli_report.c - the progress line and the statistics of a render (see
  * cli_report.h).  The JSON is written by hand: a flat object of numbers
- * and a few strings, so a library would buy nothing; strings are escaped
- * as RFC 8259 asks.
+ * and a few strings, so a library would buy nothing; strings go through
+ * cli_json_string (cli_text.h), valid UTF-8 and valid JSON whatever the
+ * names hold.
  */
 #include "cli_report.h"
 
 #include <stdint.h>
 #include <string.h>
+
+#include "cli_text.h"
 
 double cli_seconds_since(const struct timespec *t)
 {
@@ -160,22 +163,6 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
             (unsigned long long)s->accel_fallbacks);
 }
 
-/* A JSON string: quotes, backslashes and control characters escaped;
- * other bytes as they are (scene names are the user's bytes). */
-static void json_string(FILE *out, const char *text)
-{
-    fputc('"', out);
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        if (*c == '"' || *c == '\\')
-            fprintf(out, "\\%c", *c);
-        else if (*c < 0x20)
-            fprintf(out, "\\u%04x", *c);
-        else
-            fputc(*c, out);
-    }
-    fputc('"', out);
-}
-
 static void json_u64(FILE *out, const char *name, uint64_t value,
                      const char *after)
 {
@@ -225,13 +212,13 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
                           const cli_render_report *r)
 {
     fputs("{\"program\":", out);
-    json_string(out, r->program);
+    cli_json_string(out, r->program);
     fputs(",\"version\":", out);
-    json_string(out, rt_version_string());
+    cli_json_string(out, rt_version_string());
     fputs(",\"scene\":", out);
-    json_string(out, r->scene);
+    cli_json_string(out, r->scene);
     fputs(",\"output\":", out);
-    json_string(out, r->output);
+    cli_json_string(out, r->output);
     fprintf(out, ",\"format\":\"%s\",\"width\":%d,\"height\":%d,",
             rt_image_format_name(r->format), r->width, r->height);
     json_u64(out, "pixels", s->pixels, ",");
