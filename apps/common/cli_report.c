@@ -63,9 +63,11 @@ static void draw(cli_progress *p, double elapsed)
                     sizeof left);
     format_rate(p->rays_per_row * p->done / (elapsed > 0 ? elapsed : 1e-9),
                 rate, sizeof rate);
+    char name[1024];
     /* the trailing spaces wipe a longer line drawn before */
     fprintf(p->out, "%srendering %s: %3d%%, %s, %s left, %s camera rays/s%s",
-            p->terminal ? "\r" : "", p->name,
+            p->terminal ? "\r" : "",
+            cli_printable(p->name, name, sizeof name),
             (int)(100.0 * p->done / p->rows), spent, left, rate,
             p->terminal ? "   " : "\n");
     fflush(p->out);
