@@ -22,3 +22,14 @@ add_test(NAME test_json_output_python COMMAND raytrace_test_json_output python
          WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
 set_tests_properties(test_json_output_python PROPERTIES SKIP_RETURN_CODE 77
                      TIMEOUT 120)
+# What the programs write (tests/test_cli_outputs.c): never over an input,
+# rt-convert on the option table, a failed final save that keeps the image.
+# `test_cli_outputs_sources` checks the material-library cases once the
+# loader lists the files it read; until then it exits 77, a skip.
+raytrace_add_suite(test_cli_outputs SOURCES program_util.c)
+set_tests_properties(test_cli_outputs PROPERTIES TIMEOUT 300)
+add_test(NAME test_cli_outputs_sources
+         COMMAND raytrace_test_cli_outputs sources
+         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+set_tests_properties(test_cli_outputs_sources PROPERTIES
+                     SKIP_RETURN_CODE 77 TIMEOUT 120)

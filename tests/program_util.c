@@ -4,6 +4,7 @@
 #include "program_util.h"
 
 #include <check.h>
+#include <errno.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <stdio.h>
@@ -82,15 +83,13 @@ static char **environment_with(const char *tmpdir, char **added)
     return env;
 }
 
-run run_with(const char *dir, const char *program, const char *const *args,
-             const run_setup *setup)
+/* Starts `program` as `setup` says; standard error into the file
+ * err_path, or into a new pipe whose read end goes to *err_fd when
+ * err_path is NULL.  Returns its pid. */
+static pid_t spawn(const char *dir, const char *program,
+                   const char *const *args, const run_setup *setup,
+                   const char *out_path, const char *err_path, int *err_fd)
 {
-    run_setup none = {NULL, NULL, NULL};
-    if (setup == NULL)
-        setup = &none;
-    char out_path[4200], err_path[4200];
-    snprintf(out_path, sizeof out_path, "%s/..out", dir);
-    snprintf(err_path, sizeof err_path, "%s/..err", dir);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(
@@ -99,8 +98,16 @@ run run_with(const char *dir, const char *program, const char *const *args,
     posix_spawn_file_actions_addopen(
         &actions, 1, setup->stdout_path ? setup->stdout_path : out_path,
         O_WRONLY | O_CREAT | (setup->stdout_path ? 0 : O_TRUNC), 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_path,
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int pipe_ends[2] = {-1, -1};
+    if (err_path != NULL) {
+        posix_spawn_file_actions_addopen(&actions, 2, err_path,
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    } else {
+        ck_assert_int_eq(pipe(pipe_ends), 0);
+        posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], 2);
+        posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
+        posix_spawn_file_actions_addclose(&actions, pipe_ends[1]);
+    }
     char *argv[32];
     int argc = 0;
     argv[argc++] = (char *)program;
@@ -122,8 +129,18 @@ run run_with(const char *dir, const char *program, const char *const *args,
         free(added);
         free(env);
     }
+    if (err_path == NULL) {
+        close(pipe_ends[1]);
+        *err_fd = pipe_ends[0];
+    }
     ck_assert_msg(failed == 0, "cannot start %s: %s", program,
                   strerror(failed));
+    return pid;
+}
+
+/* Waits for `pid` and reads back what it wrote. */
+static run collect(pid_t pid, const run_setup *setup, const char *out_path)
+{
     int status;
     ck_assert_int_eq(waitpid(pid, &status, 0), pid);
     run r;
@@ -136,9 +153,84 @@ run run_with(const char *dir, const char *program, const char *const *args,
         r.out = strdup("");
         r.out_size = 0;
     }
+    ck_assert_ptr_nonnull(r.out);
+    r.err = NULL;
+    return r;
+}
+
+static const run_setup no_setup = {NULL, NULL, NULL};
+
+run run_with(const char *dir, const char *program, const char *const *args,
+             const run_setup *setup)
+{
+    if (setup == NULL)
+        setup = &no_setup;
+    char out_path[4200], err_path[4200];
+    snprintf(out_path, sizeof out_path, "%s/..out", dir);
+    snprintf(err_path, sizeof err_path, "%s/..err", dir);
+    pid_t pid = spawn(dir, program, args, setup, out_path, err_path, NULL);
+    run r = collect(pid, setup, out_path);
     r.err = rt_test_read_file(err_path, NULL);
     unlink(err_path);
-    ck_assert_ptr_nonnull(r.out);
+    ck_assert_ptr_nonnull(r.err);
+    return r;
+}
+
+started start_piped(const char *dir, const char *program,
+                    const char *const *args, const run_setup *setup)
+{
+    if (setup == NULL)
+        setup = &no_setup;
+    started s = {0, -1, NULL, 0, {0}};
+    s.setup = *setup;
+    snprintf(s.out_path, sizeof s.out_path, "%s/..out", dir);
+    s.pid = spawn(dir, program, args, setup, s.out_path, NULL, &s.err_fd);
+    return s;
+}
+
+/* Appends what one read(2) of the pipe gives to s->err; 0 at its end. */
+static int read_some(started *s)
+{
+    char chunk[4096];
+    ssize_t n;
+    do
+        n = read(s->err_fd, chunk, sizeof chunk);
+    while (n < 0 && errno == EINTR);
+    ck_assert_int_ge(n, 0);
+    if (n == 0)
+        return 0;
+    char *grown = realloc(s->err, s->err_length + (size_t)n + 1);
+    ck_assert_ptr_nonnull(grown);
+    memcpy(grown + s->err_length, chunk, (size_t)n);
+    s->err = grown;
+    s->err_length += (size_t)n;
+    s->err[s->err_length] = '\0';
+    return 1;
+}
+
+int wait_for_line(started *s, const char *start)
+{
+    for (;;) {
+        for (const char *at = s->err; at != NULL && *at;) {
+            const char *end = strchr(at, '\n');
+            if (end == NULL)
+                break;
+            if (strncmp(at, start, strlen(start)) == 0)
+                return 1;
+            at = end + 1;
+        }
+        if (!read_some(s))
+            return 0;
+    }
+}
+
+run finish_piped(started *s)
+{
+    while (read_some(s))
+        continue;
+    close(s->err_fd);
+    run r = collect(s->pid, &s->setup, s->out_path);
+    r.err = s->err ? s->err : strdup("");
     ck_assert_ptr_nonnull(r.err);
     return r;
 }

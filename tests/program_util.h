@@ -9,6 +9,7 @@
 #define RAYTRACE_TESTS_PROGRAM_UTIL_H
 
 #include <stddef.h>
+#include <sys/types.h>
 
 #include "testutil.h"
 
@@ -48,6 +49,27 @@ run run_in(const char *dir, const char *program, const char *const *args);
 /* The same, started as `setup` says. */
 run run_with(const char *dir, const char *program, const char *const *args,
              const run_setup *setup);
+
+/* A program started with its standard error into a pipe, read as it
+ * comes (a test acts when a line appears: the first progress line). */
+typedef struct started {
+    pid_t pid;
+    int err_fd;             /* the pipe's read end */
+    char *err;              /* what was read so far, NUL-terminated */
+    size_t err_length;
+    char out_path[4200];    /* where its standard output goes */
+    run_setup setup;
+} started;
+
+started start_piped(const char *dir, const char *program,
+                    const char *const *args, const run_setup *setup);
+
+/* Reads standard error until a whole line starting with `start` has come:
+ * 1, or 0 when the program closed it first. */
+int wait_for_line(started *s, const char *start);
+
+/* Reads the rest, waits for the program's end; the run it made. */
+run finish_piped(started *s);
 
 /* Whether python3 and its json module are installed. */
 int python_has_json(void);
