@@ -63,11 +63,22 @@ START_TEST(read_number_takes_what_a_scene_file_takes)
 {
     for (size_t i = 0; i < sizeof numbers / sizeof *numbers; i++) {
         double value = 42, in_scene = 0;
+        rt_error error;
+        memset(&error, 0, sizeof error);
         rt_status status = rt_scene_read_number(
-            numbers[i].text, strlen(numbers[i].text), &value);
+            numbers[i].text, strlen(numbers[i].text), &value, &error);
         ck_assert_msg(status == numbers[i].status, "'%s': %s, expected %s",
                       numbers[i].text, rt_status_string(status),
                       rt_status_string(numbers[i].status));
+        if (status != RT_OK) {
+            /* the error says why, naming the text */
+            char found[64];
+            snprintf(found, sizeof found, "found `%s`", numbers[i].text);
+            ck_assert_int_eq(error.status, status);
+            ck_assert_msg(strncmp(error.message, "expected ", 9) == 0 &&
+                              strstr(error.message, found),
+                          "'%s': %s", numbers[i].text, error.message);
+        }
         rt_status scene = parse_observer(numbers[i].text, &in_scene);
         ck_assert_msg((scene == RT_OK) == (status == RT_OK),
                       "'%s': the scene reader says %s, the rule %s",
@@ -85,10 +96,10 @@ END_TEST
 START_TEST(read_number_takes_a_subnormal_as_it_is)
 {
     double v;
-    ck_assert_int_eq(rt_scene_read_number("1e-320", 6, &v), RT_OK);
+    ck_assert_int_eq(rt_scene_read_number("1e-320", 6, &v, NULL), RT_OK);
     ck_assert(v > 0 && v < DBL_MIN);
     ck_assert_double_eq(v, strtod("1e-320", NULL));
-    ck_assert_int_eq(rt_scene_read_number("1e-400", 6, &v), RT_OK);
+    ck_assert_int_eq(rt_scene_read_number("1e-400", 6, &v, NULL), RT_OK);
     ck_assert_double_eq(v, 0.0);
 }
 END_TEST
@@ -96,16 +107,24 @@ END_TEST
 START_TEST(read_number_reads_only_the_length_given_and_refuses_null)
 {
     double v = 0;
-    ck_assert_int_eq(rt_scene_read_number("12,34", 2, &v), RT_OK);
+    ck_assert_int_eq(rt_scene_read_number("12,34", 2, &v, NULL), RT_OK);
     ck_assert_double_eq(v, 12);
-    ck_assert_int_eq(rt_scene_read_number("12,34", 5, &v), RT_ERR_SYNTAX);
-    ck_assert_int_eq(rt_scene_read_number("", 0, &v), RT_ERR_SYNTAX);
-    ck_assert_int_eq(rt_scene_read_number(NULL, 1, &v), RT_ERR_ARGUMENT);
-    ck_assert_int_eq(rt_scene_read_number("1", 1, NULL), RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_scene_read_number("12,34", 5, &v, NULL),
+                     RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_scene_read_number("", 0, &v, NULL), RT_ERR_SYNTAX);
+    rt_error error;
+    ck_assert_int_eq(rt_scene_read_number(NULL, 1, &v, &error),
+                     RT_ERR_ARGUMENT);
+    ck_assert_int_eq(error.status, RT_ERR_ARGUMENT);
+    ck_assert_int_eq(rt_scene_read_number("1", 1, NULL, NULL),
+                     RT_ERR_ARGUMENT);
     char longest[258];
     memset(longest, '1', sizeof longest);
-    ck_assert_int_eq(rt_scene_read_number(longest, 256, &v), RT_OK);
-    ck_assert_int_eq(rt_scene_read_number(longest, 257, &v), RT_ERR_LIMIT);
+    ck_assert_int_eq(rt_scene_read_number(longest, 256, &v, NULL), RT_OK);
+    ck_assert_int_eq(rt_scene_read_number(longest, 257, &v, &error),
+                     RT_ERR_LIMIT);
+    ck_assert_msg(strstr(error.message, "at most 256 characters"), "%s",
+                  error.message);
 }
 END_TEST
 

@@ -31,7 +31,7 @@ static int read_list(const char *text, int count_min, int count_max,
     for (const char *at = text;;) {
         size_t length = strcspn(at, ",");
         if (n == count_max || n == MAX_LIST ||
-            rt_scene_read_number(at, length, &out[n]) != RT_OK)
+            rt_scene_read_number(at, length, &out[n], NULL) != RT_OK)
             return 0;
         pieces[n] = at;
         lengths[n++] = length;
@@ -74,7 +74,7 @@ cli_read cli_read_integer(const char *text, double min, double max,
              square ? "a square (1, 4, 9, 16, ...)" : "an integer", low,
              high);
     double v;
-    if (rt_scene_read_number(text, strlen(text), &v) != RT_OK ||
+    if (rt_scene_read_number(text, strlen(text), &v, NULL) != RT_OK ||
         !is_whole(v))
         return CLI_READ_SYNTAX;
     if (v < min || v > max)
@@ -104,7 +104,7 @@ cli_read cli_read_real(const char *text, double min, double max,
     cli_real_limits(min, max, open_min, problem->expected,
                     sizeof problem->expected);
     double v;
-    if (rt_scene_read_number(text, strlen(text), &v) != RT_OK)
+    if (rt_scene_read_number(text, strlen(text), &v, NULL) != RT_OK)
         return CLI_READ_SYNTAX;
     if (v < min || (open_min && v == min) || v > max ||
         (v == max && !isinf(max)))
@@ -197,7 +197,7 @@ cli_read cli_read_size(const char *text, int max, int *width, int *height,
     size_t lengths[2] = {first, strlen(text + first + 1)};
     double v[2];
     for (int i = 0; i < 2; i++)
-        if (rt_scene_read_number(pieces[i], lengths[i], &v[i]) != RT_OK)
+        if (rt_scene_read_number(pieces[i], lengths[i], &v[i], NULL) != RT_OK)
             return CLI_READ_SYNTAX;
     cli_read read = wholes_in(v, pieces, lengths, 2, 1, max, names,
                               problem);

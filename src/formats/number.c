@@ -13,6 +13,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "error.h"
 #include "formats/reader.h"
 
 int rt__number_syntax(const char *text, size_t length)
@@ -49,23 +50,49 @@ static int names_a_special_value(const char *text, size_t length)
                            strncasecmp(text, "inf", 3) == 0);
 }
 
+/* text[0..length) as a message shows it: at most 40 characters, a byte
+ * that is not printable ASCII as '?', then "..." when cut. */
+static const char *show(const char *text, size_t length, char *out,
+                        size_t size)
+{
+    size_t n = length < 40 ? length : 40;
+    if (n > size - 4)
+        n = size - 4;
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)text[i];
+        out[i] = c >= 0x20 && c < 0x7f ? (char)c : '?';
+    }
+    strcpy(out + n, length > n ? "..." : "");
+    return out;
+}
+
 rt_status rt_scene_read_number(const char *text, size_t length,
-                               double *value)
+                               double *value, rt_error *error)
 {
     if (text == NULL || value == NULL)
-        return RT_ERR_ARGUMENT;
-    if (!rt__number_syntax(text, length))
-        return names_a_special_value(text, length) ? RT_ERR_RANGE
-                                                   : RT_ERR_SYNTAX;
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "expected a text and a place for its value");
+    char shown[48];
+    if (!rt__number_syntax(text, length)) {
+        int special = names_a_special_value(text, length);
+        return rt__error_set(error, special ? RT_ERR_RANGE : RT_ERR_SYNTAX,
+                             NULL, 0, 0, "expected %s, found `%s`",
+                             special ? "a finite number" : "a number",
+                             show(text, length, shown, sizeof shown));
+    }
     if (length > RT__MAX_NUMBER_LENGTH)
-        return RT_ERR_LIMIT;
+        return rt__error_set(error, RT_ERR_LIMIT, NULL, 0, 0,
+                             "expected a number of at most %d characters, "
+                             "found `%s`", RT__MAX_NUMBER_LENGTH,
+                             show(text, length, shown, sizeof shown));
     char copy[RT__MAX_NUMBER_LENGTH + 1];
     memcpy(copy, text, length);
     copy[length] = '\0';
     /* the C locale's decimal point whatever the caller's locale */
     locale_t c_locale = newlocale(LC_NUMERIC_MASK, "C", (locale_t)0);
     if (c_locale == (locale_t)0)
-        return RT_ERR_NOMEM;
+        return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                             "out of memory for the C locale");
     locale_t previous = uselocale(c_locale);
     double v = strtod(copy, NULL);
     uselocale(previous);
@@ -73,7 +100,10 @@ rt_status rt_scene_read_number(const char *text, size_t length,
     /* an underflow is no error: a subnormal (or zero) is the nearest
      * double, as the readers take it */
     if (!isfinite(v))
-        return RT_ERR_RANGE;
+        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
+                             "expected a finite number, found `%s` (beyond "
+                             "a double's range)",
+                             show(text, length, shown, sizeof shown));
     *value = v;
     return RT_OK;
 }
