@@ -39,14 +39,6 @@ const char *in_dir(const char *dir, const char *name)
     return path;
 }
 
-void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "wb");
-    ck_assert_msg(f != NULL, "cannot write %s", path);
-    ck_assert_int_eq(fputs(text, f) >= 0, 1);
-    ck_assert_int_eq(fclose(f), 0);
-}
-
 void run_free(run *r)
 {
     free(r->out);
@@ -233,6 +225,33 @@ run finish_piped(started *s)
     r.err = s->err ? s->err : strdup("");
     ck_assert_ptr_nonnull(r.err);
     return r;
+}
+
+int loader_lists_its_files(void)
+{
+    rt_scene *scene;
+    if (rt_scene_load_with(rt_test_source_path("tests/data/obj/cube.obj"),
+                           NULL, &scene, NULL) != RT_OK)
+        return 0;
+    int count = rt_scene_source_count(scene);
+    rt_scene_destroy(scene);
+    return count >= 2;
+}
+
+int main_with_sources(int argc, char **argv, Suite *(*main_fn)(void),
+                      Suite *(*sources_fn)(void), const char *prog)
+{
+    if (argc > 1 && strcmp(argv[1], "sources") == 0) {
+        if (!loader_lists_its_files()) {
+            fprintf(stderr, "%s: the loader does not list the files a load "
+                            "read yet (rt_scene_source_count is 0); the "
+                            "material-library cases are not checked\n",
+                    prog);
+            return RT_TEST_SKIPPED;
+        }
+        return rt_test_run_suite(sources_fn());
+    }
+    return rt_test_run_suite(main_fn());
 }
 
 int python_has_json(void)

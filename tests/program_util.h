@@ -1,9 +1,11 @@
 /*
  * program_util.h - running the project's programs as a user does, for the
  * suites of the command line (test_cli.c, test_cli_outputs.c,
- * test_cli_json.c, test_cli_numbers.c, test_explain_terms.c): a fresh
- * folder, files in it, and a program run there with its standard streams
- * captured (or given), its exit status read back.
+ * test_json_output.c, test_cli_numbers.c, test_explain_terms.c,
+ * test_viewer_outputs.c): a fresh folder, files in it, a program run there
+ * with its standard streams captured (or given) and its exit status read
+ * back, and the main of a suite whose checks wait for the loader's list of
+ * the files it read.
  */
 #ifndef RAYTRACE_TESTS_PROGRAM_UTIL_H
 #define RAYTRACE_TESTS_PROGRAM_UTIL_H
@@ -21,9 +23,6 @@ void remove_dir(char *dir);
 
 /* dir/name in a static buffer (one of four at a time). */
 const char *in_dir(const char *dir, const char *name);
-
-/* Writes `text` to `path`, replacing it. */
-void write_text(const char *path, const char *text);
 
 /* What a run of a program gave. */
 typedef struct run {
@@ -70,6 +69,16 @@ int wait_for_line(started *s, const char *start);
 
 /* Reads the rest, waits for the program's end; the run it made. */
 run finish_piped(started *s);
+
+/* Whether the loader lists the files a load read (rt_scene_source_at):
+ * the OBJ of tests/data/obj and its material library. */
+int loader_lists_its_files(void);
+
+/* The main of a suite with a `sources` entry: `prog` runs main_fn's
+ * suite; `prog sources` runs sources_fn's, or exits RT_TEST_SKIPPED (with
+ * a line naming `prog`) while the loader lists no files. */
+int main_with_sources(int argc, char **argv, Suite *(*main_fn)(void),
+                      Suite *(*sources_fn)(void), const char *prog);
 
 /* Whether python3 and its json module are installed. */
 int python_has_json(void);

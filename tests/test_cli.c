@@ -389,7 +389,7 @@ static void write_cubes_at(const char *dir, const char *name, int width,
             out[used++] = *line++;
     }
     out[used] = '\0';
-    write_text(in_dir(dir, name), out);
+    rt_test_write_file(in_dir(dir, name), out);
     free(out);
     free(text);
 }
@@ -556,8 +556,8 @@ static void check_json(const char *dir, const char *err, const char *w,
                        const char *h, const char *samples,
                        const char *region, const char *scene)
 {
-    write_text(in_dir(dir, "check.py"), json_check);
-    write_text(in_dir(dir, "stats.txt"), err);
+    rt_test_write_file(in_dir(dir, "check.py"), json_check);
+    rt_test_write_file(in_dir(dir, "stats.txt"), err);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 check.py %s %s 40 30 %s '%s' '%s' "
@@ -571,7 +571,7 @@ START_TEST(stats_json_is_one_object_a_json_parser_reads)
     char *dir = fresh_dir();
     /* a name that needs escaping: a quote and a backslash */
     char *text = rt_test_read_file(cubes(), NULL);
-    write_text(in_dir(dir, "cu\"b\\es.scn"), text);
+    rt_test_write_file(in_dir(dir, "cu\"b\\es.scn"), text);
     free(text);
     const char *whole[] = {"cu\"b\\es.scn", "--size=40x30", "--stats=json",
                            "-q", "-o", "out.ppm", NULL};

@@ -44,7 +44,7 @@ static void copy_in(const char *dir, const char *relative, const char *name)
 {
     char *text = rt_test_read_file(rt_test_source_path(relative), NULL);
     ck_assert_ptr_nonnull(text);
-    write_text(in_dir(dir, name), text);
+    rt_test_write_file(in_dir(dir, name), text);
     free(text);
 }
 
@@ -84,23 +84,50 @@ static void assert_refused(const run *r, const char *program,
 /* ------------------------------------------------------------------ */
 /* Nothing over the scene                                              */
 
-START_TEST(export_refuses_its_scene_by_every_name)
+/* dir/s.scn (the cubes), with a symbolic link link.scn and a hard link
+ * hard.scn to it. */
+static void scene_with_links(const char *dir)
 {
-    char *dir = fresh_dir();
     copy_in(dir, "scenes/cubes.scn", "s.scn");
     ck_assert_int_eq(symlink("s.scn", in_dir(dir, "link.scn")), 0);
     ck_assert_int_eq(link(in_dir(dir, "s.scn"), in_dir(dir, "hard.scn")), 0);
-    const char *names[] = {"s.scn", "./s.scn", "link.scn", "hard.scn"};
-    for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
-        const char *args[] = {"s.scn", "-o", names[i], "--format", "p6",
-                              "-q", NULL};
-        run r = run_in(dir, RT_EXPORT_PATH, args);
-        assert_refused(&r, "rt-export", names[i], "the image", "s.scn",
+}
+
+/* Where the output's name goes in assert_every_name_refused's args. */
+#define NAME "<name>"
+
+/* Runs `program` in dir once for each of names (NULL-terminated), with
+ * `args` where the entry NAME is that name; each must be refused as an
+ * output over s.scn, which stays as it was. */
+static void assert_every_name_refused(const char *dir, const char *program,
+                                      const char *const *args,
+                                      const char *const *names)
+{
+    int convert = strcmp(program, RT_CONVERT_PATH) == 0;
+    for (size_t i = 0; names[i] != NULL; i++) {
+        const char *with[16];
+        size_t n = 0;
+        for (; args[n] != NULL && n < 15; n++)
+            with[n] = strcmp(args[n], NAME) ? args[n] : names[i];
+        with[n] = NULL;
+        run r = run_in(dir, program, with);
+        assert_refused(&r, convert ? "rt-convert" : "rt-export", names[i],
+                       convert ? "the scene" : "the image", "s.scn",
                        "the scene it comes from");
         ck_assert_str_eq(r.out, "");
         run_free(&r);
         assert_intact(dir, "s.scn", "scenes/cubes.scn");
     }
+}
+
+START_TEST(export_refuses_its_scene_by_every_name)
+{
+    char *dir = fresh_dir();
+    scene_with_links(dir);
+    const char *names[] = {"s.scn", "./s.scn", "link.scn", "hard.scn",
+                           NULL};
+    const char *args[] = {"s.scn", "-o", NAME, "--format", "p6", "-q", NULL};
+    assert_every_name_refused(dir, RT_EXPORT_PATH, args, names);
     remove_dir(dir);
 }
 END_TEST
@@ -150,7 +177,7 @@ static void write_obj(const char *dir)
     char *at = strstr(obj, "mtllib cube.mtl");
     ck_assert_ptr_nonnull(at);
     memcpy(at, "mtllib    m.mtl", 15);
-    write_text(in_dir(dir, "m.obj"), obj);
+    rt_test_write_file(in_dir(dir, "m.obj"), obj);
     free(obj);
     copy_in(dir, "tests/data/obj/cube.mtl", "m.mtl");
 }
@@ -182,19 +209,10 @@ START_TEST(convert_refuses_its_scene_by_every_name)
     run_free(&r);
     assert_obj_intact(dir);
     /* a .scn over itself, through a link named .scn */
-    copy_in(dir, "scenes/cubes.scn", "s.scn");
-    ck_assert_int_eq(symlink("s.scn", in_dir(dir, "link.scn")), 0);
-    ck_assert_int_eq(link(in_dir(dir, "s.scn"), in_dir(dir, "hard.scn")), 0);
-    const char *names[] = {"s.scn", "link.scn", "hard.scn"};
-    for (size_t i = 0; i < 3; i++) {
-        const char *args[] = {"s.scn", names[i], "--extended", NULL};
-        r = run_in(dir, RT_CONVERT_PATH, args);
-        assert_refused(&r, "rt-convert", names[i], "the scene", "s.scn",
-                       "the scene it comes from");
-        ck_assert_str_eq(r.out, "");
-        run_free(&r);
-        assert_intact(dir, "s.scn", "scenes/cubes.scn");
-    }
+    scene_with_links(dir);
+    const char *names[] = {"s.scn", "link.scn", "hard.scn", NULL};
+    const char *args[] = {"s.scn", NAME, "--extended", NULL};
+    assert_every_name_refused(dir, RT_CONVERT_PATH, args, names);
     remove_dir(dir);
 }
 END_TEST
@@ -251,19 +269,6 @@ START_TEST(convert_refuses_the_material_library_its_obj_read)
     remove_dir(dir);
 }
 END_TEST
-
-/* Whether the loader lists the files a load read (h-obj's part of the
- * contract in raytrace/scene.h): the scene file comes first. */
-static int loader_lists_its_files(void)
-{
-    rt_scene *scene;
-    if (rt_scene_load_with(rt_test_source_path("tests/data/obj/cube.obj"),
-                           NULL, &scene, NULL) != RT_OK)
-        return 0;
-    int count = rt_scene_source_count(scene);
-    rt_scene_destroy(scene);
-    return count >= 2;
-}
 
 /* ------------------------------------------------------------------ */
 /* rt-convert on the option table                                      */
@@ -386,14 +391,7 @@ END_TEST
  * before its end - about 2 s optimised, and the same work would take
  * minutes under AddressSanitizer, whose programs run some 30 times slower:
  * there a sixteenth of it does. */
-#if defined(__SANITIZE_ADDRESS__)
-#define UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define UNDER_ASAN 1
-#endif
-#endif
-#ifdef UNDER_ASAN
+#if UNDER_ASAN
 #define SLOW "--samples", "4", "-j", "1"
 #else
 #define SLOW "--samples", "64", "-j", "1"
@@ -594,14 +592,6 @@ static Suite *sources_suite(void)
  * while the loader lists none. */
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "sources") == 0) {
-        if (!loader_lists_its_files()) {
-            fprintf(stderr, "test_cli_outputs: the loader does not list the "
-                            "files a load read yet (rt_scene_source_count "
-                            "is 0); the library cases are not checked\n");
-            return RT_TEST_SKIPPED;
-        }
-        return rt_test_run_suite(sources_suite());
-    }
-    return rt_test_run_suite(outputs_suite());
+    return main_with_sources(argc, argv, outputs_suite, sources_suite,
+                             "test_cli_outputs");
 }

@@ -44,7 +44,7 @@ static void write_tir_scene(const char *path, const char *k, const char *t)
              "10, 20, 30\n"
              "0, 0, 10, 255, 255, 255\n",
              k, t);
-    write_text(path, text);
+    rt_test_write_file(path, text);
 }
 
 /* rt-export --explain 4,4 (the ray through the facet's point at the

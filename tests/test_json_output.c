@@ -145,7 +145,7 @@ START_TEST(python_reads_every_string_the_writer_writes)
         fputc('\n', f);
     }
     ck_assert_int_eq(fclose(f), 0);
-    write_text(in_dir(dir, "check.py"), strings_check);
+    rt_test_write_file(in_dir(dir, "check.py"), strings_check);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 check.py strings.txt %d", dir, COUNT);
@@ -175,7 +175,7 @@ static char *check_object(const char *dir, const char *path,
     char hex[512] = "";
     for (size_t k = 0; name[k] && k < 200; k++)
         snprintf(hex + 2 * k, 3, "%02x", (unsigned char)name[k]);
-    write_text(in_dir(dir, "object.py"), object_check);
+    rt_test_write_file(in_dir(dir, "object.py"), object_check);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 object.py '%s' %s %s > printed.txt", dir,
@@ -191,20 +191,26 @@ static const char hostile_scene[] = "bad\xff\xfe-\x01\x1b[31m-\"q\"-\\-"
                                     "\xe2\x80\xa8-\xc3\xa9.scn";
 static const char hostile_output[] = "out\x02\xc0\xaf\".ppm";
 
-START_TEST(stats_and_explain_json_parse_and_agree_on_hostile_names)
+/* The cubes scene under the hostile name, in dir. */
+static void write_hostile_scene(const char *dir)
 {
-    char *dir = fresh_dir();
     char *text = rt_test_read_file(rt_test_source_path("scenes/cubes.scn"),
                                    NULL);
     ck_assert_ptr_nonnull(text);
-    write_text(in_dir(dir, hostile_scene), text);
+    rt_test_write_file(in_dir(dir, hostile_scene), text);
     free(text);
+}
+
+START_TEST(stats_and_explain_json_parse_and_agree_on_hostile_names)
+{
+    char *dir = fresh_dir();
+    write_hostile_scene(dir);
     const char *stats[] = {hostile_scene, "--size=20x15", "--stats=json",
                            "-q", "--format", "p6", "-o", hostile_output,
                            NULL};
     run r = run_in(dir, RT_EXPORT_PATH, stats);
     ck_assert_msg(r.code == 0, "%s", r.err);
-    write_text(in_dir(dir, "stats.txt"), r.err);
+    rt_test_write_file(in_dir(dir, "stats.txt"), r.err);
     run_free(&r);
     char *stats_scene = check_object(dir, "stats.txt", "scene",
                                      hostile_scene);
@@ -214,7 +220,7 @@ START_TEST(stats_and_explain_json_parse_and_agree_on_hostile_names)
                              "10,7", "--explain-json", NULL};
     r = run_in(dir, RT_EXPORT_PATH, explain);
     ck_assert_msg(r.code == 0, "%s", r.err);
-    write_text(in_dir(dir, "explain.txt"), r.out);
+    rt_test_write_file(in_dir(dir, "explain.txt"), r.out);
     run_free(&r);
     char *explain_scene = check_object(dir, "explain.txt", "scene",
                                        hostile_scene);
@@ -230,11 +236,7 @@ END_TEST
 START_TEST(text_explanations_show_control_bytes_escaped)
 {
     char *dir = fresh_dir();
-    char *text = rt_test_read_file(rt_test_source_path("scenes/cubes.scn"),
-                                   NULL);
-    ck_assert_ptr_nonnull(text);
-    write_text(in_dir(dir, hostile_scene), text);
-    free(text);
+    write_hostile_scene(dir);
     const char *explain[] = {hostile_scene, "--size=20x15", "--explain",
                              "10,7", NULL};
     run r = run_in(dir, RT_EXPORT_PATH, explain);

@@ -87,7 +87,7 @@ START_TEST(save_refuses_an_output_that_is_the_scene)
     snprintf(scene, sizeof scene, "%s", in_dir(dir, "v.scn"));
     snprintf(soft, sizeof soft, "%s", in_dir(dir, "link.scn"));
     snprintf(hard, sizeof hard, "%s", in_dir(dir, "hard.scn"));
-    write_text(scene, text);
+    rt_test_write_file(scene, text);
     ck_assert_int_eq(symlink("v.scn", soft), 0);
     ck_assert_int_eq(link(scene, hard), 0);
     const char *outputs[] = {scene, soft, hard};
@@ -132,8 +132,8 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
     char scene[4200], library[4200];
     snprintf(scene, sizeof scene, "%s", in_dir(dir, "cube.obj"));
     snprintf(library, sizeof library, "%s", in_dir(dir, "cube.mtl"));
-    write_text(scene, obj);
-    write_text(library, mtl);
+    rt_test_write_file(scene, obj);
+    rt_test_write_file(library, mtl);
     view_app *app = render(scene, library);
     char path[4200];
     ck_assert(!view_app_save(app, path, sizeof path));
@@ -148,17 +148,6 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
     remove_dir(dir);
 }
 END_TEST
-
-static int loader_lists_its_files(void)
-{
-    rt_scene *scene;
-    if (rt_scene_load_with(rt_test_source_path("tests/data/obj/cube.obj"),
-                           NULL, &scene, NULL) != RT_OK)
-        return 0;
-    int count = rt_scene_source_count(scene);
-    rt_scene_destroy(scene);
-    return count >= 2;
-}
 
 static Suite *outputs_suite(void)
 {
@@ -182,14 +171,6 @@ static Suite *sources_suite(void)
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "sources") == 0) {
-        if (!loader_lists_its_files()) {
-            fprintf(stderr, "test_viewer_outputs: the loader does not list "
-                            "the files a load read yet; the library case "
-                            "is not checked\n");
-            return RT_TEST_SKIPPED;
-        }
-        return rt_test_run_suite(sources_suite());
-    }
-    return rt_test_run_suite(outputs_suite());
+    return main_with_sources(argc, argv, outputs_suite, sources_suite,
+                             "test_viewer_outputs");
 }
