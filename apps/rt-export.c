@@ -3,11 +3,13 @@
  *
  * A thin command-line client of libraytrace: parse the arguments, load the
  * scene (from a file or standard input), check that the output can be
- * written, render on all cores with a progress line on a terminal, save the
- * image with the library's safe save (or stream it to standard output),
- * print the path.  Exit status: 0 success, 1 bad input or a failed write,
- * 2 bad usage; a signal during the save ends it killed by that signal, the
- * previous file intact.
+ * written and is none of the files the scene was read from, render on all
+ * cores with a progress line on a terminal, save the image with the
+ * library's safe save (or stream it to standard output) - after the same
+ * check again, and keeping the image under another name when the save
+ * fails (apps/common/cli_output.h) - and print the path.  Exit status: 0
+ * success, 1 bad input or a failed write, 2 bad usage; a signal during the
+ * save ends it killed by that signal, the previous file intact.
  */
 #include <errno.h>
 #include <limits.h>

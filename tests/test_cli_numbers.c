@@ -237,6 +237,9 @@ START_TEST(range_messages_give_the_bound_and_the_value)
          "--look-from: expected X,Y,Z (three numbers), found '0x10,0,0'"},
         {"--depth", "2.5",
          "--depth: expected an integer in 0..1000000, found '2.5'"},
+        /* control bytes of a value are escaped */
+        {"--depth", "\x1b[2J",
+         "--depth: expected an integer in 0..1000000, found '\\x1b[2J'"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         const char *args[] = {cases[i].option, cases[i].value, "s.scn",

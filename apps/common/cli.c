@@ -9,9 +9,7 @@
  */
 #include "cli.h"
 
-#include <errno.h>
 #include <getopt.h>
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -20,6 +18,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "cli_text.h"
 #include "cli_values.h"
 
 #define MAX_SPECS 64
@@ -27,6 +26,7 @@
 #define HELP_COLUMN 24          /* where help texts start */
 #define HELP_WIDTH 79           /* where they wrap */
 #define NO_OFFSET SIZE_MAX
+#define SHOWN 512               /* a value in a message, escaped */
 
 typedef enum value_kind {
     V_FLAG,         /* int = 1 */
@@ -227,8 +227,9 @@ int cli_usage_error(const cli_program *program, const char *format, ...)
 static int value_error(const cli_program *program, const spec *s,
                        const char *what, const char *value)
 {
+    char shown[SHOWN];
     return cli_usage_error(program, "--%s: expected %s, found '%s'", s->name,
-                           what, value);
+                           what, cli_printable(value, shown, sizeof shown));
 }
 
 /* "a, b or c" from "a|b|c". */
@@ -269,9 +270,12 @@ static int problem_error(const cli_program *program, const spec *s,
         memcmp(number, problem->piece, problem->piece_length) == 0)
         return cli_usage_error(program, "--%s: expected %s, found %s",
                                s->name, problem->expected, number);
-    return cli_usage_error(program, "--%s: expected %s, found %s ('%.*s')",
+    char piece[SHOWN], shown[SHOWN];
+    snprintf(piece, sizeof piece, "%.*s", (int)problem->piece_length,
+             problem->piece);
+    return cli_usage_error(program, "--%s: expected %s, found %s ('%s')",
                            s->name, problem->expected, number,
-                           (int)problem->piece_length, problem->piece);
+                           cli_printable(piece, shown, sizeof shown));
 }
 
 /* Case-insensitive: --format P6 is --format p6. */
@@ -321,10 +325,12 @@ static int read_view(const char *text, int max_light, rt_debug_view *view,
 static int store_light(const cli_program *program, const spec *s,
                        cli_settings *settings, const char *value)
 {
+    char shown[SHOWN];
     if (settings->load.light_count == CLI_MAX_LIGHTS)
         return cli_usage_error(program, "--light: expected at most %d "
                                "lights, found another: '%s'",
-                               CLI_MAX_LIGHTS, value);
+                               CLI_MAX_LIGHTS,
+                               cli_printable(value, shown, sizeof shown));
     cli_problem problem;
     cli_read read = cli_read_light(
         value, &settings->lights[settings->load.light_count], &problem);
@@ -476,6 +482,7 @@ static int getopt_error(const cli_program *program, const spec *specs,
                         int count, int c, char **argv)
 {
     const char *arg = argv[optind - 1];
+    char shown[SHOWN];
     if (c == ':') {
         const spec *s = spec_of(specs, count, optopt);
         return cli_usage_error(program, "--%s: expected a value (%s)",
@@ -484,12 +491,14 @@ static int getopt_error(const cli_program *program, const spec *specs,
     const spec *s = spec_of(specs, count, optopt);
     if (s != NULL && optopt >= FIRST_ID) /* --fast-sqrt=1 */
         return cli_usage_error(program, "--%s: takes no value, found '%s'",
-                               s->name, arg);
+                               s->name, cli_printable(arg, shown,
+                                                      sizeof shown));
     if (optopt != 0)
         return cli_usage_error(program, "unknown option '-%c'", optopt);
-    size_t length = strcspn(arg, "=");
-    return cli_usage_error(program, "unknown or ambiguous option '%.*s'",
-                           (int)length, arg);
+    char name[SHOWN];
+    snprintf(name, sizeof name, "%.*s", (int)strcspn(arg, "="), arg);
+    return cli_usage_error(program, "unknown or ambiguous option '%s'",
+                           cli_printable(name, shown, sizeof shown));
 }
 
 /* Checks made once every option is read. */
@@ -500,6 +509,7 @@ static int check_settings(const cli_program *program, cli_settings *settings)
                                                   ? program->missing
                                                   : "expected an operand");
     const char *out = settings->output;
+    char shown[SHOWN];
     if (out != NULL && !settings->format_given) {
         const char *slash = strrchr(out, '/');
         const char *base = slash ? slash + 1 : out;
@@ -509,7 +519,8 @@ static int check_settings(const cli_program *program, cli_settings *settings)
             return cli_usage_error(program, "cannot tell the image format "
                                    "from the name '%s': expected .png, "
                                    ".ppm or .pnm, or --format p3, p6 or "
-                                   "png", out);
+                                   "png",
+                                   cli_printable(out, shown, sizeof shown));
     }
     return CLI_CONTINUE;
 }
@@ -517,12 +528,14 @@ static int check_settings(const cli_program *program, cli_settings *settings)
 static int add_operand(const cli_program *program, cli_settings *settings,
                        const char *operand)
 {
+    char shown[SHOWN];
     if (settings->operand_count >= program->max_operands ||
         settings->operand_count == CLI_MAX_OPERANDS)
         return cli_usage_error(program, "expected at most %d operand%s (%s),"
                                " found another: '%s'", program->max_operands,
                                program->max_operands == 1 ? "" : "s",
-                               program->operands, operand);
+                               program->operands,
+                               cli_printable(operand, shown, sizeof shown));
     settings->operands[settings->operand_count++] = operand;
     return CLI_CONTINUE;
 }

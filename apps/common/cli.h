@@ -1,5 +1,6 @@
 /*
- * cli.h - the one command-line module of rt-export, rt-view and rt-bench.
+ * cli.h - the one command-line module of rt-export, rt-export-mpi,
+ * rt-view, rt-bench and rt-convert.
  *
  * One table holds every shared option: its long name, its short letter,
  * the name of its argument, its limits and its one help text.  The parser
@@ -14,6 +15,9 @@
  * Usage errors are printed on stderr as
  *     PROG: --depth: expected an integer in 0..1000000, found 'x'
  *     Try 'PROG --help'.
+ * (a value of the right form out of its limits: "found 2000000", the
+ * number and the bound; cli_values.h reads every value with the scene
+ * format's number grammar).
  * and cli_parse returns CLI_EXIT_USAGE (2).  Nothing here is thread-safe:
  * call it from main, once (getopt_long keeps global state).
  *
