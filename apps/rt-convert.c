@@ -6,40 +6,50 @@
  * transparency, a lens, diffuse weights other than 1 - k - t) is dropped
  * with a warning, or kept in the optional records with --extended.  The
  * numbers keep 17 digits: rt-export renders the converted file exactly as
- * the original.  Exit status: 0 success, 1 bad input or failed write, 2 bad
+ * the original.  The command line is the programs' one option table
+ * (apps/common/cli.h): the same forms, limits and messages as rt-export.
+ * The output is never a file the load read (the scene, an OBJ's material
+ * library, standard input), and is named .scn unless --force-name says
+ * otherwise.  Exit status: 0 success, 1 bad input or failed write, 2 bad
  * usage.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
-#include "cli_values.h"
+#include "cli.h"
+#include "cli_output.h"
+#include "cli_text.h"
 #include "raytrace/raytrace.h"
 
-static const char usage[] =
-    "usage: rt-convert IN OUT.scn [--extended] [--input-format scn|nff|obj]\n"
-    "                  [--tessellate T]\n"
-    "\n"
-    "Reads the scene IN (its format from its extension, or --input-format)\n"
-    "and writes it as a .scn file at OUT.scn (`-' for standard output).\n"
-    "\n"
-    "  --extended        keep what the course's format cannot hold in the\n"
-    "                    optional records (further lights, t and n, a lens);\n"
-    "                    without it they are dropped, with a warning\n"
-    "  --input-format F  scn, nff or obj, whatever IN's extension says\n"
-    "  --tessellate T    NFF spheres and cones: the largest distance between\n"
-    "                    the surface and its facets, relative to the radius\n"
-    "  -h, --help        this help\n"
-    "\n"
-    "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage.\n";
+#define EXIT_BAD_INPUT 1
 
-static int usage_error(const char *message, const char *value)
-{
-    fprintf(stderr, "rt-convert: %s%s%s%s\nTry 'rt-convert --help'.\n",
-            message, value ? " '" : "", value ? value : "",
-            value ? "'" : "");
-    return 2;
-}
+static int extended;    /* --extended */
+static int force_name;  /* --force-name */
+
+static const cli_option convert_options[] = {
+    {"extended", 0, NULL, CLI_FLAG, 0, 0, &extended,
+     "keep what the course's format cannot hold in the optional records "
+     "(further lights, t and n, a lens); without it they are dropped, "
+     "with a warning"},
+    {"force-name", 0, NULL, CLI_FLAG, 0, 0, &force_name,
+     "write the .scn text even to a name that does not end in .scn "
+     "(without it, `out.png' is refused)"},
+    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+};
+
+static const cli_program program = {
+    "rt-convert", "IN OUT.scn",
+    "Reads the scene IN (a .scn scene, an NFF file or a Wavefront OBJ\n"
+    "model, by its extension or --input-format) and writes it as a .scn\n"
+    "scene at OUT.scn, then prints OUT.scn.  OUT `-' writes the scene to\n"
+    "standard output and nothing else there.  A device or FIFO is written\n"
+    "directly, a file is replaced atomically, keeping its mode, owner and\n"
+    "links.  The output is never a file the scene was read from (IN, an\n"
+    "OBJ's material library): that is refused, naming both.",
+    "Exit status: 0 success, 1 bad scene or failed write, 2 bad usage.",
+    CLI_GROUP_INPUT, convert_options, 2, 2, "expected IN and OUT.scn"};
 
 static int write_to_stdout(void *user, const void *data, size_t size)
 {
@@ -61,80 +71,98 @@ static void report_dropped(unsigned dropped, const char *out)
         {RT_SCN_DROPPED_DIFFUSE,
          "diffuse weights other than 1 - k - t (no .scn record holds them)"},
     };
+    char shown[1024];
+    cli_printable(strcmp(out, "-") ? out : "<stdout>", shown, sizeof shown);
     for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++)
         if (dropped & kinds[i].bit)
-            fprintf(stderr, "rt-convert: %s: warning: dropped %s%s\n", out,
+            fprintf(stderr, "rt-convert: %s: warning: dropped %s%s\n", shown,
                     kinds[i].what,
                     kinds[i].bit == RT_SCN_DROPPED_DIFFUSE
                         ? ""
                         : " (--extended keeps them)");
 }
 
+/* Whether `out` may receive .scn text: "-", a name ending in .scn (any
+ * case), or something that is not a file name of a type (a device, a
+ * FIFO, a socket, reached through links); --force-name allows any. */
+static int scene_name_allowed(const char *out)
+{
+    struct stat st;
+    rt_scene_format format;
+    return force_name || strcmp(out, "-") == 0 ||
+           (rt_scene_format_from_path(out, &format, NULL) == RT_OK &&
+            format == RT_SCENE_FORMAT_SCN) ||
+           (stat(out, &st) == 0 && !S_ISREG(st.st_mode) &&
+            !S_ISDIR(st.st_mode));
+}
+
+/* The library's save, shared with images, words a failed write
+ * "OUT: cannot write the image..."; what rt-convert writes is a scene.
+ * (Only the words after the name are looked at: the name is the user's.) */
+static void name_the_scene(char *message, const char *out)
+{
+    static const char image[] = "cannot write the image",
+                      scene[] = "cannot write the scene";
+    size_t skip = strlen(out);
+    char *at = strncmp(message, out, skip) == 0 ? message + skip : message;
+    at = strstr(at, image);
+    if (at != NULL)
+        memcpy(at, scene, sizeof scene - 1);
+}
+
+/* Writes `scene` at `out` ("-": standard output).  Returns an exit
+ * status. */
+static int write_scene(const rt_scene *scene, const char *out)
+{
+    rt_error error;
+    unsigned dropped = 0;
+    int to_stdout = strcmp(out, "-") == 0;
+    rt_status status =
+        to_stdout ? rt_scene_write_scn(scene, extended, write_to_stdout, NULL,
+                                       &dropped, &error)
+                  : rt_scene_save_scn(scene, out, extended, &dropped, &error);
+    if (status == RT_OK && to_stdout && fflush(stdout) != 0)
+        status = RT_ERR_IO, snprintf(error.message, sizeof error.message,
+                                     "<stdout>: cannot write the scene");
+    if (status != RT_OK) {
+        name_the_scene(error.message, out);
+        fprintf(stderr, "rt-convert: %s\n", error.message);
+        return EXIT_BAD_INPUT;
+    }
+    report_dropped(dropped, out);
+    return EXIT_SUCCESS;
+}
+
 int main(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    int extended = 0;
-    rt_load_options options;
-    rt_load_options_init(&options);
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        const char *value = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(arg, "-h") || !strcmp(arg, "--help")) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (!strcmp(arg, "--extended")) {
-            extended = 1;
-        } else if (!strcmp(arg, "--input-format")) {
-            if (value == NULL || !cli_parse_scene_format(value, &options.format))
-                return usage_error("expected scn, nff or obj after "
-                                   "--input-format, found", value);
-            i++;
-        } else if (!strcmp(arg, "--tessellate")) {
-            if (value == NULL ||
-                !cli_parse_length(value, 1, &options.tessellation) ||
-                !(options.tessellation < 1))
-                return usage_error("expected a tolerance in (0, 1) after "
-                                   "--tessellate, found", value);
-            i++;
-        } else if (arg[0] == '-' && arg[1] != '\0') {
-            return usage_error("unknown option", arg);
-        } else if (in == NULL) {
-            in = arg;
-        } else if (out == NULL) {
-            out = arg;
-        } else {
-            return usage_error("expected two files, found a third:", arg);
-        }
-    }
-    if (in == NULL || out == NULL)
-        return usage_error("expected IN and OUT.scn", NULL);
+    cli_settings s;
+    int code = cli_parse(&program, argc, argv, &s);
+    if (code != CLI_CONTINUE)
+        return code;
+    const char *in = s.operands[0], *out = s.operands[1];
+    char shown[1024];
+    if (!scene_name_allowed(out))
+        return cli_usage_error(&program, "expected an output named .scn "
+                               "(rt-convert writes .scn text), found '%s'; "
+                               "--force-name writes it there anyway",
+                               cli_printable(out, shown, sizeof shown));
 
     rt_scene *scene;
     rt_error error;
-    if (rt_scene_load_with(in, &options, &scene, &error) != RT_OK) {
+    if (rt_scene_load_with(in, &s.load, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-convert: %s\n", error.message);
-        return 1;
+        return EXIT_BAD_INPUT;
     }
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-convert: %s\n", rt_scene_warning(scene, i)->message);
-    unsigned dropped = 0;
-    rt_status status =
-        strcmp(out, "-") == 0
-            ? rt_scene_write_scn(scene, extended, write_to_stdout, NULL,
-                                 &dropped, &error)
-            : rt_scene_save_scn(scene, out, extended, &dropped, &error);
-    if (status == RT_OK && strcmp(out, "-") == 0 && fflush(stdout) != 0)
-        status = RT_ERR_IO, snprintf(error.message, sizeof error.message,
-                                     "<stdout>: cannot write the scene");
+    code = cli_refuse_input_as_output("rt-convert", out, scene, in,
+                                      "the scene")
+               ? EXIT_BAD_INPUT
+               : write_scene(scene, out);
     rt_scene_destroy(scene);
-    if (status != RT_OK) {
-        fprintf(stderr, "rt-convert: %s\n", error.message);
-        return 1;
-    }
-    report_dropped(dropped, out);
-    if (strcmp(out, "-") != 0)
+    if (code == EXIT_SUCCESS && strcmp(out, "-") != 0)
         printf("%s\n", out);
-    return 0;
+    return code;
 }

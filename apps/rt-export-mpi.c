@@ -10,7 +10,9 @@
  * the image are handed out from rank 0's queue (apps/mpi/farm.h), rendered
  * with all the cores of each rank, and received into rank 0's image, which
  * rank 0 saves with the library's safe save once every band has arrived.
- * A bad scene or output: one message from rank 0, and every rank exits 1.
+ * A bad scene or output (one the scene was read from included): one
+ * message from rank 0, and every rank exits 1.  A save that fails after
+ * the render keeps the image under another name (cli_keep_image).
  * A rank that dies: Open MPI ends the job, nothing is saved.  Exit status
  * as rt-export's: 0 success, 1 bad input or a failed write, 2 bad usage.
  */
@@ -23,11 +25,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_output.h"
 #include "cli_report.h"
 #include "farm.h"
 #include "raytrace/raytrace.h"
@@ -130,13 +132,6 @@ static char *default_output(const char *scene, rt_image_format format)
     return out;
 }
 
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
-           sa.st_ino == sb.st_ino;
-}
-
 /* What rank 0 decided before the render. */
 typedef struct plan {
     scene_text text;
@@ -190,11 +185,9 @@ static int prepare(cli_settings *s, plan *p)
         fprintf(stderr, "rt-export-mpi: out of memory\n");
         return EXIT_BAD_INPUT;
     }
-    if (strcmp(path, "-") != 0 && same_file(p->output, path)) {
-        fprintf(stderr, "rt-export-mpi: %s: refusing to write the image over "
-                        "the scene it was rendered from\n", p->output);
+    if (cli_refuse_input_as_output("rt-export-mpi", p->output, p->scene,
+                                   path, "the image"))
         return EXIT_BAD_INPUT;
-    }
     int width, height;
     int code = cli_image_size(&program, s, p->scene, &width, &height);
     if (code != CLI_CONTINUE)
@@ -348,10 +341,17 @@ static int render_and_save(const farm_job *job, cli_settings *s,
     struct timespec write_start;
     clock_gettime(CLOCK_MONOTONIC, &write_start);
     rt_error error;
-    status = rt_image_save(p->output, &image, s->format, &error);
+    /* hours of work may be in the image: a save that fails keeps it under
+     * another name (a signal, the user's wish to stop, keeps nothing) */
     int code = EXIT_BAD_INPUT;
-    if (status != RT_OK) {
+    if (cli_refuse_input_as_output("rt-export-mpi", p->output, p->scene,
+                                   s->operands[0], "the image")) {
+        cli_keep_image("rt-export-mpi", p->output, &image, s->format);
+    } else if ((status = rt_image_save(p->output, &image, s->format,
+                                       &error)) != RT_OK) {
         fprintf(stderr, "rt-export-mpi: %s\n", error.message);
+        if (status != RT_ERR_INTERRUPTED)
+            cli_keep_image("rt-export-mpi", p->output, &image, s->format);
     } else {
         report.write_seconds = cli_seconds_since(&write_start);
         if (s->stats != CLI_STATS_NONE)

@@ -3,11 +3,13 @@
  *
  * A thin command-line client of libraytrace: parse the arguments, load the
  * scene (from a file or standard input), check that the output can be
- * written, render on all cores with a progress line on a terminal, save the
- * image with the library's safe save (or stream it to standard output),
- * print the path.  Exit status: 0 success, 1 bad input or a failed write,
- * 2 bad usage; a signal during the save ends it killed by that signal, the
- * previous file intact.
+ * written and is none of the files the scene was read from, render on all
+ * cores with a progress line on a terminal, save the image with the
+ * library's safe save (or stream it to standard output) - after the same
+ * check again, and keeping the image under another name when the save
+ * fails (apps/common/cli_output.h) - and print the path.  Exit status: 0
+ * success, 1 bad input or a failed write, 2 bad usage; a signal during the
+ * save ends it killed by that signal, the previous file intact.
  */
 #include <errno.h>
 #include <limits.h>
@@ -21,7 +23,10 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_explain.h"
+#include "cli_output.h"
 #include "cli_report.h"
+#include "cli_text.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -146,9 +151,6 @@ static void print_check(const char *path, const rt_scene *scene)
         printf("  %s\n", rt_scene_warning(scene, i)->message);
 }
 
-static const char *const kind_names[] = {"camera", "shadow", "reflected",
-                                         "refracted"};
-
 static void print_vec(const char *label, rt_vec3 v)
 {
     printf("%s(%.6g, %.6g, %.6g)", label, v.x, v.y, v.z);
@@ -157,20 +159,6 @@ static void print_vec(const char *label, rt_vec3 v)
 static void print_color(const char *label, rt_color c)
 {
     printf("%s%.6g %.6g %.6g", label, c.r, c.g, c.b);
-}
-
-/* The sum of the subtotals of node i's children of `kind`. */
-static rt_color children_sum(const rt_ray_node *n, size_t count, size_t i,
-                             rt_ray_kind kind)
-{
-    rt_color sum = {0, 0, 0};
-    for (size_t c = i + 1; c < count; c++)
-        if (n[c].parent == (int)i && n[c].kind == kind) {
-            sum.r += n[c].subtotal.r;
-            sum.g += n[c].subtotal.g;
-            sum.b += n[c].subtotal.b;
-        }
-    return sum;
 }
 
 /* Ray i and the rays that come from it, indented by their depth. */
@@ -194,7 +182,7 @@ static void print_ray(const rt_ray_node *n, size_t count, size_t i,
             printf("E 0 (shadowed), term 0\n");
         return;
     }
-    printf("%s ray", kind_names[r->kind]);
+    printf("%s ray", cli_explain_ray_name(n, count, i));
     if (r->kind != RT_RAY_CAMERA)
         printf(" (weight %.6g)", r->weight);
     print_vec(" from ", r->origin);
@@ -212,16 +200,21 @@ static void print_ray(const rt_ray_node *n, size_t count, size_t i,
     for (size_t c = i + 1; c < count; c++)
         if (n[c].parent == (int)i)
             print_ray(n, count, c, indent + 1);
-    rt_color direct = children_sum(n, count, i, RT_RAY_SHADOW),
-             reflected = children_sum(n, count, i, RT_RAY_REFLECTED),
-             refracted = children_sum(n, count, i, RT_RAY_REFRACTED);
+    rt_color direct, reflected, refracted;
+    int total = cli_explain_terms(n, count, i, &direct, &reflected,
+                                  &refracted);
     printf("%*s", 2 * indent + 2, "");
     print_color("terms: direct light ", direct);
     print_color(" + reflection k C_R ", reflected);
     print_color(" + refraction t C_T ", refracted);
     print_color(" = ", r->subtotal);
-    printf("\n");
+    printf("%s\n", total ? " (total internal reflection: C_T is the colour "
+                           "of the mirror ray, which carries k C_R + t C_T)"
+                         : "");
 }
+
+static const char *const kind_names[] = {"camera", "shadow", "reflected",
+                                         "refracted"};
 
 static void print_json_vec(const char *name, rt_vec3 v)
 {
@@ -240,11 +233,9 @@ static void print_json(const char *scene, int x, int y,
     size_t count;
     const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
     rt_color v = rt_ray_tree_value(tree);
-    printf("{\"scene\":\"");
-    for (const char *c = scene; *c; c++)
-        printf((*c == '"' || *c == '\\') ? "\\%c" : (unsigned char)*c < 32
-                                                    ? "?" : "%c", *c);
-    printf("\",\"x\":%d,\"y\":%d", x, y);
+    printf("{\"scene\":");
+    cli_json_string(stdout, scene);
+    printf(",\"x\":%d,\"y\":%d", x, y);
     print_json_color("value", v);
     printf(",\"bytes\":[%d,%d,%d],\"truncated\":%zu,\"rays\":[",
            rt_channel_to_byte(v.r), rt_channel_to_byte(v.g),
@@ -264,6 +255,10 @@ static void print_json(const char *scene, int x, int y,
                    r->blocker_line);
         else {
             printf(",\"hit\":%d", r->hit);
+            if (r->kind == RT_RAY_REFLECTED)
+                printf(",\"total_internal_reflection\":%s",
+                       cli_explain_total_reflection(n, count, i) ? "true"
+                                                                 : "false");
             if (r->hit) {
                 printf(",\"facet\":%d,\"line\":%d,\"t\":%.17g", r->facet,
                        r->line, r->t);
@@ -271,6 +266,12 @@ static void print_json(const char *scene, int x, int y,
                 print_json_vec("normal", r->normal);
                 printf(",\"k\":%.17g,\"transmission\":%.17g,\"d\":%.17g",
                        r->k, r->transmission, r->d);
+                rt_color direct, reflected, refracted;
+                cli_explain_terms(n, count, i, &direct, &reflected,
+                                  &refracted);
+                print_json_color("direct", direct);
+                print_json_color("reflection", reflected);
+                print_json_color("refraction", refracted);
             }
         }
         print_json_color("own", r->own);
@@ -300,8 +301,10 @@ static int explain(const rt_scene *scene, const cli_settings *s,
     }
     size_t count;
     const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
+    char shown[1024];
     printf("pixel %d,%d of %s: C = sum over lights of E (N.S) d C_S C_F / "
-           "255 + k C_R + t C_T\n", s->explain_x, s->explain_y, scene_name);
+           "255 + k C_R + t C_T\n", s->explain_x, s->explain_y,
+           cli_printable(scene_name, shown, sizeof shown));
     for (size_t i = 0; i < count; i++)
         if (n[i].parent < 0) {
             if (s->render.samples > 1)
@@ -318,13 +321,6 @@ static int explain(const rt_scene *scene, const cli_settings *s,
            rt_channel_to_byte(v.b));
     rt_ray_tree_destroy(tree);
     return EXIT_SUCCESS;
-}
-
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
-           sa.st_ino == sb.st_ino;
 }
 
 /* Non-zero when `path` names the file open as descriptor `fd`
@@ -369,6 +365,33 @@ static int wants_progress(const cli_settings *s, int to_stdout)
     return isatty(STDERR_FILENO) && !(to_stdout && isatty(STDOUT_FILENO));
 }
 
+/* Writes the rendered image to `path` (`-`: standard output).  When that
+ * fails, or the output has become an input, the image is kept under
+ * another name (cli_keep_image); a signal is the user's wish to stop, and
+ * keeps nothing.  Returns RT_OK or the failure. */
+static rt_status write_image(const rt_scene *scene, const cli_settings *s,
+                             const char *path, int to_stdout,
+                             const rt_image *image)
+{
+    rt_error error;
+    if (cli_refuse_input_as_output("rt-export", path, scene,
+                                   s->operands[0], "the image")) {
+        cli_keep_image("rt-export", to_stdout ? NULL : path, image,
+                       s->format);
+        return RT_ERR_IO;
+    }
+    rt_status status = to_stdout
+                           ? rt_image_write_file(stdout, image, s->format,
+                                                 &error)
+                           : rt_image_save(path, image, s->format, &error);
+    if (status == RT_OK || status == RT_ERR_INTERRUPTED)
+        return status;
+    fprintf(stderr, "rt-export: %s%s\n", to_stdout ? "<stdout>: " : "",
+            error.message);
+    cli_keep_image("rt-export", to_stdout ? NULL : path, image, s->format);
+    return status;
+}
+
 /* Renders the image the options describe and writes it to `path`;
  * fills report's times.  Returns an exit status. */
 static int render_and_write(const rt_scene *scene, cli_settings *s,
@@ -406,13 +429,8 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
     }
     struct timespec write_start;
     clock_gettime(CLOCK_MONOTONIC, &write_start);
-    status = to_stdout ? rt_image_write_file(stdout, &image, s->format, &error)
-                       : rt_image_save(path, &image, s->format, &error);
-    if (status != RT_OK) {
-        fprintf(stderr, "rt-export: %s%s\n",
-                to_stdout ? "<stdout>: " : "", error.message);
+    if (write_image(scene, s, path, to_stdout, &image) != RT_OK)
         goto done;
-    }
     report->write_seconds = cli_seconds_since(&write_start);
     if (s->stats == CLI_STATS_TEXT)
         cli_print_stats_text(stderr, &stats, report);
@@ -424,7 +442,7 @@ done:
     return code;
 }
 
-/* The checks between loading and rendering: the output is not the scene,
+/* The checks between loading and rendering: the output is no input,
  * float can hold the scene, the output can be written, the size and
  * region fit the image.  Returns CLI_CONTINUE or an exit status. */
 static int check_before_render(const rt_scene *scene, const cli_settings *s,
@@ -432,17 +450,13 @@ static int check_before_render(const rt_scene *scene, const cli_settings *s,
                                cli_render_report *report)
 {
     rt_error error;
-    const char *scene_path = s->operands[0];
     if (path == NULL) {
         fprintf(stderr, "rt-export: out of memory\n");
         return EXIT_BAD_INPUT;
     }
-    if (strcmp(scene_path, "-") != 0 && !to_stdout &&
-        same_file(path, scene_path)) {
-        fprintf(stderr, "rt-export: %s: refusing to write the image over "
-                        "the scene it was rendered from\n", path);
+    if (cli_refuse_input_as_output("rt-export", path, scene,
+                                   s->operands[0], "the image"))
         return EXIT_BAD_INPUT;
-    }
     int code = cli_image_size(&program, s, scene, &report->width,
                               &report->height);
     if (code != CLI_CONTINUE)

@@ -67,8 +67,10 @@ if(RAYTRACE_VIEWER_ENABLED)
     viewer/view_window.c)
   target_include_directories(raytrace_viewer PUBLIC
     "${CMAKE_CURRENT_SOURCE_DIR}/viewer")
+  # raytrace_cli: the rules the programs share (an output is never an
+  # input, how a ray tree is read)
   target_link_libraries(raytrace_viewer PUBLIC raytrace::raytrace
-    ${RAYTRACE_SDL2_TARGET} Threads::Threads)
+    raytrace_cli ${RAYTRACE_SDL2_TARGET} Threads::Threads)
   raytrace_set_warnings(raytrace_viewer)
 
   # SDL2_ttf, optional: the click overlay's text and the help in the

@@ -10,7 +10,8 @@
 #   lib/libraytrace.{a,so*}            include/raytrace/*.h (+ version.h)
 #   lib/cmake/raytrace/raytrace{Config,ConfigVersion,Targets*}.cmake
 #   lib/pkgconfig/raytrace.pc          (relocatable: paths from ${pcfiledir})
-#   share/doc/raytrace/LICENSE         share/man/man1/rt-export.1, rt-view.1
+#   share/doc/raytrace/LICENSE         share/man/man1/rt-export.1, rt-convert.1,
+#                                      rt-view.1
 #   share/raytrace/scenes/            bin/rt-export ... (RAYTRACE_APPS)
 include(CMakePackageConfigHelpers)
 
@@ -94,6 +95,7 @@ install(FILES "${PROJECT_SOURCE_DIR}/LICENSE"
   DESTINATION "${CMAKE_INSTALL_DOCDIR}")
 if(RAYTRACE_APPS)
   install(FILES "${PROJECT_SOURCE_DIR}/man/rt-export.1"
+    "${PROJECT_SOURCE_DIR}/man/rt-convert.1"
     DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
   if(TARGET raytrace_rt_view)
     install(FILES "${PROJECT_SOURCE_DIR}/man/rt-view.1"

@@ -9,114 +9,19 @@
  * programs on small images so that the suite stays fast.
  */
 #include <check.h>
-#include <errno.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "program_util.h"
 #include "testutil.h"
 
 #define SKIPPED 77
 
 /* ------------------------------------------------------------------ */
-/* Files and programs                                                  */
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "wb");
-    ck_assert_ptr_nonnull(f);
-    ck_assert_int_eq(fputs(text, f) >= 0, 1);
-    ck_assert_int_eq(fclose(f), 0);
-}
-
-static char *fresh_dir(void)
-{
-    char *dir = strdup("/tmp/rt-test-cli-XXXXXX");
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    return dir;
-}
-
-static void remove_dir(char *dir)
-{
-    char command[4200];
-    snprintf(command, sizeof command, "rm -rf '%s'", dir);
-    ck_assert_int_eq(system(command), 0);
-    free(dir);
-}
-
-/* dir/name in a static buffer (one of four at a time). */
-static const char *in_dir(const char *dir, const char *name)
-{
-    static char paths[4][4096];
-    static int next;
-    char *path = paths[next++ % 4];
-    snprintf(path, sizeof paths[0], "%s/%s", dir, name);
-    return path;
-}
-
-typedef struct run {
-    int code;
-    char *out;
-    size_t out_size;
-    char *err;
-} run;
-
-static void run_free(run *r)
-{
-    free(r->out);
-    free(r->err);
-}
-
-/* Runs `program` with `args` (NULL-terminated) in `dir`, standard input
- * from /dev/null, standard output and error captured. */
-static run run_in(const char *dir, const char *program,
-                  const char *const *args)
-{
-    char out_path[4200], err_path[4200];
-    snprintf(out_path, sizeof out_path, "%s/..out", dir);
-    snprintf(err_path, sizeof err_path, "%s/..err", dir);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, out_path,
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_path,
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    char *argv[32];
-    int argc = 0;
-    argv[argc++] = (char *)program;
-    for (int i = 0; args[i] != NULL && argc < 31; i++)
-        argv[argc++] = (char *)args[i];
-    argv[argc] = NULL;
-    char cwd[4096];
-    ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
-    ck_assert_int_eq(chdir(dir), 0);
-    extern char **environ;
-    pid_t pid;
-    int failed = posix_spawn(&pid, program, &actions, NULL, argv, environ);
-    ck_assert_int_eq(chdir(cwd), 0);
-    posix_spawn_file_actions_destroy(&actions);
-    ck_assert_msg(failed == 0, "cannot start %s: %s", program,
-                  strerror(failed));
-    int status;
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    run r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status)
-                               : 128 + WTERMSIG(status);
-    r.out = rt_test_read_file(out_path, &r.out_size);
-    r.err = rt_test_read_file(err_path, NULL);
-    unlink(out_path);
-    unlink(err_path);
-    ck_assert_ptr_nonnull(r.out);
-    ck_assert_ptr_nonnull(r.err);
-    return r;
-}
+/* Files and programs (program_util.h)                                 */
 
 static const char *cubes(void)
 {
@@ -325,13 +230,13 @@ START_TEST(bad_values_print_the_option_the_limits_and_the_value)
         {{"--samples", "3", "s.scn", NULL},
          "--samples: expected a square (1, 4, 9, 16, ...) in 1..1024, "
          "found '3'"},
-        {{"--size=0x10", "s.scn", NULL},
-         "--size: expected WIDTHxHEIGHT, each in 1..16384, found '0x10'"},
+        {{"--size=10x", "s.scn", NULL},
+         "--size: expected WIDTHxHEIGHT, each in 1..16384, found '10x'"},
         {{"--region=4,4,2,8", "s.scn", NULL},
          "--region: expected X0,Y0,X1,Y1, whole numbers with X0 < X1 and "
          "Y0 < Y1, found '4,4,2,8'"},
         {{"--fov=0", "s.scn", NULL},
-         "--fov: expected a number in (0, 180), found '0'"},
+         "--fov: expected a number in (0, 180), found 0"},
         {{"--stats=xml", "s.scn", NULL},
          "--stats: expected text or json, found 'xml'"},
         {{"--nope", "s.scn", NULL}, "unknown or ambiguous option '--nope'"},
@@ -380,9 +285,9 @@ START_TEST(every_program_has_the_same_limits_and_words)
         {{"-j", "x", "s.scn", NULL},
          "--threads: expected an integer in 0..1024, found 'x'"},
         {{"--size", "10x0", "s.scn", NULL},
-         "--size: expected WIDTHxHEIGHT, each in 1..16384, found '10x0'"},
+         "--size: expected a height in 1..16384, found 0"},
         {{"--aperture=-2", "s.scn", NULL},
-         "--aperture: expected a number >= 0, found '-2'"},
+         "--aperture: expected a number >= 0, found -2"},
     };
     for (size_t p = 0; p < sizeof programs / sizeof *programs; p++) {
         const char *name = base_name(programs[p]);
@@ -484,7 +389,7 @@ static void write_cubes_at(const char *dir, const char *name, int width,
             out[used++] = *line++;
     }
     out[used] = '\0';
-    write_text(in_dir(dir, name), out);
+    rt_test_write_file(in_dir(dir, name), out);
     free(out);
     free(text);
 }
@@ -647,17 +552,12 @@ static const char json_check[] =
     "assert isinstance(o['seconds'][k], float)\n"
     "assert o['octree'] is None or o['octree']['leaves'] > 0\n";
 
-static int python_has_json(void)
-{
-    return system("python3 -c 'import json' >/dev/null 2>&1") == 0;
-}
-
 static void check_json(const char *dir, const char *err, const char *w,
                        const char *h, const char *samples,
                        const char *region, const char *scene)
 {
-    write_text(in_dir(dir, "check.py"), json_check);
-    write_text(in_dir(dir, "stats.txt"), err);
+    rt_test_write_file(in_dir(dir, "check.py"), json_check);
+    rt_test_write_file(in_dir(dir, "stats.txt"), err);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 check.py %s %s 40 30 %s '%s' '%s' "
@@ -671,7 +571,7 @@ START_TEST(stats_json_is_one_object_a_json_parser_reads)
     char *dir = fresh_dir();
     /* a name that needs escaping: a quote and a backslash */
     char *text = rt_test_read_file(cubes(), NULL);
-    write_text(in_dir(dir, "cu\"b\\es.scn"), text);
+    rt_test_write_file(in_dir(dir, "cu\"b\\es.scn"), text);
     free(text);
     const char *whole[] = {"cu\"b\\es.scn", "--size=40x30", "--stats=json",
                            "-q", "-o", "out.ppm", NULL};

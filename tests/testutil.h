@@ -10,6 +10,19 @@
 
 #include "raytrace/raytrace.h"
 
+/* UNDER_ASAN: 1 in a build with AddressSanitizer (the programs the suites
+ * start run some 30 times slower there), else 0. */
+#if defined(__SANITIZE_ADDRESS__)
+#define UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define UNDER_ASAN 1
+#endif
+#endif
+#ifndef UNDER_ASAN
+#define UNDER_ASAN 0
+#endif
+
 /* Runs `suite_fn()` and exits non-zero when a test failed. */
 int rt_test_run_suite(Suite *suite);
 

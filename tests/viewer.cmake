@@ -8,6 +8,19 @@ if(TARGET raytrace_viewer)
   raytrace_add_suite(test_viewer LIBS raytrace_viewer)
   set_tests_properties(test_viewer PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+  # S never writes over an input (tests/test_viewer_outputs.c); the
+  # material-library case, `test_viewer_outputs_sources`, is a skip (77)
+  # until the loader lists the files it read.
+  raytrace_add_suite(test_viewer_outputs SOURCES program_util.c
+    LIBS raytrace_viewer)
+  add_test(NAME test_viewer_outputs_sources
+           COMMAND raytrace_test_viewer_outputs sources
+           WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+  set_tests_properties(test_viewer_outputs test_viewer_outputs_sources
+    PROPERTIES ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy"
+    TIMEOUT 120)
+  set_tests_properties(test_viewer_outputs_sources PROPERTIES
+    SKIP_RETURN_CODE 77)
 endif()
 
 # The click overlay on a real X server: rt-view under Xvfb, driven by

@@ -9,9 +9,7 @@
  */
 #include "cli.h"
 
-#include <errno.h>
 #include <getopt.h>
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -20,6 +18,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "cli_text.h"
 #include "cli_values.h"
 
 #define MAX_SPECS 64
@@ -27,6 +26,7 @@
 #define HELP_COLUMN 24          /* where help texts start */
 #define HELP_WIDTH 79           /* where they wrap */
 #define NO_OFFSET SIZE_MAX
+#define SHOWN 512               /* a value in a message, escaped */
 
 typedef enum value_kind {
     V_FLAG,         /* int = 1 */
@@ -126,29 +126,31 @@ static const spec table[] = {
      "render only columns X0 <= x < X1 and rows Y0 <= y < Y1 of the whole "
      "image (pixels, (0,0) top left); the output holds just that region, "
      "with exactly the pixels the whole image has there"},
-    {CLI_GROUP_LOAD, "input-format", 0, "F", 0, V_CHOICE, 0, 0, 0,
+    {CLI_GROUP_INPUT, "input-format", 0, "F", 0, V_CHOICE, 0, 0, 0,
      "scn|nff|obj",
      {RT_SCENE_FORMAT_SCN, RT_SCENE_FORMAT_NFF, RT_SCENE_FORMAT_OBJ},
      AT(load.format), NO_OFFSET, NULL,
      "read the scene as scn, nff or obj, whatever its extension says"},
-    {CLI_GROUP_LOAD, "tessellate", 0, "T", 0, V_NUMBER, 0, 1, 1, NULL, {0},
+    {CLI_GROUP_INPUT, "tessellate", 0, "T", 0, V_NUMBER, 0, 1, 1, NULL, {0},
      AT(load.tessellation), NO_OFFSET, NULL,
      "NFF spheres and cones: the largest distance between the surface and "
      "its facets, relative to the radius; more than 0, less than 1"},
-    {CLI_GROUP_LOAD, "look-from", 0, "X,Y,Z", 0, V_POINT, 0, 0, 0, NULL,
+    {CLI_GROUP_CAMERA, "look-from", 0, "X,Y,Z", 0, V_POINT, 0,
+     RT_MAX_COORDINATE, 0, NULL,
      {0}, AT(load.look_from), AT(load.look_from_given), NULL,
      "the observer (each view option on its own replaces that part of the "
      "scene's camera)"},
-    {CLI_GROUP_LOAD, "look-at", 0, "X,Y,Z", 0, V_POINT, 0, 0, 0, NULL, {0},
+    {CLI_GROUP_CAMERA, "look-at", 0, "X,Y,Z", 0, V_POINT, 0,
+     RT_MAX_COORDINATE, 0, NULL, {0},
      AT(load.look_at), AT(load.look_at_given), NULL,
      "the point the screen is centred on"},
-    {CLI_GROUP_LOAD, "up", 0, "X,Y,Z", 0, V_POINT, 0, 0, 0, NULL, {0},
+    {CLI_GROUP_CAMERA, "up", 0, "X,Y,Z", 0, V_POINT, 0, INF, 0, NULL, {0},
      AT(load.up), AT(load.up_given), NULL, "up in the image"},
-    {CLI_GROUP_LOAD, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180, 1, NULL, {0},
+    {CLI_GROUP_CAMERA, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180, 1, NULL, {0},
      AT(load.fov), AT(load.fov_given), NULL,
      "the horizontal field of view in degrees; more than 0, less than "
      "180"},
-    {CLI_GROUP_LOAD, "light", 0, "X,Y,Z[,R,G,B]", 0, V_LIGHT, 0, 0, 0, NULL,
+    {CLI_GROUP_CAMERA, "light", 0, "X,Y,Z[,R,G,B]", 0, V_LIGHT, 0, 0, 0, NULL,
      {0}, NO_OFFSET, NO_OFFSET, NULL,
      "a point light, white unless R,G,B (0..255) say otherwise; repeat "
      "for several (at most 16); they replace the scene's lights (an OBJ's "
@@ -225,8 +227,9 @@ int cli_usage_error(const cli_program *program, const char *format, ...)
 static int value_error(const cli_program *program, const spec *s,
                        const char *what, const char *value)
 {
+    char shown[SHOWN];
     return cli_usage_error(program, "--%s: expected %s, found '%s'", s->name,
-                           what, value);
+                           what, cli_printable(value, shown, sizeof shown));
 }
 
 /* "a, b or c" from "a|b|c". */
@@ -249,37 +252,30 @@ static void choice_list(const char *choices, char *out, size_t size)
     out[used < size ? used : size - 1] = '\0';
 }
 
-/* The limits of a V_NUMBER in words: ">= 0", "> 0", "in (0, 1)". */
-static void number_limits(const spec *s, char *out, size_t size)
-{
-    if (isinf(s->max))
-        snprintf(out, size, "a number %s %g", s->open_min ? ">" : ">=",
-                 s->min);
-    else
-        snprintf(out, size, "a number in %c%g, %g)", s->open_min ? '(' : '[',
-                 s->min, s->max);
-}
-
 /* ------------------------------------------------------------------ */
 /* Values                                                              */
 
-static int read_int(const char *text, long min, long max, int *value)
+/* The message for a value a cli_values reader refused: the text as typed
+ * when it is not of the value's form; else the number found (and the text
+ * it was read from, when that reads otherwise) and the limit it broke. */
+static int problem_error(const cli_program *program, const spec *s,
+                         const char *value, cli_read read,
+                         const cli_problem *problem)
 {
-    char *end;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (errno != 0 || end == text || *end != '\0' || v < min || v > max)
-        return 0;
-    *value = (int)v;
-    return 1;
-}
-
-static int is_square(int n)
-{
-    int root = 1;
-    while (root * root < n)
-        root++;
-    return root * root == n;
+    if (read == CLI_READ_SYNTAX)
+        return value_error(program, s, problem->expected, value);
+    char number[64];
+    cli_format_number(problem->value, number, sizeof number);
+    if (strlen(number) == problem->piece_length &&
+        memcmp(number, problem->piece, problem->piece_length) == 0)
+        return cli_usage_error(program, "--%s: expected %s, found %s",
+                               s->name, problem->expected, number);
+    char piece[SHOWN], shown[SHOWN];
+    snprintf(piece, sizeof piece, "%.*s", (int)problem->piece_length,
+             problem->piece);
+    return cli_usage_error(program, "--%s: expected %s, found %s ('%s')",
+                           s->name, problem->expected, number,
+                           cli_printable(piece, shown, sizeof shown));
 }
 
 /* Case-insensitive: --format P6 is --format p6. */
@@ -295,65 +291,6 @@ static int read_choice(const spec *s, const char *text, int *value)
         name += length + (name[length] == '|');
     }
     return 0;
-}
-
-/* "640x480" */
-static int read_size(const char *text, int max, int *width, int *height)
-{
-    char *end;
-    errno = 0;
-    long w = strtol(text, &end, 10);
-    if (end == text || (*end != 'x' && *end != 'X'))
-        return 0;
-    const char *rest = end + 1;
-    long h = strtol(rest, &end, 10);
-    if (errno != 0 || end == rest || *end != '\0' || w < 1 || w > max ||
-        h < 1 || h > max || !(*rest >= '0' && *rest <= '9'))
-        return 0;
-    *width = (int)w;
-    *height = (int)h;
-    return 1;
-}
-
-/* "x0,y0,x1,y1": four whole numbers, a non-empty rectangle. */
-static int read_region(const char *text, int max, rt_region *region)
-{
-    long v[4];
-    const char *at = text;
-    for (int i = 0; i < 4; i++) {
-        char *end;
-        errno = 0;
-        if (!(*at >= '0' && *at <= '9'))
-            return 0;
-        v[i] = strtol(at, &end, 10);
-        if (errno != 0 || *end != (i < 3 ? ',' : '\0') || v[i] > max)
-            return 0;
-        at = end + 1;
-    }
-    if (v[0] >= v[2] || v[1] >= v[3])
-        return 0;
-    *region = (rt_region){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
-    return 1;
-}
-
-/* "x,y": two whole numbers in 0..max-1. */
-static int read_pixel(const char *text, int max, int *x, int *y)
-{
-    long v[2];
-    const char *at = text;
-    for (int i = 0; i < 2; i++) {
-        char *end;
-        errno = 0;
-        if (!(*at >= '0' && *at <= '9'))
-            return 0;
-        v[i] = strtol(at, &end, 10);
-        if (errno != 0 || *end != (i == 0 ? ',' : '\0') || v[i] >= max)
-            return 0;
-        at = end + 1;
-    }
-    *x = (int)v[0];
-    *y = (int)v[1];
-    return 1;
 }
 
 /* "name" or "name=L" of a debug view; the light only for shadow and ns. */
@@ -373,9 +310,11 @@ static int read_view(const char *text, int max_light, rt_debug_view *view,
             strncmp(text, views[i].name, length) != 0)
             continue;
         *light = 0;
+        cli_problem unused;
         if (equals != NULL &&
             ((views[i].view != RT_VIEW_SHADOW && views[i].view != RT_VIEW_NS)
-             || !read_int(equals + 1, 0, max_light, light)))
+             || cli_read_integer(equals + 1, 0, max_light, 0, light,
+                                 &unused) != CLI_READ_OK))
             return 0;
         *view = views[i].view;
         return 1;
@@ -386,14 +325,17 @@ static int read_view(const char *text, int max_light, rt_debug_view *view,
 static int store_light(const cli_program *program, const spec *s,
                        cli_settings *settings, const char *value)
 {
+    char shown[SHOWN];
     if (settings->load.light_count == CLI_MAX_LIGHTS)
         return cli_usage_error(program, "--light: expected at most %d "
                                "lights, found another: '%s'",
-                               CLI_MAX_LIGHTS, value);
-    if (!cli_parse_light(value,
-                         &settings->lights[settings->load.light_count]))
-        return value_error(program, s, "X,Y,Z or X,Y,Z,R,G,B (colour "
-                           "0..255)", value);
+                               CLI_MAX_LIGHTS,
+                               cli_printable(value, shown, sizeof shown));
+    cli_problem problem;
+    cli_read read = cli_read_light(
+        value, &settings->lights[settings->load.light_count], &problem);
+    if (read != CLI_READ_OK)
+        return problem_error(program, s, value, read, &problem);
     settings->load.light_count++;
     settings->load.lights = settings->lights;
     return CLI_CONTINUE;
@@ -405,33 +347,21 @@ static int store(const cli_program *program, const spec *s,
 {
     char what[128];
     void *target = s->target;
+    cli_problem problem;
+    cli_read read = CLI_READ_OK;
     switch (s->kind) {
     case V_FLAG:
         *(int *)target = 1;
         return CLI_CONTINUE;
     case V_INT:
-        if (read_int(value, (long)s->min, (long)s->max, (int *)target))
-            return CLI_CONTINUE;
-        snprintf(what, sizeof what, "an integer in %.0f..%.0f", s->min,
-                 s->max);
-        return value_error(program, s, what, value);
     case V_SQUARE:
-        if (read_int(value, (long)s->min, (long)s->max, (int *)target) &&
-            is_square(*(int *)target))
-            return CLI_CONTINUE;
-        snprintf(what, sizeof what, "a square (1, 4, 9, 16, ...) in "
-                 "%.0f..%.0f", s->min, s->max);
-        return value_error(program, s, what, value);
-    case V_NUMBER: {
-        double v;
-        if (cli_parse_length(value, 0, &v) && v >= s->min && v <= s->max &&
-            !(s->open_min && v == s->min) && !(v == s->max && !isinf(v))) {
-            *(double *)target = v;
-            return CLI_CONTINUE;
-        }
-        number_limits(s, what, sizeof what);
-        return value_error(program, s, what, value);
-    }
+        read = cli_read_integer(value, s->min, s->max, s->kind == V_SQUARE,
+                                (int *)target, &problem);
+        break;
+    case V_NUMBER:
+        read = cli_read_real(value, s->min, s->max, s->open_min,
+                             (double *)target, &problem);
+        break;
     case V_CHOICE:
         if (value == NULL) { /* an optional argument left out */
             *(int *)target = s->values[0];
@@ -445,28 +375,22 @@ static int store(const cli_program *program, const spec *s,
         *(const char **)target = value;
         return CLI_CONTINUE;
     case V_POINT:
-        if (cli_parse_point(value, (rt_vec3 *)target))
-            return CLI_CONTINUE;
-        return value_error(program, s, "X,Y,Z (three numbers)", value);
+        read = cli_read_point(value, s->max, (rt_vec3 *)target, &problem);
+        break;
     case V_LIGHT:
         return store_light(program, s, settings, value);
     case V_SIZE:
-        if (read_size(value, (int)s->max, &settings->render.width,
-                      &settings->render.height))
-            return CLI_CONTINUE;
-        snprintf(what, sizeof what, "WIDTHxHEIGHT, each in 1..%.0f", s->max);
-        return value_error(program, s, what, value);
+        read = cli_read_size(value, (int)s->max, &settings->render.width,
+                             &settings->render.height, &problem);
+        break;
     case V_REGION:
-        if (read_region(value, (int)s->max, &settings->render.region))
-            return CLI_CONTINUE;
-        return value_error(program, s, "X0,Y0,X1,Y1, whole numbers with "
-                           "X0 < X1 and Y0 < Y1", value);
+        read = cli_read_region(value, (int)s->max, &settings->render.region,
+                               &problem);
+        break;
     case V_PIXEL:
-        if (read_pixel(value, (int)s->max, &settings->explain_x,
-                       &settings->explain_y))
-            return CLI_CONTINUE;
-        return value_error(program, s, "X,Y, two whole numbers (a pixel of "
-                           "the image, 0,0 top left)", value);
+        read = cli_read_pixel(value, (int)s->max, &settings->explain_x,
+                              &settings->explain_y, &problem);
+        break;
     case V_VIEW:
         if (read_view(value, (int)s->max, &settings->view,
                       &settings->view_light))
@@ -475,6 +399,8 @@ static int store(const cli_program *program, const spec *s,
                  "bounces or ns[=L] (L in 0..%.0f)", s->max);
         return value_error(program, s, what, value);
     }
+    if (read != CLI_READ_OK)
+        return problem_error(program, s, value, read, &problem);
     return CLI_CONTINUE;
 }
 
@@ -556,6 +482,7 @@ static int getopt_error(const cli_program *program, const spec *specs,
                         int count, int c, char **argv)
 {
     const char *arg = argv[optind - 1];
+    char shown[SHOWN];
     if (c == ':') {
         const spec *s = spec_of(specs, count, optopt);
         return cli_usage_error(program, "--%s: expected a value (%s)",
@@ -564,12 +491,14 @@ static int getopt_error(const cli_program *program, const spec *specs,
     const spec *s = spec_of(specs, count, optopt);
     if (s != NULL && optopt >= FIRST_ID) /* --fast-sqrt=1 */
         return cli_usage_error(program, "--%s: takes no value, found '%s'",
-                               s->name, arg);
+                               s->name, cli_printable(arg, shown,
+                                                      sizeof shown));
     if (optopt != 0)
         return cli_usage_error(program, "unknown option '-%c'", optopt);
-    size_t length = strcspn(arg, "=");
-    return cli_usage_error(program, "unknown or ambiguous option '%.*s'",
-                           (int)length, arg);
+    char name[SHOWN];
+    snprintf(name, sizeof name, "%.*s", (int)strcspn(arg, "="), arg);
+    return cli_usage_error(program, "unknown or ambiguous option '%s'",
+                           cli_printable(name, shown, sizeof shown));
 }
 
 /* Checks made once every option is read. */
@@ -580,6 +509,7 @@ static int check_settings(const cli_program *program, cli_settings *settings)
                                                   ? program->missing
                                                   : "expected an operand");
     const char *out = settings->output;
+    char shown[SHOWN];
     if (out != NULL && !settings->format_given) {
         const char *slash = strrchr(out, '/');
         const char *base = slash ? slash + 1 : out;
@@ -589,7 +519,8 @@ static int check_settings(const cli_program *program, cli_settings *settings)
             return cli_usage_error(program, "cannot tell the image format "
                                    "from the name '%s': expected .png, "
                                    ".ppm or .pnm, or --format p3, p6 or "
-                                   "png", out);
+                                   "png",
+                                   cli_printable(out, shown, sizeof shown));
     }
     return CLI_CONTINUE;
 }
@@ -597,12 +528,14 @@ static int check_settings(const cli_program *program, cli_settings *settings)
 static int add_operand(const cli_program *program, cli_settings *settings,
                        const char *operand)
 {
+    char shown[SHOWN];
     if (settings->operand_count >= program->max_operands ||
         settings->operand_count == CLI_MAX_OPERANDS)
         return cli_usage_error(program, "expected at most %d operand%s (%s),"
                                " found another: '%s'", program->max_operands,
                                program->max_operands == 1 ? "" : "s",
-                               program->operands, operand);
+                               program->operands,
+                               cli_printable(operand, shown, sizeof shown));
     settings->operands[settings->operand_count++] = operand;
     return CLI_CONTINUE;
 }
@@ -716,7 +649,10 @@ void cli_print_help(const cli_program *program, FILE *out)
     for (size_t h = 0; h < sizeof headings / sizeof *headings; h++) {
         if (!(headings[h].group & program->groups))
             continue;
-        fprintf(out, "\n%s\n", headings[h].title);
+        /* rt-convert reads a scene but takes no view or light */
+        int input_only = headings[h].group == CLI_GROUP_LOAD &&
+                         !(program->groups & CLI_GROUP_CAMERA);
+        fprintf(out, "\n%s\n", input_only ? "Scene:" : headings[h].title);
         for (int i = 0; i < count; i++)
             if (specs[i].group & headings[h].group)
                 print_option(out, &specs[i]);

@@ -1,5 +1,6 @@
 /*
- * cli.h - the one command-line module of rt-export, rt-view and rt-bench.
+ * cli.h - the one command-line module of rt-export, rt-export-mpi,
+ * rt-view, rt-bench and rt-convert.
  *
  * One table holds every shared option: its long name, its short letter,
  * the name of its argument, its limits and its one help text.  The parser
@@ -14,6 +15,9 @@
  * Usage errors are printed on stderr as
  *     PROG: --depth: expected an integer in 0..1000000, found 'x'
  *     Try 'PROG --help'.
+ * (a value of the right form out of its limits: "found 2000000", the
+ * number and the bound; cli_values.h reads every value with the scene
+ * format's number grammar).
  * and cli_parse returns CLI_EXIT_USAGE (2).  Nothing here is thread-safe:
  * call it from main, once (getopt_long keeps global state).
  *
@@ -57,13 +61,16 @@ enum {
     CLI_GROUP_THREADS = 1 << 2, /* -j/--threads */
     CLI_GROUP_SIZE = 1 << 3,    /* --size --width --height */
     CLI_GROUP_REGION = 1 << 4,  /* --region */
-    CLI_GROUP_LOAD = 1 << 5,    /* --input-format --tessellate --look-from
-                                   --look-at --up --fov --light */
+    CLI_GROUP_INPUT = 1 << 5,   /* --input-format --tessellate */
+    CLI_GROUP_CAMERA = 1 << 11, /* --look-from --look-at --up --fov
+                                   --light */
     CLI_GROUP_OUTPUT = 1 << 6,  /* -o/--output --format */
     CLI_GROUP_REPORT = 1 << 7,  /* --stats[=text|json] --progress */
     CLI_GROUP_QUIET = 1 << 8,   /* -q/--quiet */
     CLI_GROUP_EXPLAIN = 1 << 9, /* --explain X,Y --explain-json */
     CLI_GROUP_VIEW = 1 << 10,   /* --view V[=L] (a debug view) */
+    /* how the scene is read and viewed */
+    CLI_GROUP_LOAD = CLI_GROUP_INPUT | CLI_GROUP_CAMERA,
     /* every render option: what rt-export and rt-view both take */
     CLI_GROUP_RENDER = CLI_GROUP_QUALITY | CLI_GROUP_LENS |
                        CLI_GROUP_THREADS | CLI_GROUP_SIZE | CLI_GROUP_REGION

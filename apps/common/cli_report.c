@@ -1,13 +1,16 @@
 /*
  * cli_report.c - the progress line and the statistics of a render (see
  * cli_report.h).  The JSON is written by hand: a flat object of numbers
- * and a few strings, so a library would buy nothing; strings are escaped
- * as RFC 8259 asks.
+ * and a few strings, so a library would buy nothing; strings go through
+ * cli_json_string (cli_text.h), valid UTF-8 and valid JSON whatever the
+ * names hold.
  */
 #include "cli_report.h"
 
 #include <stdint.h>
 #include <string.h>
+
+#include "cli_text.h"
 
 double cli_seconds_since(const struct timespec *t)
 {
@@ -60,9 +63,11 @@ static void draw(cli_progress *p, double elapsed)
                     sizeof left);
     format_rate(p->rays_per_row * p->done / (elapsed > 0 ? elapsed : 1e-9),
                 rate, sizeof rate);
+    char name[1024];
     /* the trailing spaces wipe a longer line drawn before */
     fprintf(p->out, "%srendering %s: %3d%%, %s, %s left, %s camera rays/s%s",
-            p->terminal ? "\r" : "", p->name,
+            p->terminal ? "\r" : "",
+            cli_printable(p->name, name, sizeof name),
             (int)(100.0 * p->done / p->rows), spent, left, rate,
             p->terminal ? "   " : "\n");
     fflush(p->out);
@@ -160,22 +165,6 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
             (unsigned long long)s->accel_fallbacks);
 }
 
-/* A JSON string: quotes, backslashes and control characters escaped;
- * other bytes as they are (scene names are the user's bytes). */
-static void json_string(FILE *out, const char *text)
-{
-    fputc('"', out);
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        if (*c == '"' || *c == '\\')
-            fprintf(out, "\\%c", *c);
-        else if (*c < 0x20)
-            fprintf(out, "\\u%04x", *c);
-        else
-            fputc(*c, out);
-    }
-    fputc('"', out);
-}
-
 static void json_u64(FILE *out, const char *name, uint64_t value,
                      const char *after)
 {
@@ -225,13 +214,13 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
                           const cli_render_report *r)
 {
     fputs("{\"program\":", out);
-    json_string(out, r->program);
+    cli_json_string(out, r->program);
     fputs(",\"version\":", out);
-    json_string(out, rt_version_string());
+    cli_json_string(out, rt_version_string());
     fputs(",\"scene\":", out);
-    json_string(out, r->scene);
+    cli_json_string(out, r->scene);
     fputs(",\"output\":", out);
-    json_string(out, r->output);
+    cli_json_string(out, r->output);
     fprintf(out, ",\"format\":\"%s\",\"width\":%d,\"height\":%d,",
             rt_image_format_name(r->format), r->width, r->height);
     json_u64(out, "pixels", s->pixels, ",");

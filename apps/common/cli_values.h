@@ -1,30 +1,80 @@
 /*
  * cli_values.h - reading the values of the programs' command-line options
- * (lengths, lists of numbers, lights, scene formats), shared by rt-export
- * and rt-view so that both accept and refuse exactly the same text.
+ * (whole numbers, numbers, points, lights, sizes, regions, pixels), shared
+ * by every program of apps/ through cli.c so that all of them accept and
+ * refuse exactly the same text.
+ *
+ * Every number follows the scene format's grammar (rt_scene_read_number:
+ * decimal, an optional exponent, no hexadecimal, no `nan` or `inf`, a
+ * subnormal taken as it is) and its rules: a count or a pixel is a whole
+ * number (`200`, `200.` and `200.0` are the same), a camera point stays
+ * within RT_MAX_COORDINATE, a colour component is a whole number in
+ * 0..255.  A reader says how a value failed, so that the message can be
+ * worded for it: text that is not of the value's form is quoted as typed;
+ * a value of the right form outside its limits is given as a number, with
+ * the bound it broke (cli.c words the messages).
  */
 #ifndef RAYTRACE_CLI_VALUES_H
 #define RAYTRACE_CLI_VALUES_H
 
+#include <stddef.h>
+
 #include "raytrace/raytrace.h"
 
-/* A finite number: > 0 when `positive`, else >= 0.  Returns 1 on success
- * (then *value is set), 0 otherwise. */
-int cli_parse_length(const char *text, int positive, double *value);
+/* What reading a value found. */
+typedef enum cli_read {
+    CLI_READ_OK = 0,    /* stored */
+    CLI_READ_SYNTAX,    /* not of the value's form: "found 'TEXT'" */
+    CLI_READ_RANGE      /* of its form, outside its limits: "found VALUE" */
+} cli_read;
 
-/* `count_min` to `count_max` (at most 6) finite numbers separated by
- * commas, into out[0..n) (x, y, z of an rt_vec3 are consecutive doubles);
- * returns n, or 0 when the text is not such a list. */
-int cli_parse_numbers(const char *text, int count_min, int count_max,
-                      double *out);
+/* Why a value was refused, for the message. */
+typedef struct cli_problem {
+    char expected[160];     /* "an integer in 0..1000000", "X1 in 0..16384" */
+    double value;           /* CLI_READ_RANGE: the number found */
+    const char *piece;      /* CLI_READ_RANGE: the text it was read from */
+    size_t piece_length;    /* (a part of the option's value) */
+} cli_problem;
 
-/* A point or vector "x,y,z". */
-int cli_parse_point(const char *text, rt_vec3 *point);
+/* A bound or a value as a message shows it: "%g", except that a whole
+ * number below 1e15 in magnitude is written out in full (2147483647, not
+ * 2.14748e+09), so that a message never shows a rounded value. */
+void cli_format_number(double value, char *out, size_t size);
 
-/* A light "x,y,z" (white) or "x,y,z,r,g,b" (whole numbers 0..255). */
-int cli_parse_light(const char *text, rt_light *light);
+/* An integer in min..max (a square of one when `square`), e.g. --depth;
+ * `2.0` and `2e1` are integers. */
+cli_read cli_read_integer(const char *text, double min, double max,
+                          int square, int *out, cli_problem *problem);
 
-/* "scn", "nff" or "obj". */
-int cli_parse_scene_format(const char *text, rt_scene_format *format);
+/* A number in [min, max) (max itself allowed when infinite; min refused
+ * when open_min), e.g. --aperture. */
+cli_read cli_read_real(const char *text, double min, double max,
+                       int open_min, double *out, cli_problem *problem);
+
+/* The words of cli_read_real's limits: "a number >= 0", "a number > 0",
+ * "a number in (0, 180)". */
+void cli_real_limits(double min, double max, int open_min, char *out,
+                     size_t size);
+
+/* "X,Y,Z": three numbers of magnitude at most `max_magnitude` (infinite:
+ * any finite number), e.g. --look-from. */
+cli_read cli_read_point(const char *text, double max_magnitude,
+                        rt_vec3 *out, cli_problem *problem);
+
+/* A light "X,Y,Z" (white) or "X,Y,Z,R,G,B" (whole numbers 0..255). */
+cli_read cli_read_light(const char *text, rt_light *out,
+                        cli_problem *problem);
+
+/* "WxH" (or "WXH"), each side a whole number in 1..max. */
+cli_read cli_read_size(const char *text, int max, int *width, int *height,
+                       cli_problem *problem);
+
+/* "X0,Y0,X1,Y1": whole numbers in 0..max with X0 < X1 and Y0 < Y1. */
+cli_read cli_read_region(const char *text, int max, rt_region *region,
+                         cli_problem *problem);
+
+/* "X,Y": two whole numbers in 0..max-1. */
+cli_read cli_read_pixel(const char *text, int max, int *x, int *y,
+                        cli_problem *problem);
 
 #endif /* RAYTRACE_CLI_VALUES_H */

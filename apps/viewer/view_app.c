@@ -18,6 +18,7 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
+#include "cli_output.h"
 #include "view_explain.h"
 #include "view_scene.h"
 #include "view_window.h"
@@ -438,7 +439,17 @@ int view_app_save(view_app *app, char *path, size_t size)
     int partial = rows < copy.height;
     int claimed;
     int saved = 0;
-    if (choose_save_path(app, partial, path, size, &claimed)) {
+    char clash[sizeof app->message];
+    if (!choose_save_path(app, partial, path, size, &claimed)) {
+        /* the reason is shown */
+    } else if (cli_output_clash(path, view_session_scene(app->session),
+                                app->shown_path, 0, "the image", clash,
+                                sizeof clash)) {
+        /* -o names the scene, or a file the scene read: never over it */
+        if (claimed)
+            unlink(path);
+        show_message(app, clash);
+    } else {
         rt_error error;
         rt_status status =
             rt_image_save(path, &copy, app->options.format, &error);

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_explain.h"
+
 /* A ray that hits nothing is drawn this many |AO| far. */
 #define MISS_DISTANCE 1000.0
 
@@ -57,17 +59,6 @@ static rt_vec3 point_along(rt_vec3 origin, rt_vec3 direction, double t)
     return p;
 }
 
-static const char *kind_name(rt_ray_kind kind)
-{
-    switch (kind) {
-    case RT_RAY_CAMERA: return "camera";
-    case RT_RAY_SHADOW: return "shadow";
-    case RT_RAY_REFLECTED: return "reflected";
-    case RT_RAY_REFRACTED: return "refracted";
-    }
-    return "?";
-}
-
 static void describe_facet(text *t, int facet, int line)
 {
     if (line > 0)
@@ -76,11 +67,15 @@ static void describe_facet(text *t, int facet, int line)
         append(t, "facet %d", facet);
 }
 
-/* One line of the text for `node`. */
-static void describe(text *t, const rt_ray_node *node)
+/* One line of the text for node i (its name as cli_explain_ray_name
+ * gives it: the mirror ray of a total internal reflection is "totally
+ * reflected", the t C_T term, not a k C_R one). */
+static void describe(text *t, const rt_ray_node *nodes, size_t count,
+                     size_t i)
 {
+    const rt_ray_node *node = &nodes[i];
     int indent = 2 * node->depth + (node->kind == RT_RAY_SHADOW ? 2 : 0);
-    append(t, "%*s%s", indent, "", kind_name(node->kind));
+    append(t, "%*s%s", indent, "", cli_explain_ray_name(nodes, count, i));
     if (node->kind == RT_RAY_SHADOW) {
         append(t, " to light %d: N.S %.4g", node->light, node->n_dot_s);
         if (!node->cast)
@@ -96,7 +91,10 @@ static void describe(text *t, const rt_ray_node *node)
             append(t, ", E 0\n");
         return;
     }
-    if (node->weight != 1)
+    if (cli_explain_total_reflection(nodes, count, i))
+        append(t, " (weight %.4g, for k C_R + t C_T: a total internal "
+                  "reflection)", node->weight);
+    else if (node->weight != 1)
         append(t, " (weight %.4g)", node->weight);
     if (!node->hit) {
         append(t, ": hits nothing, background adds (%.4g %.4g %.4g)\n",
@@ -191,7 +189,7 @@ rt_status view_explain_pixel(const rt_scene *scene,
            rt_channel_to_byte(value.g), rt_channel_to_byte(value.b));
     out->segments = count ? malloc(sizeof *out->segments * count) : NULL;
     for (size_t i = 0; i < count; i++) {
-        describe(&t, &nodes[i]);
+        describe(&t, nodes, count, i);
         if (out->segments &&
             segment_of(scene, miss_distance, &nodes[i],
                        &out->segments[out->segment_count]))

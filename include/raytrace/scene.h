@@ -305,6 +305,25 @@ RT_API rt_status rt_scene_format_from_path(const char *path,
 RT_API const char *rt_scene_format_name(rt_scene_format format);
 
 /*
+ * Reads text[0..length) (no NUL needed) as a number of the scene format
+ * (docs/scene-format.md, "Values"): an optional sign, digits with an
+ * optional decimal point, an optional exponent (`-1.5`, `.5`, `2.`,
+ * `1e-9`), at most 256 characters, in the C locale whatever the caller's.
+ * A value below the smallest double rounds to the nearest one (a subnormal,
+ * or zero), as the readers take it.  Returns RT_OK with *value set;
+ * RT_ERR_SYNTAX for any other text (white space, hexadecimal `0x10`, `1e`,
+ * an empty string); RT_ERR_RANGE for `nan`, `inf` and a value beyond a
+ * double's range (`1e999`); RT_ERR_LIMIT for more than 256 characters;
+ * RT_ERR_ARGUMENT for a NULL text or value; RT_ERR_NOMEM; each with the
+ * reason in *error (may be NULL: "expected a number, found `0x10`").
+ * *value is untouched on failure.  For the programs' command-line numbers,
+ * so that they follow the scene files' rule; each call sets up a C locale
+ * (not for bulk reading).  Thread-safe.
+ */
+RT_API rt_status rt_scene_read_number(const char *text, size_t length,
+                                      double *value, rt_error *error);
+
+/*
  * Parses a scene in any format from memory, as rt_scene_parse does for
  * .scn.  `name` names the input in messages and, for OBJ, locates the
  * material libraries it asks for (relative to the folder of `name`); with

@@ -102,4 +102,14 @@ int rt__load_cancelled(const rt_load_options *options);
  * RT_ERR_CANCELLED. */
 rt_status rt__load_cancel(rt_error *error, const char *name);
 
+/* The longest number a reader takes, in characters (a longer one is
+ * refused: no double needs more, and the copy for strtod stays on the
+ * stack). */
+#define RT__MAX_NUMBER_LENGTH 256
+
+/* Whether text[0..length) is a number of the scene format's grammar:
+ * [+-] digits [. digits] [(e|E) [+-] digits], at least one digit before
+ * the exponent (number.c; rt_scene_read_number reads one). */
+int rt__number_syntax(const char *text, size_t length);
+
 #endif /* RAYTRACE_READER_H */

@@ -246,28 +246,8 @@ static rt_status expect_record(parser *p, const char *text, int count,
 static rt_status number(parser *p, int i, double *value)
 {
     const token *t = &p->values[i];
-    const char *s = t->text, *e = t->text + t->length;
-    /* [+-] digits [. digits] [(e|E) [+-] digits], at least one digit */
-    const char *c = s;
-    if (c < e && (*c == '+' || *c == '-'))
-        c++;
-    int digits = 0;
-    while (c < e && isdigit((unsigned char)*c))
-        c++, digits++;
-    if (c < e && *c == '.')
-        for (c++; c < e && isdigit((unsigned char)*c); c++)
-            digits++;
-    if (digits > 0 && c < e && (*c == 'e' || *c == 'E')) {
-        c++;
-        if (c < e && (*c == '+' || *c == '-'))
-            c++;
-        int exponent_digits = 0;
-        while (c < e && isdigit((unsigned char)*c))
-            c++, exponent_digits++;
-        if (exponent_digits == 0)
-            digits = 0;
-    }
-    if (digits == 0 || c != e) {
+    const char *s = t->text;
+    if (!rt__number_syntax(s, t->length)) {
         char lower[8] = "";
         for (size_t k = 0; k < t->length && k < 7; k++)
             lower[k] = (char)tolower((unsigned char)s[k]);

@@ -6,6 +6,11 @@
 #   test_mpi.sh usage        a usage error: one message, exit status 2
 #   test_mpi.sh killed-rank  kill -9 of a worker mid-render fails the job
 #                            and leaves no image and no temporary file
+#   test_mpi.sh own-input    -o naming the scene (or a link to it) is
+#                            refused, naming both; the scene intact
+#   test_mpi.sh rescue       a save that fails after the render (a full
+#                            device) keeps the image in $TMPDIR, byte for
+#                            byte rt-export's
 # The environment gives the programs: RT_EXPORT, RT_EXPORT_MPI, MPIEXEC,
 # RT_SOURCE_DIR.  Open MPI needs --oversubscribe to start more ranks than
 # cores, and leave to run as root (CI runs as root).
@@ -114,8 +119,46 @@ killed-rank)
     leftovers=$(ls -A | grep -v -x -e out.txt -e err.txt)
     [ -z "$leftovers" ] || fail "left behind: $leftovers"
     ;;
+own-input)
+    # the scene by its name and through links: refused, naming both, and
+    # the scene intact
+    cp "$scenes/cubes.scn" s.scn
+    ln -s s.scn link.scn
+    ln s.scn hard.scn
+    for out in s.scn link.scn hard.scn; do
+        timeout 60 "${launcher[@]}" -np 2 "$RT_EXPORT_MPI" -q s.scn \
+            --format p6 -o "$out" >out.txt 2>err.txt &&
+            fail "-o $out exited 0"
+        grep -qx "rt-export-mpi: $out: refusing to write the image over \
+s.scn, the scene it comes from (the same file)" err.txt ||
+            { cat err.txt; fail "-o $out: no refusal naming both"; }
+        cmp -s s.scn "$scenes/cubes.scn" || fail "-o $out changed the scene"
+        echo "ok: -o $out refused"
+    done
+    ;;
+rescue)
+    # a save that fails after the render keeps the image: /dev/full takes
+    # the check (it opens for writing) and refuses the bytes
+    [ -w /dev/full ] || { echo "skipped: no /dev/full"; exit 77; }
+    mkdir tmp
+    TMPDIR=$work/tmp timeout 60 "${launcher[@]}" -np 2 "$RT_EXPORT_MPI" -q \
+        "$scenes/cubes.scn" --size 90x70 --format p6 -o /dev/full \
+        >out.txt 2>err.txt && fail "a full device exited 0"
+    cat err.txt
+    grep -q "^rt-export-mpi: /dev/full: cannot write the image: " err.txt ||
+        fail "no message about the failed save"
+    kept=$(sed -n 's/^rt-export-mpi: the image is kept in //p' err.txt)
+    case $kept in
+    "$work"/tmp/full.rescue-??????.ppm) ;;
+    *) fail "kept as '$kept', expected $work/tmp/full.rescue-XXXXXX.ppm" ;;
+    esac
+    "$RT_EXPORT" -q "$scenes/cubes.scn" --size 90x70 --format p6 -o ref.ppm
+    cmp -s ref.ppm "$kept" || fail "the kept image is not rt-export's"
+    echo "ok: kept in $kept, byte for byte rt-export's image"
+    ;;
 *)
-    echo "usage: test_mpi.sh exact N | bad-scene | usage | killed-rank" >&2
+    echo "usage: test_mpi.sh exact N | bad-scene | usage | killed-rank |" \
+         "own-input | rescue" >&2
     exit 2
     ;;
 esac
