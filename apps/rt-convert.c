@@ -96,20 +96,6 @@ static int scene_name_allowed(const char *out)
             !S_ISDIR(st.st_mode));
 }
 
-/* The library's save, shared with images, words a failed write
- * "OUT: cannot write the image..."; what rt-convert writes is a scene.
- * (Only the words after the name are looked at: the name is the user's.) */
-static void name_the_scene(char *message, const char *out)
-{
-    static const char image[] = "cannot write the image",
-                      scene[] = "cannot write the scene";
-    size_t skip = strlen(out);
-    char *at = strncmp(message, out, skip) == 0 ? message + skip : message;
-    at = strstr(at, image);
-    if (at != NULL)
-        memcpy(at, scene, sizeof scene - 1);
-}
-
 /* Writes `scene` at `out` ("-": standard output).  Returns an exit
  * status. */
 static int write_scene(const rt_scene *scene, const char *out)
@@ -125,7 +111,6 @@ static int write_scene(const rt_scene *scene, const char *out)
         status = RT_ERR_IO, snprintf(error.message, sizeof error.message,
                                      "<stdout>: cannot write the scene");
     if (status != RT_OK) {
-        name_the_scene(error.message, out);
         fprintf(stderr, "rt-convert: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }

@@ -19,6 +19,7 @@ typedef struct rt_producer {
     rt_status (*produce)(rt_write_func write, void *user, const void *what,
                          rt_error *error);
     const void *what;
+    const char *noun;       /* what messages call it: "image", "scene" */
 } rt_producer;
 
 /* Writes what `producer` produces at `path` by the rule of

@@ -224,6 +224,20 @@ static rt_status io_error(rt_error *error, const char *path, int saved,
                          strerror(saved));
 }
 
+/* What messages call the producer's bytes. */
+static const char *noun_of(const rt_producer *producer)
+{
+    return producer->noun != NULL ? producer->noun : "image";
+}
+
+/* "cannot write the NOUN: reason" for errno `saved`. */
+static rt_status write_error(rt_error *error, const char *path, int saved,
+                             const char *noun)
+{
+    return rt__error_set(error, RT_ERR_IO, path, 0, 0,
+                         "cannot write the %s: %s", noun, strerror(saved));
+}
+
 /* The canonical name of folder `folder` ("" for the current one), or NULL
  * (malloc'd). */
 static char *real_folder(const char *folder)
@@ -286,32 +300,33 @@ static int descriptor_named(const char *path, int *fd)
 /* Checks that descriptor d->fd is open for writing and not a folder, and
  * fills d->st. */
 static rt_status check_descriptor(const char *path, destination *d,
-                                  rt_error *error)
+                                  const char *noun, rt_error *error)
 {
     int flags = fcntl(d->fd, F_GETFL);
     if (flags < 0)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: descriptor %d is not "
-                             "open", d->fd);
+                             "cannot write the %s: descriptor %d is not "
+                             "open", noun, d->fd);
     int mode = flags & O_ACCMODE;
 #ifdef O_PATH
     if (flags & O_PATH)
         mode = O_RDONLY;
 #endif
     if (fstat(d->fd, &d->st) != 0)
-        return io_error(error, path, errno, "cannot write the image");
+        return write_error(error, path, errno, noun);
     if (S_ISDIR(d->st.st_mode))
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: is a directory");
+                             "cannot write the %s: is a directory", noun);
     if (mode != O_WRONLY && mode != O_RDWR)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: descriptor %d is open "
-                             "for reading only", d->fd);
+                             "cannot write the %s: descriptor %d is open "
+                             "for reading only", noun, d->fd);
     return RT_OK;
 }
 
 /* Follows `path` to what it finally names and says what that is. */
-static rt_status resolve(const char *path, destination *d, rt_error *error)
+static rt_status resolve(const char *path, destination *d,
+                         const char *noun, rt_error *error)
 {
     memset(d, 0, sizeof *d);
     char *current = copy_string(path, strlen(path));
@@ -322,7 +337,7 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
         if (descriptor_named(current, &d->fd)) {
             d->path = current;
             d->kind = KIND_DESCRIPTOR;
-            return check_descriptor(path, d, error);
+            return check_descriptor(path, d, noun, error);
         }
         if (in_proc(current)) {
             /* Let the kernel follow its own links: stat the whole path. */
@@ -340,12 +355,12 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
                 }
                 free(d->path);
                 d->path = NULL;
-                return io_error(error, path, saved, "cannot write the image");
+                return write_error(error, path, saved, noun);
             }
             if (S_ISDIR(d->st.st_mode))
                 return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                                     "cannot write the image: is a "
-                                     "directory");
+                                     "cannot write the %s: is a "
+                                     "directory", noun);
             d->kind = KIND_STREAM;
             return RT_OK;
         }
@@ -355,7 +370,7 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
              * file's creation, which names the folder. */
             if (saved != ENOENT && saved != ENOTDIR) {
                 free(current);
-                return io_error(error, path, saved, "cannot write the image");
+                return write_error(error, path, saved, noun);
             }
             d->kind = KIND_ABSENT;
             break;
@@ -371,7 +386,7 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
         }
         if (links == MAX_LINKS) {
             free(current);
-            return io_error(error, path, ELOOP, "cannot write the image");
+            return write_error(error, path, ELOOP, noun);
         }
         rt_status status = RT_OK;
         char *next = follow(current, &status);
@@ -388,26 +403,27 @@ static rt_status resolve(const char *path, destination *d, rt_error *error)
     d->path = current;
     if (d->kind == KIND_DIRECTORY)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: is a directory");
+                             "cannot write the %s: is a directory", noun);
     return RT_OK;
 }
 
 /* The message for a temporary file that cannot be made in `folder`. */
 static rt_status folder_error(rt_error *error, const char *path,
-                              const char *folder, int saved)
+                              const char *folder, int saved,
+                              const char *noun)
 {
     const char *shown = folder[0] ? folder : "./";
     if (saved == ENOENT)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: the folder %s does "
-                             "not exist", shown);
+                             "cannot write the %s: the folder %s does "
+                             "not exist", noun, shown);
     if (saved == ENOTDIR)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the image: %s is not a folder",
-                             shown);
+                             "cannot write the %s: %s is not a folder",
+                             noun, shown);
     return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                         "cannot write the image in the folder %s: %s",
-                         shown, strerror(saved));
+                         "cannot write the %s in the folder %s: %s",
+                         noun, shown, strerror(saved));
 }
 
 /*
@@ -483,15 +499,15 @@ static rt_status encode(fd_sink *s, const rt_producer *producer,
 
 /* The error of a sink that stopped. */
 static rt_status sink_error(const fd_sink *s, rt_status status,
-                            const char *path, rt_error *error)
+                            const char *path, const char *noun,
+                            rt_error *error)
 {
     if (s->interrupted)
         return rt__error_set(error, RT_ERR_INTERRUPTED, path, 0, 0,
                              "save interrupted by signal %d; the file was "
                              "left as it was", s->interrupted);
     if (status == RT_ERR_IO)
-        return io_error(error, path, s->error ? s->error : EIO,
-                        "cannot write the image");
+        return write_error(error, path, s->error ? s->error : EIO, noun);
     return status;          /* the encoder filled *error */
 }
 
@@ -564,7 +580,8 @@ static rt_status save_through_temporary(const char *path,
     if (fd < 0) {
         int saved = errno;
         char *folder = folder_of(d->path);
-        status = folder ? folder_error(error, path, folder, saved)
+        status = folder ? folder_error(error, path, folder, saved,
+                                       noun_of(producer))
                         : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                                         "out of memory");
         free(folder);
@@ -594,7 +611,7 @@ static rt_status save_through_temporary(const char *path,
     if (status != RT_OK || d->kind == KIND_LINKED)
         unlink(temp);
     if (status != RT_OK)
-        status = sink_error(s, status, path, error);
+        status = sink_error(s, status, path, noun_of(producer), error);
     free(temp);
     free(s);
     /* A signal that came meanwhile is delivered now, the file in order. */
@@ -639,7 +656,7 @@ static rt_status stream_to(int fd, int owned, const char *path,
     if (owned && close(fd) != 0 && status == RT_OK)
         status = RT_ERR_IO, s->error = errno;
     if (status != RT_OK)
-        status = sink_error(s, status, path, error);
+        status = sink_error(s, status, path, noun_of(producer), error);
     free(s);
     return status;
 }
@@ -674,7 +691,7 @@ rt_status rt__save(const char *path, const rt_producer *producer,
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
     destination d;
-    rt_status status = resolve(path, &d, error);
+    rt_status status = resolve(path, &d, noun_of(producer), error);
     /* A descriptor of this process: written through it, at its offset (at
      * the end when it appends), and left open; nothing is truncated or
      * replaced, so what the caller wrote before and writes after stays
@@ -711,7 +728,7 @@ rt_status rt_image_save(const char *path, const rt_image *image,
     if (!rt_image_format_supported(format))
         return rt__image_format_refusal(format, error);
     image_bytes bytes = {image, format};
-    rt_producer producer = {produce_image, &bytes};
+    rt_producer producer = {produce_image, &bytes, "image"};
     return rt__save(path, &producer, error);
 }
 
@@ -721,7 +738,7 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
     destination d;
-    rt_status status = resolve(path, &d, error);
+    rt_status status = resolve(path, &d, "image", error);
     if (status != RT_OK) {
         free(d.path);
         return status;
@@ -751,7 +768,8 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
         if (probe < 0) {
             int saved = errno;
             char *folder = folder_of(d.path);
-            status = folder ? folder_error(error, path, folder, saved)
+            status = folder ? folder_error(error, path, folder, saved,
+                                           "image")
                             : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                                             "out of memory");
             free(folder);

@@ -134,6 +134,6 @@ rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a scene");
     scn_bytes bytes = {scene, extended, dropped};
-    rt_producer producer = {produce_scn, &bytes};
+    rt_producer producer = {produce_scn, &bytes, "scene"};
     return rt__save(path, &producer, error);
 }
