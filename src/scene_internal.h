@@ -67,4 +67,10 @@ void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
  * until the scene is freed; NULL when out of memory. */
 const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene);
 
+/* Gives `scene` the files its load read: `sources` (an array of `count`,
+ * from malloc, each name from malloc), which the scene frees; a list it
+ * held before is freed. */
+void rt__scene_take_sources(rt_scene *scene, rt_scene_source *sources,
+                            int count);
+
 #endif /* RAYTRACE_SCENE_INTERNAL_H */
