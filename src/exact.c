@@ -128,7 +128,14 @@ rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 int rt__triangle_has_area(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
     scale(&a, &b, &c);
-    return rt__orient2d(a.x, a.y, b.x, b.y, c.x, c.y) != 0.0 ||
-           rt__orient2d(a.y, a.z, b.y, b.z, c.y, c.z) != 0.0 ||
-           rt__orient2d(a.z, a.x, b.z, b.x, c.z, c.x) != 0.0;
+    /* With coordinates below 1 in magnitude, the floating-point cross
+     * product is within 32 eps (3.6e-15) of the exact one: a component
+     * beyond 1e-13 proves an area, and the exact evaluation, rounded once,
+     * is not zero either.  Otherwise decide as rt__exact_cross does, on
+     * the same scaled coordinates (scaling them again changes nothing). */
+    if (v3_max_abs(v3_cross(v3_sub(b, a), v3_sub(c, a))) > 1e-13)
+        return 1;
+    return orient2d_exact(a.y, a.z, b.y, b.z, c.y, c.z) != 0.0 ||
+           orient2d_exact(a.z, a.x, b.z, b.x, c.z, c.x) != 0.0 ||
+           orient2d_exact(a.x, a.y, b.x, b.y, c.x, c.y) != 0.0;
 }

@@ -33,9 +33,10 @@ double rt__orient2d(double ax, double ay, double bx, double by, double cx,
  */
 rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c);
 
-/* Non-zero when rt__exact_cross(a, b, c) is not the zero vector (the
- * triangle has an area: the scene builder keeps it), decided as cheaply
- * as the signs allow.  Thread-safe. */
+/* Non-zero exactly when rt__exact_cross(a, b, c) is not the zero vector
+ * (the triangle has an area: the scene builder keeps it), decided by a
+ * floating-point cross product when it is far from zero, by the same
+ * exact evaluation otherwise.  Thread-safe. */
 int rt__triangle_has_area(rt_vec3 a, rt_vec3 b, rt_vec3 c);
 
 #endif /* RAYTRACE_EXACT_H */

@@ -13,6 +13,7 @@
 #define _GNU_SOURCE 1
 
 #include <check.h>
+#include <dirent.h>
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -609,6 +610,68 @@ START_TEST(a_cancel_flag_raised_before_a_load_cancels_it)
 }
 END_TEST
 
+/* Every OBJ of the fuzzer's corpus, split and named as fuzz_obj.c does
+ * (the library after a line `#mtl` becomes m.mtl beside it): a refusal
+ * has a message, a scene has no facet without area and quotes nothing of
+ * a library's lines before its first `newmtl`. */
+START_TEST(the_obj_corpus_replays_without_fault)
+{
+    const char *corpus = rt_test_source_path("tests/fuzz/corpus/obj");
+    char *corpus_dir = strdup(corpus);
+    DIR *dir = opendir(corpus_dir);
+    ck_assert_msg(dir != NULL, "%s: %s", corpus_dir, strerror(errno));
+    folders f = make_folders();
+    char *name = join(f.scene_dir, "fuzz.obj"), *mtl = join(f.scene_dir,
+                                                            "m.mtl");
+    rt_load_options options;
+    rt_load_options_init(&options);
+    options.width = options.height = 16;
+    options.resolve = rt_resolve_in_folder;
+    int files = 0;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        if (entry->d_name[0] == '.')
+            continue;
+        char *path = join(corpus_dir, entry->d_name);
+        size_t size;
+        char *text = rt_test_read_file(path, &size);
+        ck_assert_ptr_nonnull(text);
+        char *marker = strstr(text, "\n#mtl\n");
+        unlink(mtl);
+        if (marker != NULL) {
+            write_bytes(mtl, marker + 6, size - (size_t)(marker + 6 - text));
+            size = (size_t)(marker - text) + 1;
+        }
+        rt_scene *scene = (rt_scene *)1;
+        rt_error error;
+        memset(&error, 0, sizeof error);
+        rt_status status = rt_scene_parse_with(text, size, name, &options,
+                                               &scene, &error);
+        if (status == RT_OK) {
+            rt_scene_info info;
+            rt_scene_get_info(scene, &info);
+            ck_assert_msg(info.live_facet_count == info.facet_count,
+                          "%s: a facet without area", entry->d_name);
+            ck_assert_int_eq(warnings_with(scene, "root:"), 0);
+            rt_scene_destroy(scene);
+        } else {
+            ck_assert_ptr_null(scene);
+            ck_assert_msg(error.message[0] != '\0', "%s", entry->d_name);
+        }
+        free(text);
+        free(path);
+        files++;
+    }
+    closedir(dir);
+    ck_assert_int_ge(files, 15);
+    unlink(mtl);
+    free(mtl);
+    free(name);
+    free(corpus_dir);
+    remove_folders(&f);
+}
+END_TEST
+
 static Suite *obj_files_suite(void)
 {
     Suite *s = suite_create("obj_files");
@@ -633,6 +696,7 @@ static Suite *obj_files_suite(void)
     tcase_add_test(
         c, a_scene_file_that_is_a_fifo_still_loads_and_lists_no_identity);
     tcase_add_test(c, a_cancel_flag_raised_before_a_load_cancels_it);
+    tcase_add_test(c, the_obj_corpus_replays_without_fault);
     suite_add_tcase(s, c);
     return s;
 }

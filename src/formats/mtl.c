@@ -402,7 +402,7 @@ rt_status rt__obj_read_libraries(reader *r)
         return rt__obj_out_of_memory(r);
     const token *k = &x->tokens[0];
     if (x->count < 2) {
-        rt__obj_count(&r->no_argument, r->name, k->line, k->column,
+        rt__obj_count(&r->no_library_name, r->name, k->line, k->column,
                       "`mtllib` without a file name is ignored");
         return RT_OK;
     }

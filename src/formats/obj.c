@@ -514,7 +514,8 @@ static rt_status read_obj(reader *r, rt_scene **scene)
                                   &r->no_area,      &r->few_corners,
                                   &r->self_library, &r->more_refused,
                                   &r->bad_values,   &r->lowered,
-                                  &r->no_name,      &r->no_argument};
+                                  &r->no_name,      &r->no_argument,
+                                  &r->no_library_name};
     for (size_t i = 0; i < sizeof summaries / sizeof summaries[0]; i++)
         rt__obj_say(r, summaries[i]);
     if (r->facet_count == 0)

@@ -138,7 +138,7 @@ typedef struct reader {
     /* counted warnings, said once at the end */
     counted fanned, over_budget, no_area, few_corners;
     counted self_library, more_refused, bad_values, lowered, no_name;
-    counted no_argument;
+    counted no_argument, no_library_name;
 } reader;
 
 void rt__obj_warn(reader *r, const char *file, int line, int column,

@@ -131,9 +131,11 @@ static walk_result follow(walk *w, const char *name, const char *rest,
     }
     char joined[MAX_NAME_BYTES + 2];
     memcpy(joined, target, (size_t)n);
-    joined[n] = '/';
-    memcpy(joined + n + 1, rest, rest_length + 1);
-    memcpy(w->path, joined, (size_t)n + rest_length + 2);
+    size_t used = (size_t)n;
+    if (rest_length > 0)
+        joined[used++] = '/';
+    memcpy(joined + used, rest, rest_length + 1);
+    memcpy(w->path, joined, used + rest_length + 1);
     *cursor = w->path;
     return WALK_OPEN;           /* go on */
 }
@@ -194,6 +196,9 @@ static walk_result walk_to(walk *w, const char *reference, size_t limit,
     size_t length = strlen(reference);
     if (reference[0] == '/')
         return WALK_OUTSIDE;
+    for (const char *c = reference; (c = strstr(c, "..")) != NULL; c += 2)
+        if ((c == reference || c[-1] == '/') && (c[2] == '/' || c[2] == '\0'))
+            return WALK_OUTSIDE;    /* no `..` in the name itself */
     if (length > MAX_NAME_BYTES) {
         w->error = ENAMETOOLONG;
         return WALK_FAILED;
