@@ -101,12 +101,12 @@ static rt_vec3 corner(const polygon *p, int i)
     return p->points[id(p, i)];
 }
 
-/* The orientation of corners a, b, c in the plane (exact sign). */
+/* Twice the signed area of corners a, b, c in the plane. */
 static double turn(const polygon *p, int a, int b, int c)
 {
     const double *xy = p->t->xy;
-    return rt__orient2d(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1],
-                        xy[2 * c], xy[2 * c + 1]);
+    return (xy[2 * b] - xy[2 * a]) * (xy[2 * c + 1] - xy[2 * a + 1]) -
+           (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]);
 }
 
 static int same_point(const polygon *p, int a, int b)
@@ -116,66 +116,71 @@ static int same_point(const polygon *p, int a, int b)
 }
 
 /*
- * Fills t->xy with the corners in the coordinate plane the Newell normal
- * is most nearly perpendicular to, mirrored when needed so that the
- * polygon winds counter-clockwise.  The normal is summed over coordinates
- * moved to the first corner and scaled by a power of two to at most 1, so
- * that no size overflows.  Returns 0 when the polygon has no area.
+ * Fills t->xy with the corners projected onto the polygon's best-fit
+ * plane: the Newell normal of the corners, on coordinates moved to the
+ * first corner and scaled to at most 1 (no overflow at any size), and an
+ * orthonormal pair (e1, e2) with e1 x e2 along it, so that the polygon
+ * winds counter-clockwise.  This is the plane (and the arithmetic) the
+ * OBJ reader always cut its polygons in, so its decisions, and the
+ * triangles, stay those of every earlier release.  Returns 0 when the
+ * polygon has no area.
  */
 static int project(polygon *p)
 {
     rt_vec3 origin = corner(p, 0);
-    double largest = 0.0;
+    double scale = 0.0;
     for (int i = 1; i < p->n; i++)
-        largest = fmax(largest, v3_max_abs(v3_sub(corner(p, i), origin)));
-    if (!(largest > 0.0) || !isfinite(largest))
+        scale = fmax(scale, v3_max_abs(v3_sub(corner(p, i), origin)));
+    if (!(scale > 0.0) || !isfinite(scale))
         return 0;
-    int exponent;
-    frexp(largest, &exponent);
-    double unit = ldexp(1.0, -exponent);
     rt_vec3 normal = v3(0, 0, 0);
-    rt_vec3 a = v3(0, 0, 0);
     for (int i = 0; i < p->n; i++) {
-        rt_vec3 b = v3_scale(v3_sub(corner(p, (i + 1) % p->n), origin), unit);
+        rt_vec3 a = v3_scale(v3_sub(corner(p, i), origin), 1.0 / scale);
+        rt_vec3 b = v3_scale(v3_sub(corner(p, (i + 1) % p->n), origin),
+                             1.0 / scale);
         normal.x += (a.y - b.y) * (a.z + b.z);
         normal.y += (a.z - b.z) * (a.x + b.x);
         normal.z += (a.x - b.x) * (a.y + b.y);
-        a = b;
     }
     if (!(v3_max_abs(normal) > 0.0))
         return 0;
-    int k = 2;
-    if (fabs(normal.x) >= fabs(normal.y) && fabs(normal.x) >= fabs(normal.z))
-        k = 0;
-    else if (fabs(normal.y) >= fabs(normal.z))
-        k = 1;
-    double sign = v3_get(normal, k) < 0 ? -1.0 : 1.0;
+    rt_vec3 w = v3_normalize(normal);
+    /* e1 perpendicular to w, along the axis w leans on least. */
+    rt_vec3 axis = fabs(w.x) <= fabs(w.y) && fabs(w.x) <= fabs(w.z)
+                       ? v3(1, 0, 0)
+                       : fabs(w.y) <= fabs(w.z) ? v3(0, 1, 0) : v3(0, 0, 1);
+    rt_vec3 e1 = v3_normalize(v3_cross(axis, w));
+    rt_vec3 e2 = v3_cross(w, e1);       /* (e1, e2, w) right-handed */
     for (int i = 0; i < p->n; i++) {
-        rt_vec3 c = corner(p, i);
-        p->t->xy[2 * i] = v3_get(c, (k + 1) % 3);
-        p->t->xy[2 * i + 1] = sign * v3_get(c, (k + 2) % 3);
+        rt_vec3 q = v3_scale(v3_sub(corner(p, i), origin), 1.0 / scale);
+        p->t->xy[2 * i] = v3_dot(q, e1);
+        p->t->xy[2 * i + 1] = v3_dot(q, e2);
     }
     return 1;
 }
 
 /* Every corner turns left or goes straight on, and the turns add up to
- * one turn (not a star that winds twice), with one left turn at least. */
-static int convex(const polygon *p)
+ * one turn (not a star that winds twice), with one left turn at least.
+ * *straight (may be NULL) tells whether some corner goes straight on. */
+static int convex(const polygon *p, int *straight)
 {
     const double *xy = p->t->xy;
     double winding = 0.0;
-    int left = 0;
+    int left = 0, flat = 0;
     for (int i = 0; i < p->n; i++) {
         int a = i, b = (i + 1) % p->n, c = (i + 2) % p->n;
         double cross = turn(p, a, b, c);
         if (cross < 0.0)
             return 0;
         left |= cross > 0.0;
+        flat |= cross == 0.0;
         double dot = (xy[2 * b] - xy[2 * a]) * (xy[2 * c] - xy[2 * b]) +
                      (xy[2 * b + 1] - xy[2 * a + 1]) *
                          (xy[2 * c + 1] - xy[2 * b + 1]);
         winding += atan2(cross, dot);
     }
+    if (straight != NULL)
+        *straight = flat;
     return left && fabs(winding - 2.0 * PI) < 1.0;
 }
 
@@ -439,8 +444,14 @@ rt_status rt__triangulate(rt_triangulator *t, const rt_vec3 *points,
         result->crossing = result->facets > 0;
         return status;
     }
-    if (convex(&p))
-        return n <= RT_TRI_FAN_MAX_CORNERS ? fan_from_last(&p) : balanced(&p);
+    int straight = 0, is_convex = convex(&p, &straight);
+    if (is_convex && n > RT_TRI_FAN_MAX_CORNERS)
+        return balanced(&p);
+    /* Small convex polygons: the fan, which is what ear clipping finds when
+     * every corner turns; with corners on a straight line (which are no
+     * ears), ear clipping itself, for the triangles it always gave. */
+    if (is_convex && !straight)
+        return fan_from_last(&p);
     return clip_ears(&p);
 }
 
@@ -451,5 +462,5 @@ int rt__tri_is_convex(rt_triangulator *t, const rt_vec3 *points,
         return 0;
     rt_tri_result result;
     polygon p = {t, points, corners, n, NULL, NULL, &result, -1};
-    return project(&p) && convex(&p);
+    return project(&p) && convex(&p, NULL);
 }

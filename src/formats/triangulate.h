@@ -3,19 +3,22 @@
  * OBJ faces and NFF polygons become triangles here (docs/formats.md,
  * "Polygons into facets").
  *
- * A polygon of n corners is read in the plane its Newell normal is most
- * nearly perpendicular to (its corners' own coordinates, so a planar
- * polygon keeps its exact shape), where it winds counter-clockwise.  Every
- * decision is an exact orientation (exact.h), and no triangle without area
- * is ever emitted (the scene builder would keep it as a zero-area facet):
+ * A polygon of n corners is projected onto its best-fit plane (the plane
+ * of its Newell normal), where it winds counter-clockwise; its convexity
+ * and its ears are decided there in floating point, as the OBJ reader
+ * always decided them, so that the meshes of every earlier release are cut
+ * into the same triangles.  Whether a triangle has an area is decided
+ * exactly (exact.h, the scene builder's own test), and no triangle without
+ * one is ever emitted (the builder would keep it as a zero-area facet):
  *
  * - a convex polygon costs O(n): a fan from its last corner when it has at
- *   most RT_TRI_FAN_MAX_CORNERS corners (the triangles, corners in the same
- *   order, that ear clipping starting at corner 0 finds: (n-1, i, i+1),
- *   then (n-3, n-2, n-1); the readers made them so before), else a
- *   balanced triangulation (each chain split at its middle corner), so
- *   that the thin triangles are short and near the boundary instead of
- *   n slivers meeting at one corner;
+ *   most RT_TRI_FAN_MAX_CORNERS corners, every corner turning (the
+ *   triangles, corners in the same order, that ear clipping starting at
+ *   corner 0 finds: (n-1, i, i+1), then (n-3, n-2, n-1); with corners on a
+ *   straight line, ear clipping itself), else a balanced triangulation
+ *   (each chain split at its middle corner), so that the thin triangles
+ *   are short and near the boundary instead of n slivers meeting at one
+ *   corner;
  * - any other polygon is cut by ear clipping, O(n r) for r corners that
  *   are not convex (O(n^2) at worst), under the work budget of the
  *   triangulator, shared by every polygon of a load; a polygon that would
