@@ -9,7 +9,6 @@
  */
 #include "exact.h"
 
-#include <float.h>
 #include <math.h>
 
 #include "vecmath.h"
@@ -69,34 +68,6 @@ static double orient2d_exact(double ax, double ay, double bx, double by,
     two_product(cx, ay, &t[8], &t[9]);
     two_product(-cy, ax, &t[10], &t[11]);
     return expansion_sum(t, 12);
-}
-
-double rt__orient2d(double ax, double ay, double bx, double by, double cx,
-                    double cy)
-{
-    /* (a - c) x (b - c) in floating point: its sign is right when its
-     * magnitude exceeds (3 + 16 eps) eps times the sum of the magnitudes
-     * of its two products (Shewchuk's first error bound, eps = 2^-53),
-     * and when the two products differ in sign. */
-    double left = (ax - cx) * (by - cy);
-    double right = (ay - cy) * (bx - cx);
-    double det = left - right, sum;
-    if (left > 0.0) {
-        if (right <= 0.0)
-            return det;         /* no cancellation: the sign is right */
-        sum = left + right;
-    } else if (left < 0.0) {
-        if (right >= 0.0)
-            return det;
-        sum = -left - right;
-    } else {
-        return det;
-    }
-    const double eps = DBL_EPSILON / 2;
-    double bound = (3.0 + 16.0 * eps) * eps * sum;
-    if (det >= bound || -det >= bound)
-        return det;
-    return orient2d_exact(ax, ay, bx, by, cx, cy);
 }
 
 /* The triangle scaled by the power of two that brings its largest
