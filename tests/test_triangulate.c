@@ -151,6 +151,23 @@ START_TEST(a_large_convex_polygon_is_cut_balanced_at_no_cost_to_the_budget)
             if (++uses[t.corners[i][k]] > most)
                 most = uses[t.corners[i][k]];
     ck_assert_int_le(most, 2 * 17 + 2);
+    /* Short and local: the facets' bounding boxes add up to a few times
+     * the polygon's (a ray meets O(1) of them); a fan's add up to about
+     * n / 4 times. */
+    double boxes = 0;
+    for (int i = 0; i < t.count; i++) {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int k = 0; k < 3; k++) {
+            rt_vec3 q = p[t.corners[i][k]];
+            lo[0] = fmin(lo[0], q.x), hi[0] = fmax(hi[0], q.x);
+            lo[1] = fmin(lo[1], q.y), hi[1] = fmax(hi[1], q.y);
+        }
+        boxes += (hi[0] - lo[0]) * (hi[1] - lo[1]);
+    }
+    double polygon_box = 2e3 * 2e3;
+    ck_assert_msg(boxes <= 4 * polygon_box, "the boxes add up to %g times "
+                                            "the polygon's",
+                  boxes / polygon_box);
     free(uses);
     free(t.corners);
     free(p);
@@ -183,6 +200,28 @@ static int shapes(int which, rt_vec3 *p)
     }
     return n;
 }
+
+START_TEST(a_convex_polygon_written_with_rounded_coordinates_is_still_cut_in_o_n)
+{
+    /* 10^5 corners on a circle, rounded to 6 decimals (as exporters write
+     * them): dents of up to about 1e-6 turn corners slightly right; with
+     * no budget it must still be cut balanced, not given up on. */
+    int n = 100000;
+    rt_vec3 *p = regular_polygon(n, 1);
+    for (int i = 0; i < n; i++) {
+        p[i].x = round(p[i].x * 1e6) / 1e6;
+        p[i].y = round(p[i].y * 1e6) / 1e6;
+    }
+    triangles t;
+    rt_tri_result r;
+    ck_assert_int_eq(cut(p, n, 0, NULL, &t, &r, NULL), RT_OK);
+    ck_assert(!r.over_budget && !r.crossing);
+    ck_assert_int_eq(r.facets + r.dropped, n - 2);
+    ck_assert_int_gt(r.facets, n / 2);
+    free(t.corners);
+    free(p);
+}
+END_TEST
 
 START_TEST(non_convex_polygons_are_cut_inside_themselves_with_their_winding)
 {
@@ -243,7 +282,7 @@ START_TEST(ear_clipping_stops_at_its_budget_and_fans_the_rest)
      * for an ear (n corners) and three ear tests (n corners each). */
     ck_assert_msg(left >= -4.0 * n, "overspent by %g", -left);
     free(t.corners);
-    /* No budget at all: a fan from the first corner at once. */
+    /* No budget at all: cut balanced at once, from the first corner. */
     ck_assert_int_eq(cut(p, n, 0, NULL, &t, &r, &left), RT_OK);
     ck_assert(r.over_budget);
     ck_assert_int_eq(t.corners[0][0], 0);
@@ -311,6 +350,9 @@ static Suite *triangulate_suite(void)
         c, convex_polygons_of_up_to_64_corners_are_the_fan_ear_clipping_gave);
     tcase_add_test(
         c, a_large_convex_polygon_is_cut_balanced_at_no_cost_to_the_budget);
+    tcase_add_test(
+        c,
+        a_convex_polygon_written_with_rounded_coordinates_is_still_cut_in_o_n);
     tcase_add_test(
         c, non_convex_polygons_are_cut_inside_themselves_with_their_winding);
     tcase_add_test(c, polygons_without_area_give_no_triangle);

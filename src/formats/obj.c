@@ -355,8 +355,9 @@ static rt_status face(reader *r)
         rt__obj_count(&r->over_budget, r->name, keyword.line, keyword.column,
                       "the load's budget for cutting non-convex polygons "
                       "(%d corner tests per byte of the file, plus %d) is "
-                      "spent: this polygon is triangulated as a fan from "
-                      "its first corner, which may cover what it does not",
+                      "spent: this polygon is cut without looking for ears "
+                      "(each chain of corners split at its middle), which "
+                      "may cover what it does not",
                       RT_TRI_WORK_PER_BYTE, RT_TRI_WORK_FLOOR);
     else if (result.crossing)
         rt__obj_count(&r->fanned, r->name, keyword.line, keyword.column,

@@ -159,19 +159,34 @@ static int project(polygon *p)
     return 1;
 }
 
-/* Every corner turns left or goes straight on, and the turns add up to
- * one turn (not a star that winds twice), with one left turn at least.
- * *straight (may be NULL) tells whether some corner goes straight on. */
-static int convex(const polygon *p, int *straight)
+/* What the corners' turns make of a polygon. */
+typedef enum shape {
+    NOT_CONVEX,
+    ALL_TURNING,        /* convex, every corner turning left */
+    SOME_STRAIGHT,      /* convex, some corners going straight on */
+    DENTED              /* convex but for corners turning right by a dent
+                           of at most RT_TRI_DENT of the extent */
+} shape;
+
+/* The turns add up to one turn (not a star that winds twice), one left
+ * turn at least, and no corner turns right by more than a dent. */
+static shape convexity(const polygon *p)
 {
     const double *xy = p->t->xy;
     double winding = 0.0;
-    int left = 0, flat = 0;
+    int left = 0, flat = 0, dented = 0;
     for (int i = 0; i < p->n; i++) {
         int a = i, b = (i + 1) % p->n, c = (i + 2) % p->n;
         double cross = turn(p, a, b, c);
-        if (cross < 0.0)
-            return 0;
+        if (cross < 0.0) {
+            /* b's distance inside the chord a-c; the coordinates are
+             * scaled to the polygon's extent */
+            double chord = hypot(xy[2 * c] - xy[2 * a],
+                                 xy[2 * c + 1] - xy[2 * a + 1]);
+            if (!(-cross <= RT_TRI_DENT * chord))
+                return NOT_CONVEX;
+            dented = 1;
+        }
         left |= cross > 0.0;
         flat |= cross == 0.0;
         double dot = (xy[2 * b] - xy[2 * a]) * (xy[2 * c] - xy[2 * b]) +
@@ -179,9 +194,9 @@ static int convex(const polygon *p, int *straight)
                          (xy[2 * c + 1] - xy[2 * b + 1]);
         winding += atan2(cross, dot);
     }
-    if (straight != NULL)
-        *straight = flat;
-    return left && fabs(winding - 2.0 * PI) < 1.0;
+    if (!left || !(fabs(winding - 2.0 * PI) < 1.0))
+        return NOT_CONVEX;
+    return dented ? DENTED : flat ? SOME_STRAIGHT : ALL_TURNING;
 }
 
 /* Emits corners (a, b, c) when they bound an area. */
@@ -218,14 +233,15 @@ static rt_status fan_from_last(polygon *p)
     return status;
 }
 
-/* Each chain lo..hi (hi - lo >= 2) gives (lo, mid, hi) and is split at its
- * middle corner, depth first; the first chain is the whole polygon.  The
- * stack holds at most two chains a level. */
-static rt_status balanced(polygon *p)
+/* Each chain lo..hi (hi - lo >= 2) of the corners order[0..m) (0..m
+ * when order is NULL) gives (lo, mid, hi) and is split at its middle
+ * corner, depth first; the first chain is the whole ring.  The stack
+ * holds at most two chains a level. */
+static rt_status balanced(polygon *p, const int *order, int m)
 {
     int stack[2 * 64][2], depth = 0;
     stack[depth][0] = 0;
-    stack[depth++][1] = p->n - 1;
+    stack[depth++][1] = m - 1;
     rt_status status = RT_OK;
     while (depth > 0 && status == RT_OK) {
         int lo = stack[depth - 1][0], hi = stack[depth - 1][1];
@@ -233,7 +249,8 @@ static rt_status balanced(polygon *p)
         if (hi - lo < 2)
             continue;
         int mid = lo + (hi - lo) / 2;
-        status = triangle(p, lo, mid, hi);
+        status = order ? triangle(p, order[lo], order[mid], order[hi])
+                       : triangle(p, lo, mid, hi);
         p->t->since_poll += 1;
         if (status == RT_OK)
             status = poll(p->t);
@@ -243,6 +260,17 @@ static rt_status balanced(polygon *p)
         stack[depth++][1] = mid;
     }
     return status;
+}
+
+/* The `left` corners of the ring from `first`, cut balanced: what the
+ * budget leaves of a polygon. */
+static rt_status balanced_ring(polygon *p, int first, int left)
+{
+    int *order = p->t->bprev;   /* the list of corners is done with */
+    for (int i = 0, b = first; i < left; i++, b = p->t->next[b])
+        order[i] = b;
+    p->result->over_budget = 1;
+    return balanced(p, order, left);
 }
 
 /* The corners left, as a fan from `first`. */
@@ -354,18 +382,14 @@ static rt_status clip_ears(polygon *p)
     for (int i = 0; i < n; i++)
         classify(p, i);
     int first = 0, cur = 0, left = n;
-    if (!mark_every_ear(p, first, left)) {
-        p->result->over_budget = 1;
-        return fan_ring(p, first);
-    }
+    if (!mark_every_ear(p, first, left))
+        return balanced_ring(p, first, left);
     rt_status status = RT_OK;
     while (left > 3 && status == RT_OK) {
         if ((status = poll(t)) != RT_OK)
             break;
-        if (t->work_left < 0) {
-            p->result->over_budget = 1;
-            return fan_ring(p, first);
-        }
+        if (t->work_left < 0)
+            return balanced_ring(p, first, left);
         int b = cur, found = -1;
         for (int step = 0; step < left && found < 0; step++) {
             t->work_left -= 1;
@@ -406,10 +430,8 @@ static rt_status clip_ears(polygon *p)
         classify(p, a);
         classify(p, c);
         if (dropped_flat) {
-            if (!mark_every_ear(p, first, left)) {
-                p->result->over_budget = 1;
-                return fan_ring(p, first);
-            }
+            if (!mark_every_ear(p, first, left))
+                return balanced_ring(p, first, left);
         } else {
             mark_ear(p, a);
             mark_ear(p, c);
@@ -444,13 +466,13 @@ rt_status rt__triangulate(rt_triangulator *t, const rt_vec3 *points,
         result->crossing = result->facets > 0;
         return status;
     }
-    int straight = 0, is_convex = convex(&p, &straight);
-    if (is_convex && n > RT_TRI_FAN_MAX_CORNERS)
-        return balanced(&p);
+    shape s = convexity(&p);
+    if (s != NOT_CONVEX && n > RT_TRI_FAN_MAX_CORNERS)
+        return balanced(&p, NULL, n);
     /* Small convex polygons: the fan, which is what ear clipping finds when
      * every corner turns; with corners on a straight line (which are no
-     * ears), ear clipping itself, for the triangles it always gave. */
-    if (is_convex && !straight)
+     * ears) or dents, ear clipping itself, for the triangles it gave. */
+    if (s == ALL_TURNING)
         return fan_from_last(&p);
     return clip_ears(&p);
 }
@@ -462,5 +484,5 @@ int rt__tri_is_convex(rt_triangulator *t, const rt_vec3 *points,
         return 0;
     rt_tri_result result;
     polygon p = {t, points, corners, n, NULL, NULL, &result, -1};
-    return project(&p) && convex(&p, NULL);
+    return project(&p) && convexity(&p) != NOT_CONVEX;
 }

@@ -18,12 +18,15 @@
  *   straight line, ear clipping itself), else a balanced triangulation
  *   (each chain split at its middle corner), so that the thin triangles
  *   are short and near the boundary instead of n slivers meeting at one
- *   corner;
+ *   corner.  Convex here allows dents of at most RT_TRI_DENT of the
+ *   polygon's extent: a circle written with 6 or 9 decimals is not
+ *   convex to the last bit;
  * - any other polygon is cut by ear clipping, O(n r) for r corners that
  *   are not convex (O(n^2) at worst), under the work budget of the
- *   triangulator, shared by every polygon of a load; a polygon that would
- *   overspend it, or one that has no ear left (it crosses itself), or one
- *   with no area at all, is cut as a fan from its first remaining corner.
+ *   triangulator, shared by every polygon of a load; what is left of a
+ *   polygon when the budget is spent is cut balanced, one that has no ear
+ *   left (it crosses itself) or no area at all as a fan from its first
+ *   remaining corner (as the OBJ reader always did).
  *
  * Every triangle keeps the polygon's winding: (b - a) x (c - a) points
  * where its Newell normal does.
@@ -47,6 +50,13 @@
 #define RT_TRI_WORK_PER_BYTE 256
 #define RT_TRI_WORK_FLOOR (1 << 25)
 
+/* The deepest dent a convex polygon may have, relative to its extent: the
+ * rounding of coordinates written with 6 significant digits (5e-7), with
+ * room.  Below a millionth of a polygon's size a dent is no pixel of any
+ * image up to 16384 pixels wide seeing it whole, and cutting across it is
+ * O(n) instead of ear clipping's O(n^2). */
+#define RT_TRI_DENT 1e-6
+
 /* How often the cancel flag is polled: every this many corner tests. */
 #define RT_TRI_POLL_WORK (1 << 16)
 
@@ -57,7 +67,8 @@ typedef struct rt_tri_result {
     int crossing;       /* non-zero: no ear was left (the polygon crosses
                            itself) or it had no area; the rest is a fan */
     int over_budget;    /* non-zero: the budget was spent; the rest (or
-                           all) is a fan */
+                           all) is cut balanced, without looking for
+                           ears */
 } rt_tri_result;
 
 /* A triangulator: its scratch memory, its budget and the cancel flag. */
@@ -95,8 +106,9 @@ rt_status rt__triangulate(rt_triangulator *t, const rt_vec3 *points,
                           void *user, rt_tri_result *result);
 
 /* Non-zero when the polygon is convex in the plane of its Newell normal
- * (corners on a straight line allowed, not a star that winds twice); 0
- * also when out of memory.  O(n). */
+ * (corners on a straight line and dents of at most RT_TRI_DENT allowed,
+ * not a star that winds twice): rt__triangulate cuts it in O(n).  0 also
+ * when out of memory.  O(n). */
 int rt__tri_is_convex(rt_triangulator *t, const rt_vec3 *points,
                       const int *corners, int n);
 
