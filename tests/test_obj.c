@@ -419,18 +419,6 @@ START_TEST(an_obj_from_memory_without_a_resolver_reads_no_library)
                           "f 1 2 3\n");
     ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
     rt_scene_destroy(scene);
-    /* Named like a file beside a library: still nothing read, unasked. */
-    const char *text = "mtllib materials.mtl\nusemtl matte_red\n"
-                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    ck_assert_int_eq(rt_scene_parse_with(
-                         text, strlen(text),
-                         rt_test_source_path("tests/data/obj/m.obj"), NULL,
-                         &scene, NULL),
-                     RT_OK);
-    ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
-    material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(rt_scene_source_count(scene), 0);
-    rt_scene_destroy(scene);
 }
 END_TEST
 
