@@ -15,10 +15,10 @@ find_package(Threads)
 
 if(MPI_C_FOUND AND Threads_FOUND)
   if(COMMAND raytrace_add_program)
-    raytrace_add_program(rt-export-mpi rt-export-mpi.c mpi/farm.c
+    raytrace_add_program(rt-export-mpi rt-export-mpi.c mpi/farm.c mpi/share.c
       LIBS raytrace_cli MPI::MPI_C Threads::Threads)
   else()
-    add_executable(raytrace_rt_export_mpi rt-export-mpi.c mpi/farm.c)
+    add_executable(raytrace_rt_export_mpi rt-export-mpi.c mpi/farm.c mpi/share.c)
     set_target_properties(raytrace_rt_export_mpi PROPERTIES
       OUTPUT_NAME rt-export-mpi)
     target_link_libraries(raytrace_rt_export_mpi PRIVATE raytrace_cli

@@ -5,8 +5,10 @@
  *     mpirun -np N rt-export-mpi SCENE -o OUT [every rt-export render option]
  *
  * Every rank parses the same command line (only rank 0 speaks).  Rank 0
- * reads the scene once, checks it and the output, and broadcasts the
- * scene's bytes, which every rank parses the same way; then the bands of
+ * reads the scene once and every file it names (an OBJ's material
+ * libraries), checks it and the output, and broadcasts all those bytes,
+ * from which every rank parses the same scene without reading its own disk
+ * (apps/mpi/share.h), and checks that it is rank 0's; then the bands of
  * the image are handed out from rank 0's queue (apps/mpi/farm.h), rendered
  * with all the cores of each rank, and received into rank 0's image, which
  * rank 0 saves with the library's safe save once every band has arrived.
@@ -32,6 +34,7 @@
 #include "cli_output.h"
 #include "cli_report.h"
 #include "farm.h"
+#include "share.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -135,6 +138,8 @@ static char *default_output(const char *scene, rt_image_format format)
 /* What rank 0 decided before the render. */
 typedef struct plan {
     scene_text text;
+    share_files files;          /* the files the scene names, as rank 0
+                                   read them */
     rt_scene *scene;
     char *default_path;         /* allocated when -o was not given */
     const char *output;         /* where the image goes */
@@ -167,8 +172,11 @@ static int prepare(cli_settings *s, plan *p)
     clock_gettime(CLOCK_MONOTONIC, &start);
     if (!read_scene(path, &p->text))
         return EXIT_BAD_INPUT;
+    rt_load_options load = s->load;
+    load.resolve = share_record;
+    load.resolve_user = &p->files;
     if (rt_scene_parse_with(p->text.bytes, p->text.length, p->text.name,
-                            &s->load, &p->scene, &error) != RT_OK) {
+                            &load, &p->scene, &error) != RT_OK) {
         fprintf(stderr, "rt-export-mpi: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
@@ -201,9 +209,10 @@ static int prepare(cli_settings *s, plan *p)
     return CLI_CONTINUE;
 }
 
-/* Every rank: rank 0's verdict, then the scene's bytes, parsed on the
- * other ranks.  Returns CLI_CONTINUE with p->scene set on every rank, or
- * the exit status every rank returns. */
+/* Every rank: rank 0's verdict, then the scene's bytes and those of the
+ * files it names, parsed on the other ranks into the scene rank 0 built
+ * (its digest compared).  Returns CLI_CONTINUE with p->scene set on every
+ * rank, or the exit status every rank returns. */
 static int share_scene(cli_settings *s, plan *p, int rank)
 {
     long long header[2] = {CLI_CONTINUE, 0};
@@ -227,17 +236,32 @@ static int share_scene(cli_settings *s, plan *p, int rank)
     /* <= RT_MAX_SCENE_BYTES (1 GiB): one count fits an int */
     MPI_Bcast(p->text.bytes, (int)p->text.length, MPI_BYTE, 0,
               MPI_COMM_WORLD);
+    share_broadcast(&p->files, rank, MPI_COMM_WORLD);
     int failed = 0;
     if (rank != 0) {
         rt_error error;
+        rt_load_options load = s->load;
+        load.resolve = share_serve;
+        load.resolve_user = &p->files;
         if (rt_scene_parse_with(p->text.bytes, p->text.length, p->text.name,
-                                &s->load, &p->scene, &error) != RT_OK) {
-            /* only an OBJ's material library, read from this rank's disk,
-             * can differ from rank 0's */
+                                &load, &p->scene, &error) != RT_OK) {
             fprintf(stderr, "rt-export-mpi: rank %d: %s\n", rank,
                     error.message);
             failed = 1;
         }
+    }
+    /* The same bytes, the same options: the same scene, unless the ranks
+     * run different programs or were given different command lines. */
+    unsigned long long digest = p->scene ? share_digest(p->scene) : 0;
+    unsigned long long expected = digest;
+    MPI_Bcast(&expected, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    if (rank != 0 && !failed && digest != expected) {
+        fprintf(stderr, "rt-export-mpi: rank %d: %s: the scene this rank "
+                        "built from rank 0's bytes is not rank 0's (digest "
+                        "%016llx, rank 0's %016llx): the ranks run different "
+                        "programs or command lines; nothing is rendered\n",
+                rank, p->text.name, digest, expected);
+        failed = 1;
     }
     MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX,
                   MPI_COMM_WORLD);
@@ -452,6 +476,7 @@ int main(int argc, char **argv)
         }
     }
     rt_scene_destroy(p.scene);
+    share_free(&p.files);
     free(p.text.bytes);
     free(p.default_path);
     MPI_Finalize();

@@ -76,10 +76,16 @@ static char *default_output(const char *scene, rt_image_format format)
     return out;
 }
 
-/* Reads the whole scene from standard input and parses it as "<stdin>". */
-static rt_status load_standard_input(const rt_load_options *options,
+/* Reads the whole scene from standard input and parses it as "<stdin>";
+ * the files it names (an OBJ's libraries) are looked for in the current
+ * folder, as rt_scene_load_with looks in the scene's. */
+static rt_status load_standard_input(const rt_load_options *given,
                                      rt_scene **scene, rt_error *error)
 {
+    rt_load_options resolved = *given;
+    const rt_load_options *options = &resolved;
+    if (resolved.resolve == NULL)
+        resolved.resolve = rt_resolve_in_folder;
     size_t capacity = 1 << 16, used = 0;
     char *text = malloc(capacity);
     while (text != NULL) {

@@ -4,67 +4,105 @@
 #include "file.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdint.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "error.h"
 #include "raytrace/scene.h"
 
-/* Reads all of `file`, or, when `text`, stops after the chunk that holds
- * a NUL byte or takes the size past RT_MAX_SCENE_BYTES. */
+/* Reads all of `fd`, or, when `text`, stops after the chunk that holds a
+ * NUL byte or takes the size past RT_MAX_SCENE_BYTES.  Returns 0, or the
+ * errno of a failed read (with *buffer still owned and filled), or -1
+ * when out of memory (*buffer NULL). */
+static int read_descriptor(int fd, int text, char **out, size_t *length)
+{
+    size_t capacity = 1 << 16, used = 0, checked = 0;
+    char *buffer = malloc(capacity);
+    int failure = 0;
+    while (buffer != NULL) {
+        if (used == capacity - 1) {
+            if (text && (used > RT_MAX_SCENE_BYTES ||
+                         memchr(buffer + checked, 0, used - checked) != NULL))
+                break;      /* the text check names the reason */
+            checked = used;
+            char *bigger = capacity <= SIZE_MAX / 2
+                               ? realloc(buffer, capacity * 2)
+                               : NULL;
+            if (bigger == NULL)
+                free(buffer);
+            buffer = bigger;
+            capacity *= 2;
+            continue;
+        }
+        ssize_t got = read(fd, buffer + used, capacity - 1 - used);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0)
+            failure = errno;
+        if (got <= 0)
+            break;
+        used += (size_t)got;
+    }
+    *out = buffer;
+    if (buffer == NULL)
+        return -1;
+    buffer[used] = '\0';
+    *length = used;
+    return failure;
+}
+
 static rt_status read_all(const char *path, int text, char **data,
-                          size_t *length, rt_error *error)
+                          size_t *length, rt_file_identity *identity,
+                          rt_error *error)
 {
     *data = NULL;
     *length = 0;
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
+    if (identity != NULL)
+        *identity = (rt_file_identity){0, 0};
+    int fd = open(path, O_RDONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0)
         return rt__error_set(error, RT_ERR_IO, path, 0, 0, "cannot open: %s",
                              strerror(errno));
-    size_t capacity = 1 << 16, used = 0;
-    char *buffer = malloc(capacity);
-    while (buffer != NULL) {
-        size_t got = fread(buffer + used, 1, capacity - used - 1, file);
-        used += got;
-        if (used < capacity - 1)
-            break;
-        if (text && (used > RT_MAX_SCENE_BYTES ||
-                     memchr(buffer + used - got, 0, got) != NULL))
-            break;          /* the text check names the reason */
-        char *bigger = capacity <= SIZE_MAX / 2 ? realloc(buffer, capacity * 2)
-                                                : NULL;
-        if (bigger == NULL)
-            free(buffer);
-        buffer = bigger;
-        capacity *= 2;
-    }
-    int failed = ferror(file);
-    int saved = errno;
-    fclose(file);
-    if (buffer == NULL)
+    struct stat st;
+    if (identity != NULL && fstat(fd, &st) == 0 && S_ISREG(st.st_mode))
+        *identity = (rt_file_identity){(uint64_t)st.st_dev,
+                                       (uint64_t)st.st_ino};
+    char *buffer;
+    int failure = read_descriptor(fd, text, &buffer, length);
+    close(fd);
+    if (failure < 0)
         return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                              "out of memory reading the file");
-    if (failed) {
+    if (failure > 0) {
         free(buffer);
+        *length = 0;
         return rt__error_set(error, RT_ERR_IO, path, 0, 0, "cannot read: %s",
-                             strerror(saved));
+                             strerror(failure));
     }
-    buffer[used] = '\0';
     *data = buffer;
-    *length = used;
     return RT_OK;
 }
 
 rt_status rt__read_file(const char *path, char **data, size_t *length,
                         rt_error *error)
 {
-    return read_all(path, 0, data, length, error);
+    return read_all(path, 0, data, length, NULL, error);
 }
 
 rt_status rt__read_text_file(const char *path, char **data, size_t *length,
                              rt_error *error)
 {
-    return read_all(path, 1, data, length, error);
+    return read_all(path, 1, data, length, NULL, error);
+}
+
+rt_status rt__read_text_file_identified(const char *path, char **data,
+                                        size_t *length,
+                                        rt_file_identity *identity,
+                                        rt_error *error)
+{
+    return read_all(path, 1, data, length, identity, error);
 }

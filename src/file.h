@@ -5,19 +5,34 @@
 #define RAYTRACE_FILE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "raytrace/status.h"
 
+/* What names a file read: its device and inode when it is a regular file,
+ * 0 and 0 otherwise (a FIFO, a terminal, a device). */
+typedef struct rt_file_identity {
+    uint64_t device, inode;
+} rt_file_identity;
+
 /* Reads the file at `path` into a new NUL-terminated buffer (*data, to be
- * freed with free) of *length bytes.  Errors name the path. */
+ * freed with free) of *length bytes.  The file is opened without becoming
+ * the controlling terminal, and what was read is the descriptor's (fstat
+ * on it, not on the name).  Errors name the path. */
 rt_status rt__read_file(const char *path, char **data, size_t *length,
                         rt_error *error);
 
 /* The same for a text file (a scene): reading stops early at a chunk
  * holding a NUL byte or past RT_MAX_SCENE_BYTES, so that /dev/zero or a
  * huge binary file costs a chunk, not the memory; rt__text_check then
- * names the reason. */
+ * names the reason.  FIFOs and terminals are read to their end (a user
+ * may name `<(cat x.scn)`).  *identity (may be NULL) receives what the
+ * descriptor read was. */
 rt_status rt__read_text_file(const char *path, char **data, size_t *length,
                              rt_error *error);
+rt_status rt__read_text_file_identified(const char *path, char **data,
+                                        size_t *length,
+                                        rt_file_identity *identity,
+                                        rt_error *error);
 
 #endif /* RAYTRACE_FILE_H */

@@ -15,91 +15,11 @@
 #include <string.h>
 
 #include "error.h"
+#include "exact.h"
 #include "kernel/plane_crossing.h"
 #include "formats/reader.h"
 #include "scene_internal.h"
 #include "vecmath.h"
-
-/* Exact products and sums (Dekker, Knuth): a*b = hi + lo and a+b = s + e,
- * exactly, barring underflow. */
-static void two_product(double a, double b, double *hi, double *lo)
-{
-    *hi = a * b;
-    *lo = fma(a, b, -*hi);
-}
-
-static void two_sum(double a, double b, double *s, double *e)
-{
-    *s = a + b;
-    double bb = *s - a;
-    *e = (a - (*s - bb)) + (b - bb);
-}
-
-/* The sum of n doubles, rounded once (to within an ulp): the terms are
- * accumulated into a nonoverlapping expansion (Shewchuk's grow-expansion),
- * whose components are then added from the smallest up.  Its sign is
- * exact, and it is zero only when the exact sum is. */
-static double expansion_sum(const double *terms, int n)
-{
-    double expansion[16];
-    int length = 0;
-    for (int i = 0; i < n; i++) {
-        double q = terms[i];
-        int kept = 0;
-        for (int j = 0; j < length; j++) {
-            double s, e;
-            two_sum(q, expansion[j], &s, &e);
-            if (e != 0.0)
-                expansion[kept++] = e;
-            q = s;
-        }
-        if (q != 0.0)
-            expansion[kept++] = q;
-        length = kept;
-    }
-    double sum = 0.0;
-    for (int j = 0; j < length; j++)
-        sum += expansion[j];
-    return sum;
-}
-
-/* The 2D orientation ax by - ay bx + bx cy - by cx + cx ay - cy ax of
- * (a, b, c), from exact products: the value to within an ulp, the sign
- * exactly. */
-static double orient2d(double ax, double ay, double bx, double by, double cx,
-                       double cy)
-{
-    double t[12];
-    two_product(ax, by, &t[0], &t[1]);
-    two_product(-ay, bx, &t[2], &t[3]);
-    two_product(bx, cy, &t[4], &t[5]);
-    two_product(-by, cx, &t[6], &t[7]);
-    two_product(cx, ay, &t[8], &t[9]);
-    two_product(-cy, ax, &t[10], &t[11]);
-    return expansion_sum(t, 12);
-}
-
-/*
- * (b - a) x (c - a) evaluated from the vertices without rounding the edges:
- * each component is the orientation of the triangle projected on a
- * coordinate plane.  The vertices are first scaled by a power of two (an
- * exact operation) so that the products neither overflow nor underflow.
- * Accurate to an ulp per component whatever the facet's shape, zero exactly
- * when the vertices are collinear.
- */
-rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
-{
-    double largest = fmax(v3_max_abs(a), fmax(v3_max_abs(b), v3_max_abs(c)));
-    int exponent = 0;
-    if (largest > 0.0)
-        frexp(largest, &exponent);
-    a = v3(ldexp(a.x, -exponent), ldexp(a.y, -exponent), ldexp(a.z, -exponent));
-    b = v3(ldexp(b.x, -exponent), ldexp(b.y, -exponent), ldexp(b.z, -exponent));
-    c = v3(ldexp(c.x, -exponent), ldexp(c.y, -exponent), ldexp(c.z, -exponent));
-    return v3(orient2d(a.y, a.z, b.y, b.z, c.y, c.z),
-              orient2d(a.z, a.x, b.z, b.x, c.z, c.x),
-              orient2d(a.x, a.y, b.x, b.y, c.x, c.y));
-}
 
 /* Unit normal in the direction of (b - a) x (c - a), accurate for any
  * shape (slivers and needles included); zero for a zero-area facet. */
@@ -494,6 +414,16 @@ const rt_scene_source *rt_scene_source_at(const rt_scene *scene, int i)
     if (!INDEX_OK(scene, i, source_count))
         return NULL;
     return &scene->sources[i];
+}
+
+void rt__scene_take_sources(rt_scene *scene, rt_scene_source *sources,
+                            int count)
+{
+    for (int i = 0; i < scene->source_count; i++)
+        free((char *)scene->sources[i].name);
+    free(scene->sources);
+    scene->sources = sources;
+    scene->source_count = count;
 }
 
 const rt_warning *rt_scene_warning(const rt_scene *scene, int i)

@@ -61,11 +61,6 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
                             int width, int height, rt_camera *camera);
 
-/* (b - a) x (c - a) from the vertices without rounding the edges: each
- * component to within an ulp whatever the facet's shape, and zero exactly
- * when the vertices are collinear.  Thread-safe. */
-rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c);
-
 /* The bytes of a scene's own records (itself, its name, vertices, facet
  * records, warnings and lights; not its kernels): what a load leaves in
  * memory besides the renderer's data.  For tests of the budgets. */
@@ -77,5 +72,11 @@ void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
 /* The scene's float kernel, built on the first call (thread-safe) and kept
  * until the scene is freed; NULL when out of memory. */
 const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene);
+
+/* Gives `scene` the files its load read: `sources` (an array of `count`,
+ * from malloc, each name from malloc), which the scene frees; a list it
+ * held before is freed. */
+void rt__scene_take_sources(rt_scene *scene, rt_scene_source *sources,
+                            int count);
 
 #endif /* RAYTRACE_SCENE_INTERNAL_H */

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -149,6 +150,33 @@ void assert_previous_intact(const char *path)
                   "%s: the previous file was changed (now %zu bytes)", path,
                   size);
     free(data);
+}
+
+static size_t address_space_in_use(void)
+{
+    FILE *file = fopen("/proc/self/statm", "r");
+    unsigned long pages = 0;
+    if (file != NULL) {
+        if (fscanf(file, "%lu", &pages) != 1)
+            pages = 0;
+        fclose(file);
+    }
+    return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
+}
+
+int limit_address_space(size_t more, char *message, size_t size)
+{
+    size_t in_use = address_space_in_use();
+    if (in_use == 0) {
+        snprintf(message, size, "cannot read /proc/self/statm");
+        return 0;
+    }
+    struct rlimit limit = {in_use + more, in_use + more};
+    if (setrlimit(RLIMIT_AS, &limit) != 0) {
+        snprintf(message, size, "setrlimit: %s", strerror(errno));
+        return 0;
+    }
+    return 1;
 }
 
 int run_in_child(child_fn child, void *arg, char *message,

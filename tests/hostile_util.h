@@ -47,6 +47,12 @@ void assert_previous_intact(const char *path);
 typedef int (*child_fn)(void *arg, char *message, size_t size);
 int run_in_child(child_fn child, void *arg, char *message, size_t size);
 
+/* In a child of run_in_child: limits the address space to what is in use
+ * plus `more` bytes (RLIMIT_AS).  0, with `message` saying why, when it
+ * cannot.  Meaningless under a sanitizer or valgrind, which reserve far
+ * more than they use. */
+int limit_address_space(size_t more, char *message, size_t size);
+
 /* Parses `text` and checks the contract of a refusal; returns the status. */
 rt_status parse_refused(const char *text, size_t length, rt_error *error);
 

@@ -1,7 +1,8 @@
 # rt-export-mpi under mpirun (tests/mpi/test_mpi.sh): -np 1, 2
 # and 3 byte-compared with rt-export, a bad scene, usage errors, a rank
 # killed mid-render, an output that is the scene, a failed save that keeps
-# the image.
+# the image, an OBJ's library that only rank 0 has, ranks given different
+# command lines.
 # Label `mpi`.  Without MPI (no rt-export-mpi, or no mpiexec) each test
 # exits 77: a skip ctest shows, never a pass.
 #
@@ -14,7 +15,7 @@
 # as "<unknown module>".  So detect_leaks=0 for these tests only; ASan's
 # other checks and UBSan stay on.
 set(RT_MPI_TESTS exact_np1 exact_np2 exact_np3 bad_scene usage
-  killed_rank own_input rescue)
+  killed_rank own_input rescue libraries mismatch)
 if(TARGET raytrace_rt_export)
   set(RT_MPI_EXPORT raytrace_rt_export)
 else()

@@ -230,31 +230,11 @@ typedef struct bounded_parse {
     size_t limit;           /* bytes of address space the parse may add */
 } bounded_parse;
 
-static size_t address_space_in_use(void)
-{
-    FILE *file = fopen("/proc/self/statm", "r");
-    unsigned long pages = 0;
-    if (file != NULL) {
-        if (fscanf(file, "%lu", &pages) != 1)
-            pages = 0;
-        fclose(file);
-    }
-    return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
-}
-
 static int parse_with_memory_limit(void *arg, char *message, size_t size)
 {
     const bounded_parse *b = arg;
-    size_t in_use = address_space_in_use();
-    if (in_use == 0) {
-        snprintf(message, size, "cannot read /proc/self/statm");
+    if (!limit_address_space(b->limit, message, size))
         return 2;
-    }
-    struct rlimit limit = {in_use + b->limit, in_use + b->limit};
-    if (setrlimit(RLIMIT_AS, &limit) != 0) {
-        snprintf(message, size, "setrlimit: %s", strerror(errno));
-        return 2;
-    }
     rt_error error;
     rt_status status;
     if (b->is_image) {

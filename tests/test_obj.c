@@ -384,7 +384,8 @@ START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
     ck_assert_int_eq(facet_count(scene), 1);
     material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
     ck_assert_int_eq(warnings_with(scene, "material library "
-                                          "`no-such-library.mtl` not read"),
+                                          "`no-such-library.mtl` is not "
+                                          "read"),
                      1);
     ck_assert_int_eq(warnings_with(scene, "missing-mtl.obj:2:8: warning"),
                      1);
@@ -407,16 +408,16 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     ck_assert_int_eq(info.warning_count, 1);
     ck_assert_int_eq(warnings_with(scene, "escaped-library.obj:2:8: warning: "
                                           "material library `missing.mtl` "
-                                          "not read"), 1);
+                                          "is not read"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
 
-START_TEST(an_obj_from_memory_without_a_path_reads_no_library)
+START_TEST(an_obj_from_memory_without_a_resolver_reads_no_library)
 {
     rt_scene *scene = obj("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3\n");
-    ck_assert_int_eq(warnings_with(scene, "without a path"), 1);
+    ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -835,7 +836,7 @@ static Suite *obj_suite(void)
     tcase_add_test(
         c, a_missing_material_library_is_a_warning_and_the_mesh_is_grey);
     tcase_add_test(c, library_names_with_spaces_are_read_whole_or_escaped);
-    tcase_add_test(c, an_obj_from_memory_without_a_path_reads_no_library);
+    tcase_add_test(c, an_obj_from_memory_without_a_resolver_reads_no_library);
     suite_add_tcase(s, c);
 
     c = tcase_create("refusals");

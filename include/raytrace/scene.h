@@ -244,11 +244,17 @@ typedef rt_status (*rt_resolve_func)(void *user, const char *scene_name,
 /*
  * The default resolver of rt_scene_load_with (docs/robustness-input.md,
  * "Files a scene names"): `reference` is taken relative to the folder of
- * `scene_name` and must stay inside it (no absolute path, no `..`, no
- * symbolic link leading out); the file is opened without blocking and
- * without becoming a controlling terminal, and must be a regular file of
- * at most `limit` bytes.  Refusals outside the folder do not say whether
- * the file exists.  `user` is unused (NULL).  Thread-safe.
+ * `scene_name` (the current folder when it has no slash or is NULL) and
+ * must stay inside it: no absolute path, no `..` component, no symbolic
+ * link leading out (links that stay inside are followed); it is walked
+ * one component at a time from the folder, so nothing outside is looked
+ * up, and refusals there do not say whether the file exists.  The file
+ * must be a regular one (checked before it is opened, and on the
+ * descriptor after), opened without blocking and without becoming a
+ * controlling terminal, of at most `limit` bytes.  On success *file holds
+ * the bytes, the folder of `scene_name` joined with `reference` as its
+ * name (control bytes written \xHH) and the file's device and inode.
+ * `user` is unused (NULL).  Thread-safe.
  */
 RT_API rt_status rt_resolve_in_folder(void *user, const char *scene_name,
                                       const char *reference, size_t limit,
@@ -325,17 +331,20 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
 
 /*
  * Parses a scene in any format from memory, as rt_scene_parse does for
- * .scn.  `name` names the input in messages and, for OBJ, locates the
- * material libraries it asks for (relative to the folder of `name`); with
- * RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension (.scn when
- * it has none).  `options` may be NULL (the defaults).  Every field of
- * the options is checked whatever the format reads, and one outside its
- * domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond the library's,
- * a format the enum does not name, a tessellation outside (0, 1) but 0, a
- * side outside 1..RT_MAX_IMAGE_SIDE but 0, a given field of view outside
- * (0, 180), a given look-from, look-at or up that is not finite, a negative
- * light count or lights without an array.  NULL `text` with a non-zero
- * length, or a NULL `scene`, is RT_ERR_ARGUMENT too.  Thread-safe.
+ * .scn.  `name` names the input in messages and is what the options'
+ * resolver locates the files the scene names from (an OBJ's material
+ * libraries); without a resolver no file is read (a warning says so).
+ * With RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension
+ * (.scn when it has none).  `options` may be NULL (the defaults).  Every
+ * field of the options is checked whatever the format reads, and one
+ * outside its domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond
+ * the library's, a format the enum does not name, a tessellation outside
+ * (0, 1) but 0, a side outside 1..RT_MAX_IMAGE_SIDE but 0, a given field
+ * of view outside (0, 180), a given look-from, look-at or up that is not
+ * finite, a negative light count or lights without an array.  NULL `text`
+ * with a non-zero length, or a NULL `scene`, is RT_ERR_ARGUMENT too.  The
+ * scene's sources (rt_scene_source_at) are the files the resolver gave.
+ * Thread-safe.
  */
 RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
                                      const char *name,
@@ -343,8 +352,11 @@ RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
                                      rt_scene **scene, rt_error *error);
 
 /* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
- * the first NUL byte, which no scene file holds) and parses it with
- * rt_scene_parse_with.  Thread-safe. */
+ * the first NUL byte, which no scene file holds; FIFOs and terminals are
+ * read to their end) and parses it as rt_scene_parse_with does, the files
+ * it names read by the options' resolver, rt_resolve_in_folder when they
+ * give none.  The scene's first source is the file at `path`.
+ * Thread-safe. */
 RT_API rt_status rt_scene_load_with(const char *path,
                                     const rt_load_options *options,
                                     rt_scene **scene, rt_error *error);
@@ -370,9 +382,11 @@ RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 RT_API void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
 
 /* A file a load read: the scene file itself (first, when the scene was
- * loaded from a path) and every file it names that was read. */
+ * loaded from a path) and every file it names that was read, each once
+ * however often and under whatever names the scene gave it. */
 typedef struct rt_scene_source {
-    const char *name;       /* as messages name it; owned by the scene */
+    const char *name;       /* as messages name it (control bytes written
+                               \xHH); owned by the scene */
     uint64_t device;        /* identity (st_dev, st_ino); 0 and 0 when */
     uint64_t inode;         /* unknown (standard input, memory) */
     size_t bytes;           /* how many bytes were read */

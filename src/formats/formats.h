@@ -48,8 +48,11 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
 rt_status rt__nff_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error);
+struct rt_files;
+/* OBJ also reads the files it names through `files` (resolve.h). */
 rt_status rt__obj_parse(const char *text, size_t length, const char *name,
-                        const rt_load_options *options, rt_scene **scene,
+                        const rt_load_options *options,
+                        struct rt_files *files, rt_scene **scene,
                         rt_error *error);
 
 /* Encodes `image` as PPM to the sink: RT_OK or the bare status (the

@@ -1,8 +1,10 @@
 /*
  * loader.c - one loader for every scene format: the format from the name's
  * extension or the caller's choice, the file read with the limits every
- * reader shares, and the dispatch to the format's own module (scn.c,
- * nff.c, obj.c).  Each reader is a client of the scene builder.
+ * reader shares, the list of files the load reads (resolve.h: the scene
+ * file, then those it names, through the options' resolver), and the
+ * dispatch to the format's own module (scn.c, nff.c, obj.c).  Each reader
+ * is a client of the scene builder.
  */
 #include <ctype.h>
 #include <math.h>
@@ -14,6 +16,8 @@
 #include "file.h"
 #include "formats/formats.h"
 #include "formats/reader.h"
+#include "formats/resolve.h"
+#include "raytrace/render.h"
 #include "raytrace/scene.h"
 #include "scene_internal.h"
 #include "vecmath.h"
@@ -223,6 +227,55 @@ rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
     return rt__scene_build(desc, name, facet_lines, notes, scene, error);
 }
 
+/* The load of `text` with the options taken: `scene_file` (may be NULL)
+ * is the file it was read from, `default_resolve` the resolver used when
+ * the options give none. */
+static rt_status parse_taken(const char *text, size_t length,
+                             const char *name, const rt_load_options *options,
+                             const rt_scene_source *scene_file,
+                             rt_resolve_func default_resolve,
+                             rt_scene **scene, rt_error *error)
+{
+    if (options->cancel != NULL && rt_cancel_requested(options->cancel))
+        return rt__error_set(error, RT_ERR_CANCELLED,
+                             name ? name : "<memory>", 0, 0,
+                             "the load was cancelled");
+    rt_scene_format format = options->format;
+    if (format == RT_SCENE_FORMAT_AUTO &&
+        (name == NULL || rt_scene_format_from_path(name, &format,
+                                                   NULL) != RT_OK))
+        format = RT_SCENE_FORMAT_SCN;
+    rt_files files;
+    if (rt__files_init(&files,
+                       options->resolve ? options->resolve : default_resolve,
+                       options->resolve_user, name, text, length,
+                       scene_file) != RT_OK)
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0,
+                             "out of memory");
+    rt_status status;
+    switch (format) {
+    case RT_SCENE_FORMAT_SCN:
+        status = rt__scn_parse(text, length, name, options, scene, error);
+        break;
+    case RT_SCENE_FORMAT_OBJ:
+        status = rt__obj_parse(text, length, name, options, &files, scene,
+                               error);
+        break;
+    case RT_SCENE_FORMAT_NFF:
+        status = rt__nff_parse(text, length, name, options, scene, error);
+        break;
+    default:
+        status = rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                               "expected a scene format, found %d",
+                               (int)format);
+        break;
+    }
+    if (status == RT_OK)
+        rt__files_attach(&files, *scene);
+    rt__files_free(&files);
+    return status;
+}
+
 rt_status rt_scene_parse_with(const char *text, size_t length,
                               const char *name,
                               const rt_load_options *options,
@@ -239,24 +292,7 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
     rt_status status = take_options(options, &taken, name, error);
     if (status != RT_OK)
         return status;
-    options = &taken;
-    rt_scene_format format = options->format;
-    if (format == RT_SCENE_FORMAT_AUTO &&
-        (name == NULL || rt_scene_format_from_path(name, &format,
-                                                   NULL) != RT_OK))
-        format = RT_SCENE_FORMAT_SCN;
-    switch (format) {
-    case RT_SCENE_FORMAT_SCN:
-        return rt__scn_parse(text, length, name, options, scene, error);
-    case RT_SCENE_FORMAT_OBJ:
-        return rt__obj_parse(text, length, name, options, scene, error);
-    case RT_SCENE_FORMAT_NFF:
-        return rt__nff_parse(text, length, name, options, scene, error);
-    case RT_SCENE_FORMAT_AUTO:
-        break;
-    }
-    return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                         "expected a scene format, found %d", (int)format);
+    return parse_taken(text, length, name, &taken, NULL, NULL, scene, error);
 }
 
 rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
@@ -269,12 +305,20 @@ rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
     if (path == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a path");
-    char *data;
-    size_t length;
-    rt_status status = rt__read_text_file(path, &data, &length, error);
+    rt_load_options taken;
+    rt_status status = take_options(options, &taken, path, error);
     if (status != RT_OK)
         return status;
-    status = rt_scene_parse_with(data, length, path, options, scene, error);
+    char *data;
+    size_t length;
+    rt_file_identity identity;
+    status = rt__read_text_file_identified(path, &data, &length, &identity,
+                                           error);
+    if (status != RT_OK)
+        return status;
+    rt_scene_source self = {path, identity.device, identity.inode, length};
+    status = parse_taken(data, length, path, &taken, &self,
+                         rt_resolve_in_folder, scene, error);
     free(data);
     return status;
 }

@@ -19,6 +19,8 @@
  * its centre's coordinates) would give facets of zero area, which no ray
  * meets: they are left out and counted in the mesh, for the reader's one
  * warning.
+ *
+ * Polygons go to the readers' one triangulator (triangulate.h).
  */
 #include "formats/tessellate.h"
 
@@ -27,6 +29,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "exact.h"
+#include "formats/triangulate.h"
 #include "raytrace/render.h"
 #include "scene_internal.h"
 #include "vecmath.h"
@@ -355,73 +359,35 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
     return 0;
 }
 
-/* The polygon in the plane of its Newell normal, counter-clockwise:
- * xy[2i], xy[2i+1]. */
-static void project(const rt_vec3 *p, int n, double *xy)
-{
-    rt_vec3 normal = v3(0, 0, 0);
-    for (int i = 0; i < n; i++) {
-        rt_vec3 a = p[i], b = p[(i + 1) % n];
-        normal.x += (a.y - b.y) * (a.z + b.z);
-        normal.y += (a.z - b.z) * (a.x + b.x);
-        normal.z += (a.x - b.x) * (a.y + b.y);
-    }
-    int k = 2;
-    if (fabs(normal.x) >= fabs(normal.y) && fabs(normal.x) >= fabs(normal.z))
-        k = 0;
-    else if (fabs(normal.y) >= fabs(normal.z))
-        k = 1;
-    double sign = v3_get(normal, k) < 0 ? -1.0 : 1.0;
-    for (int i = 0; i < n; i++) {
-        xy[2 * i] = v3_get(p[i], (k + 1) % 3);
-        xy[2 * i + 1] = sign * v3_get(p[i], (k + 2) % 3);
-    }
-}
+/* Where the triangles of one NFF polygon go. */
+typedef struct polygon_sink {
+    rt_tess_mesh *mesh;
+    const rt_facet_desc *facet;
+    int line, first;
+} polygon_sink;
 
-static double turn(const double *xy, int a, int b, int c)
+/* Adds a triangle of the polygon, started at its lowest corner (the
+ * rotation keeps its winding): with the corners handed over from the
+ * second on, a convex polygon's triangles are then NFF's fan from the
+ * first corner, (0, i, i+1), as this reader always made them. */
+static rt_status polygon_facet(void *user, int a, int b, int c)
 {
-    double ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
-    double vx = xy[2 * c] - xy[2 * b], vy = xy[2 * c + 1] - xy[2 * b + 1];
-    return ux * vy - uy * vx;
-}
-
-static int convex_2d(const double *xy, int n)
-{
-    double winding = 0.0;
-    for (int i = 0; i < n; i++) {
-        int a = i, b = (i + 1) % n, c = (i + 2) % n;
-        double cross = turn(xy, a, b, c);
-        if (cross < 0)
-            return 0;
-        double ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
-        double vx = xy[2 * c] - xy[2 * b], vy = xy[2 * c + 1] - xy[2 * b + 1];
-        winding += atan2(cross, ux * vx + uy * vy);
-    }
-    /* all left turns adding up to one turn: not a star */
-    return fabs(winding - 2.0 * PI) < 1.0;
+    polygon_sink *sink = user;
+    int lowest = a < b ? (a < c ? 0 : 2) : (b < c ? 1 : 2);
+    int v[3] = {a, b, c};
+    add_facet(sink->mesh, sink->facet, sink->line,
+              sink->first + v[lowest], sink->first + v[(lowest + 1) % 3],
+              sink->first + v[(lowest + 2) % 3], 0);
+    return RT_OK;
 }
 
 int rt__tess_polygon_convex(const rt_vec3 *points, int n)
 {
-    double *xy = malloc((size_t)n * 2 * sizeof *xy);
-    if (xy == NULL)
-        return 0;
-    project(points, n, xy);
-    int convex = convex_2d(xy, n);
-    free(xy);
+    rt_triangulator t;
+    rt__tri_init(&t, 0, NULL);
+    int convex = rt__tri_is_convex(&t, points, NULL, n);
+    rt__tri_free(&t);
     return convex;
-}
-
-/* Whether p lies in triangle abc (counter-clockwise), its edges included. */
-static int inside(const double *xy, int p, int a, int b, int c)
-{
-    return turn(xy, a, b, p) >= 0 && turn(xy, b, c, p) >= 0 &&
-           turn(xy, c, a, p) >= 0;
-}
-
-static int same_point(const double *xy, int p, int q)
-{
-    return xy[2 * p] == xy[2 * q] && xy[2 * p + 1] == xy[2 * q + 1];
 }
 
 int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
@@ -429,65 +395,35 @@ int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
 {
     if (rt__tess_reserve(mesh, n, n - 2) != 0)
         return -1;
-    double *xy = malloc((size_t)n * 2 * sizeof *xy);
-    int *next = calloc((size_t)n, sizeof *next);
-    int *prev = calloc((size_t)n, sizeof *prev);
-    if (xy == NULL || next == NULL || prev == NULL) {
-        free(xy), free(next), free(prev);
-        return -1;
-    }
     int first = mesh->vertex_count;
     for (int i = 0; i < n; i++)
         add_vertex(mesh, points[i]);
-    project(points, n, xy);
-    if (n <= 3 || convex_2d(xy, n)) {
-        for (int i = 1; i + 1 < n; i++)
-            add_facet(mesh, facet, line, first, first + i, first + i + 1, 0);
-        free(xy), free(next), free(prev);
+    if (n == 3) {
+        if (rt__triangle_has_area(points[0], points[1], points[2]))
+            add_facet(mesh, facet, line, first, first + 1, first + 2, 0);
+        else
+            *irregular = 1;
         return 0;
     }
-    for (int i = 0; i < n; i++) {
-        next[i] = (i + 1) % n;
-        prev[i] = (i + n - 1) % n;
-    }
-    int remaining = n, cur = 0, misses = 0;
-    while (remaining > 3) {
-        int a = prev[cur], b = cur, c = next[cur];
-        int ear = turn(xy, a, b, c) > 0;
-        for (int p = next[c]; ear && p != a; p = next[p])
-            if (!same_point(xy, p, a) && !same_point(xy, p, b) &&
-                !same_point(xy, p, c) && inside(xy, p, a, b, c))
-                ear = 0;
-        if (!ear && misses < remaining) {
-            cur = c;
-            misses++;
-            continue;
-        }
-        if (!ear) {
-            /* No ear left: a collinear vertex goes without a facet; else
-             * the polygon is not simple and the current corner is cut. */
-            int found = -1, q = cur;
-            for (int k = 0; k < remaining && found < 0; k++, q = next[q])
-                if (turn(xy, prev[q], q, next[q]) == 0)
-                    found = q;
-            if (found >= 0) {
-                b = found, a = prev[b], c = next[b];
-            } else {
-                *irregular = 1;
-                add_facet(mesh, facet, line, first + a, first + b, first + c,
-                          0);
-            }
-        } else {
-            add_facet(mesh, facet, line, first + a, first + b, first + c, 0);
-        }
-        next[a] = c;
-        prev[c] = a;
-        remaining--;
-        cur = c;
-        misses = 0;
-    }
-    add_facet(mesh, facet, line, first + prev[cur], first + cur,
-              first + next[cur], 0);
-    free(xy), free(next), free(prev);
+    /* The corners from the second on and the first last: the
+     * triangulator's fans start at the last corner, NFF's at the first
+     * (polygon_facet). */
+    int *order = malloc((size_t)n * sizeof *order);
+    if (order == NULL)
+        return -1;
+    for (int i = 0; i < n; i++)
+        order[i] = (i + 1) % n;
+    rt_triangulator t;
+    rt__tri_init(&t, (double)RT_TESS_POLYGON_WORK_PER_CORNER * n, NULL);
+    polygon_sink sink = {mesh, facet, line, first};
+    rt_tri_result result;
+    rt_status status = rt__triangulate(&t, points, order, n, polygon_facet,
+                                       &sink, &result);
+    rt__tri_free(&t);
+    free(order);
+    if (status != RT_OK)
+        return -1;
+    if (result.crossing || result.over_budget || result.facets == 0)
+        *irregular = 1;
     return 0;
 }

@@ -95,12 +95,20 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
                   double r1, int inward, int segments,
                   const rt_facet_desc *facet, int line);
 
-/* Appends a planar polygon of n >= 3 vertices, counter-clockwise as seen
- * from its front: convex ones as a fan from the first vertex, others by
- * ear clipping in the plane of their (Newell) normal, keeping the winding.
- * *irregular is set non-zero when no proper ear was found at some step (a
- * self-intersecting or degenerate polygon; it is still cut into n - 2
- * triangles).  0, or -1 out of memory. */
+/* The ear-clipping budget of one NFF polygon, in corner tests
+ * (triangulate.h): enough to clip any polygon of up to 2048 corners whole
+ * (nff.c refuses non-convex ones beyond 1024), and in proportion to the
+ * corners, each of which costs the file a line. */
+#define RT_TESS_POLYGON_WORK_PER_CORNER 4096
+
+/* Appends a polygon of n >= 3 vertices (all of them, in order) and its
+ * triangles, cut by the readers' triangulator (triangulate.h) with the
+ * polygon's winding: convex ones of up to RT_TRI_FAN_MAX_CORNERS corners
+ * as a fan from the first vertex, larger ones balanced, others by ear
+ * clipping.  No triangle without area is appended.  *irregular is set
+ * non-zero when the polygon has no area, or no ear was left at some step
+ * (it crosses itself) or the budget was spent (then the rest is a fan).
+ * 0, or -1 out of memory. */
 int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
                      const rt_facet_desc *facet, int line, int *irregular);
 

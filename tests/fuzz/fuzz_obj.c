@@ -6,7 +6,11 @@
  * a material library.  The library is written to m.mtl in a private
  * temporary folder (made once), and the OBJ is parsed from an exact-size
  * heap copy (no NUL after it: AddressSanitizer sees any read past the end)
- * with the name "<folder>/fuzz.obj", so `mtllib m.mtl` reads it.  As in
+ * with the name "<folder>/fuzz.obj" and a resolver that reads through
+ * rt_resolve_in_folder, so `mtllib m.mtl` reads the library and every
+ * other name meets the resolver's rules (`../x`, `/etc/passwd`, links),
+ * except `fuzz.obj` itself, which it serves from the OBJ's own bytes (an
+ * OBJ naming itself: the loader must know it).  As in
  * fuzz_scene.c, a refusal must carry a non-empty message and no scene; a
  * scene that loads is asked every question the public API allows and a few
  * of its pixels are traced.
@@ -63,6 +67,35 @@ static void write_library(const uint8_t *data, size_t size)
     fclose(file);
 }
 
+/* The OBJ being parsed, which the resolver serves as "fuzz.obj". */
+static const char *obj_text;
+static size_t obj_length;
+
+static rt_status resolve(void *user, const char *scene_name,
+                         const char *reference, size_t limit,
+                         rt_resolved_file *file, rt_error *error)
+{
+    const char *name = reference;
+    while (name[0] == '.' && name[1] == '/')
+        name += 2;
+    if (strcmp(name, "fuzz.obj") != 0 || obj_length > limit)
+        return rt_resolve_in_folder(user, scene_name, reference, limit, file,
+                                    error);
+    file->data = malloc(obj_length ? obj_length : 1);
+    file->name = malloc(9);
+    if (file->data == NULL || file->name == NULL) {
+        free(file->data);
+        free(file->name);
+        return RT_ERR_NOMEM;
+    }
+    if (obj_length)
+        memcpy(file->data, obj_text, obj_length);
+    memcpy(file->name, "fuzz.obj", 9);
+    file->length = obj_length;
+    file->device = file->inode = 0;
+    return RT_OK;
+}
+
 static void inspect(const rt_scene *scene)
 {
     rt_scene_info info;
@@ -70,6 +103,9 @@ static void inspect(const rt_scene *scene)
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
     require(info.live_facet_count <= info.facet_count);
+    /* No facet without area is made (the triangulator drops them). */
+    require(info.live_facet_count == info.facet_count);
+    require(rt_scene_source_count(scene) <= 1 + 1024);
     for (int i = 0; i < info.facet_count; i++) {
         rt_facet_info facet;
         rt_scene_facet(scene, i, &facet);
@@ -131,6 +167,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rt_load_options options;
     rt_load_options_init(&options);
     options.width = options.height = 32;
+    options.resolve = resolve;
+    obj_text = text;
+    obj_length = obj_size;
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     memset(&error, 0x55, sizeof error);

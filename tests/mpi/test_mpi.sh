@@ -11,6 +11,13 @@
 #   test_mpi.sh rescue       a save that fails after the render (a full
 #                            device) keeps the image in $TMPDIR, byte for
 #                            byte rt-export's
+#   test_mpi.sh libraries    an OBJ's material library is rank 0's on every
+#                            rank: workers started in another folder, which
+#                            holds another library or none, render the
+#                            bytes rt-export renders
+#   test_mpi.sh mismatch     a worker given another command line builds
+#                            another scene: the job fails with a message
+#                            from that rank, and writes no image
 # The environment gives the programs: RT_EXPORT, RT_EXPORT_MPI, MPIEXEC,
 # RT_SOURCE_DIR.  Open MPI needs --oversubscribe to start more ranks than
 # cores, and leave to run as root (CI runs as root).
@@ -156,9 +163,43 @@ rescue)
     cmp -s ref.ppm "$kept" || fail "the kept image is not rt-export's"
     echo "ok: kept in $kept, byte for byte rt-export's image"
     ;;
+libraries)
+    # rank 0 here, the other two ranks in other/: there the same OBJ names
+    # a library that is blue, or that is not there at all
+    mkdir -p model other/model bare/model
+    printf 'mtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n'\
+'f 1 2 4 3\n' > model/m.obj
+    printf 'newmtl red\nKd 1 0 0\n' > model/m.mtl
+    cp model/m.obj other/model/m.obj
+    cp model/m.obj bare/model/m.obj
+    printf 'newmtl red\nKd 0 0 1\n' > other/model/m.mtl
+    args=(-q model/m.obj --size 64x48 --band-rows 2 -j 1)
+    "$RT_EXPORT" "${args[@]:0:4}" -o ref-lib.ppm >/dev/null ||
+        fail "rt-export"
+    for elsewhere in other bare; do
+        timeout 60 "${launcher[@]}" -np 1 "$RT_EXPORT_MPI" "${args[@]}" \
+            -o "mpi-$elsewhere.ppm" : -np 2 -wdir "$work/$elsewhere" \
+            "$RT_EXPORT_MPI" "${args[@]}" -o "mpi-$elsewhere.ppm" \
+            >out.txt 2>err.txt || { cat err.txt; fail "$elsewhere: exit"; }
+        cmp -s ref-lib.ppm "mpi-$elsewhere.ppm" ||
+            fail "workers in $elsewhere/ rendered another picture"
+        echo "ok: workers in $elsewhere/: rank 0's library, rt-export's bytes"
+    done
+    ;;
+mismatch)
+    args=(-q "$scenes/cubes.scn" --size 64x48 -j 1)
+    timeout 60 "${launcher[@]}" -np 1 "$RT_EXPORT_MPI" "${args[@]}" \
+        -o mismatch.ppm : -np 1 "$RT_EXPORT_MPI" "${args[@]}" \
+        --look-from 9,9,9 -o mismatch.ppm >out.txt 2>err.txt &&
+        fail "ranks with different scenes exited 0"
+    cat err.txt
+    grep -q "rank 1: .*is not rank 0's" err.txt ||
+        fail "no message from the rank whose scene differs"
+    [ ! -e mismatch.ppm ] || fail "an image was written"
+    ;;
 *)
     echo "usage: test_mpi.sh exact N | bad-scene | usage | killed-rank |" \
-         "own-input | rescue" >&2
+         "own-input | rescue | libraries | mismatch" >&2
     exit 2
     ;;
 esac
