@@ -263,13 +263,14 @@ START_TEST(names_in_messages_have_their_control_bytes_escaped)
     ck_assert_ptr_null(strchr(error.message, '\x1b'));
     ck_assert_ptr_null(strchr(error.message, '\x07'));
     ck_assert_ptr_nonnull(strstr(error.message, "\\x1B[2J\\x07"));
-    /* A file read: its name for messages is escaped too. */
+    /* A file read: its name is the path as given (data, as the scene's
+     * sources list it); what prints it escapes it, as the warnings below
+     * and rt__error_set do. */
     write_text(f.scene_dir, "e\x1b]0;x.mtl", red_library);
     ck_assert_int_eq(rt_resolve_in_folder(NULL, scene_name, "e\x1b]0;x.mtl",
                                           100, &file, &error),
                      RT_OK);
-    ck_assert_ptr_null(strchr(file.name, '\x1b'));
-    ck_assert_ptr_nonnull(strstr(file.name, "e\\x1B]0;x.mtl"));
+    ck_assert_ptr_nonnull(strstr(file.name, "e\x1b]0;x.mtl"));
     free(file.data);
     free(file.name);
     /* And through the OBJ reader's warnings. */

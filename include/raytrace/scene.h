@@ -222,7 +222,9 @@ typedef struct rt_cancel rt_cancel;
 typedef struct rt_resolved_file {
     char *data;             /* the file's bytes (need not be NUL-terminated) */
     size_t length;
-    char *name;             /* how messages name it (a path, usually) */
+    char *name;             /* how messages name it (a path, usually),
+                               as raw bytes: messages escape its control
+                               bytes when they show it */
     uint64_t device;        /* the file's identity (st_dev, st_ino): one */
     uint64_t inode;         /* file is read once however it is spelt, and
                                programs refuse to write over it; 0 and 0
@@ -385,8 +387,9 @@ RT_API void rt_scene_light(const rt_scene *scene, int i, rt_light *light);
  * loaded from a path) and every file it names that was read, each once
  * however often and under whatever names the scene gave it. */
 typedef struct rt_scene_source {
-    const char *name;       /* as messages name it (control bytes written
-                               \xHH); owned by the scene */
+    const char *name;       /* its path as the load was given it (raw
+                               bytes: escape control bytes before
+                               printing); owned by the scene */
     uint64_t device;        /* identity (st_dev, st_ino); 0 and 0 when */
     uint64_t inode;         /* unknown (standard input, memory) */
     size_t bytes;           /* how many bytes were read */

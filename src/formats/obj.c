@@ -545,7 +545,11 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
     if (scene == NULL)
         return RT_ERR_ARGUMENT;
     *scene = NULL;
-    char *shown_name = rt__shown_name(name ? name : "<memory>");
+    /* The name as given: messages escape it (rt__error_set, notes). */
+    const char *raw = name ? name : "<memory>";
+    char *shown_name = malloc(strlen(raw) + 1);
+    if (shown_name != NULL)
+        memcpy(shown_name, raw, strlen(raw) + 1);
     if (shown_name == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory");

@@ -36,56 +36,13 @@
 
 /* ----------------------------------------------------------- names shown */
 
-/* The length of the UTF-8 sequence of a printable character at s (2 to
- * 4), or 0 (C1 controls, U+0080 to U+009F, are not printable). */
-static size_t utf8_printable(const unsigned char *s)
-{
-    int more;
-    unsigned lo = 0x80, hi = 0xBF;
-    if (s[0] >= 0xC2 && s[0] <= 0xDF) {
-        more = 1;
-        if (s[0] == 0xC2)
-            lo = 0xA0;
-    } else if (s[0] >= 0xE0 && s[0] <= 0xEF) {
-        more = 2;
-        lo = s[0] == 0xE0 ? 0xA0 : 0x80;
-        hi = s[0] == 0xED ? 0x9F : 0xBF;
-    } else if (s[0] >= 0xF0 && s[0] <= 0xF4) {
-        more = 3;
-        lo = s[0] == 0xF0 ? 0x90 : 0x80;
-        hi = s[0] == 0xF4 ? 0x8F : 0xBF;
-    } else {
-        return 0;
-    }
-    if (s[1] < lo || s[1] > hi)
-        return 0;
-    for (int i = 2; i <= more; i++)
-        if (s[i] < 0x80 || s[i] > 0xBF)
-            return 0;
-    return (size_t)more + 1;
-}
 
 char *rt__shown_name(const char *name)
 {
-    size_t n = strlen(name);
-    char *out = malloc(4 * n + 1);
-    if (out == NULL)
-        return NULL;
-    const unsigned char *s = (const unsigned char *)name;
-    size_t used = 0;
-    for (size_t i = 0; i < n;) {
-        size_t run = s[i] >= 0x20 && s[i] < 0x7F ? 1 : utf8_printable(s + i);
-        if (run == 0) {
-            snprintf(out + used, 5, "\\x%02X", s[i]);
-            used += 4;
-            i++;
-            continue;
-        }
-        memcpy(out + used, s + i, run);
-        used += run;
-        i += run;
-    }
-    out[used] = '\0';
+    size_t size = 4 * strlen(name) + 1;     /* an escape per byte at most */
+    char *out = malloc(size);
+    if (out != NULL)
+        rt__escape_name(name, out, size);
     return out;
 }
 
@@ -379,7 +336,7 @@ static char *folder_of(const char *scene_name)
 }
 
 /* The name of a file found: the scene's folder as the scene was named,
- * then the reference, as messages show it. */
+ * then the reference (raw bytes: messages escape it, rt__escape_name). */
 static char *found_name(const char *scene_name, const char *reference)
 {
     size_t prefix = folder_prefix(scene_name), n = strlen(reference);
@@ -389,9 +346,7 @@ static char *found_name(const char *scene_name, const char *reference)
     if (prefix > 0)
         memcpy(full, scene_name, prefix);
     memcpy(full + prefix, reference, n + 1);
-    char *shown = rt__shown_name(full);
-    free(full);
-    return shown;
+    return full;
 }
 
 rt_status rt_resolve_in_folder(void *user, const char *scene_name,

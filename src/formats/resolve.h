@@ -85,9 +85,11 @@ void rt__files_attach(rt_files *files, rt_scene *scene);
 
 void rt__files_free(rt_files *files);
 
-/* A copy of `name` for messages (malloc'd; NULL out of memory): control
- * bytes and bytes that are not UTF-8 as \xHH, so that no name a file
- * gives can reach a terminal as an escape sequence. */
+/* A copy of `name` for the body of a message (malloc'd; NULL out of
+ * memory), escaped by rt__escape_name's rule (error.h) so that no name a
+ * file gives can reach a terminal as an escape sequence.  Names given as
+ * the `name` of rt__error_set or rt__notes_add are escaped there: pass
+ * them raw. */
 char *rt__shown_name(const char *name);
 
 #endif /* RAYTRACE_RESOLVE_H */

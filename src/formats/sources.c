@@ -34,8 +34,10 @@ rt_status rt__files_init(rt_files *files, rt_resolve_func resolve,
     if (scene_file == NULL)
         return RT_OK;
     files->sources = malloc(4 * sizeof *files->sources);
-    char *name = rt__shown_name(scene_file->name ? scene_file->name
-                                                 : "<memory>");
+    const char *raw = scene_file->name ? scene_file->name : "<memory>";
+    char *name = malloc(strlen(raw) + 1);
+    if (name != NULL)
+        memcpy(name, raw, strlen(raw) + 1);
     if (files->sources == NULL || name == NULL) {
         free(files->sources);
         free(name);
