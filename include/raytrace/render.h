@@ -130,9 +130,10 @@ typedef enum rt_accel {
 #define RT_ACCEL_AUTO_FACETS 300
 
 /*
- * A cancellation flag that renders poll before every pixel.  Any thread may
- * raise it while renders that were given it run; each then stops within one
- * pixel's work on every thread and returns RT_ERR_CANCELLED.  It stays raised
+ * A cancellation flag that renders poll before every pixel, and while they
+ * build an octree (about every millisecond).  Any thread may raise it while
+ * renders that were given it run; each then stops within one pixel's work
+ * on every thread and returns RT_ERR_CANCELLED.  It stays raised
  * until reset.  All functions are thread-safe on the same flag, except
  * rt_cancel_destroy, which must wait until no render uses it.
  */
