@@ -4,9 +4,11 @@
  * This file is the command line (the shared module apps/common/cli, so
  * rt-view takes every render option rt-export takes, with the same limits
  * and words) and the start-up; the rest is in apps/viewer: view_app (the
- * window, keys, reloads, saves and event loop), view_session (renders on
- * its own thread and reports finished rows), view_window (uploads those
- * rows and draws) and view_scene (loads, watches and names files).
+ * window, keys, reloads, saves and event loop), view_load (reads a scene
+ * on its own thread, so the window never waits for a file), view_session
+ * (renders on its own thread and reports finished rows), view_window
+ * (uploads those rows and draws) and view_scene (loads, watches and names
+ * files).
  */
 #include <pthread.h>
 #include <signal.h>
@@ -137,7 +139,7 @@ static int run_viewer(const view_app_options *options, const char *scene)
         return 1;
     }
     if (scene)
-        view_app_open(app, scene);
+        view_app_open(app, scene);     /* read on a worker: see view_load.h */
     view_app_run(app);
     int status = view_app_exit_status(app);
     view_app_destroy(app);
