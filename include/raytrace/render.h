@@ -63,7 +63,10 @@ typedef struct rt_render_stats {
     uint64_t accel_leaves;
     int accel_depth;
     uint64_t accel_references;        /* facet entries in all leaves */
-    uint64_t accel_always;            /* slivers every ray tests */
+    uint64_t accel_always;            /* facets every ray tests, in no
+                                         leaf: 0 but for scenes whose
+                                         coordinates leave no room for
+                                         cells (slivers are in leaves) */
     uint64_t accel_bytes;             /* its memory */
     uint64_t accel_queries;           /* ray queries through it */
     uint64_t accel_leaves_visited;
