@@ -335,11 +335,11 @@ static int finish_load(view_app *app)
     memset(&error, 0, sizeof error);
     rt_status status = view_load_finish(load, &scene, &error);
     if (status != RT_OK || shown == NULL) {
-        rt_scene_destroy(scene);
-        free(shown);
         show_message(app, shown == NULL ? "out of memory"
                           : error.message[0] ? error.message
                                              : rt_status_string(status));
+        rt_scene_destroy(scene);
+        free(shown);
         return 0;
     }
     rt_scene_info info;
