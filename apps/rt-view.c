@@ -4,9 +4,11 @@
  * This file is the command line (the shared module apps/common/cli, so
  * rt-view takes every render option rt-export takes, with the same limits
  * and words) and the start-up; the rest is in apps/viewer: view_app (the
- * window, keys, reloads, saves and event loop), view_session (renders on
- * its own thread and reports finished rows), view_window (uploads those
- * rows and draws) and view_scene (loads, watches and names files).
+ * window, keys, reloads, saves and event loop), view_load (reads a scene
+ * on its own thread, so the window never waits for a file), view_session
+ * (renders on its own thread and reports finished rows), view_window
+ * (uploads those rows and draws) and view_scene (loads, watches and names
+ * files).
  */
 #include <pthread.h>
 #include <signal.h>
@@ -65,7 +67,9 @@ static const cli_program program = {
     "          in a build without PNG support).  Prints the path.\n"
     "  R       reload the scene from its file and render it; if it no\n"
     "          longer loads, the picture stays and the error\n"
-    "          (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the title\n"
+    "          (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the title.\n"
+    "          Scenes are read on a worker thread: the window stays live\n"
+    "          and the picture stays until the new scene is ready\n"
     "  + / -   one more / one less reflection, and render again\n"
     "  left click  explain that pixel (the render's options): its ray\n"
     "          tree drawn over the image - camera rays white, shadow rays\n"
@@ -79,8 +83,8 @@ static const cli_program program = {
     "          light), B bounces, I N.S (again: next light): debug views\n"
     "          of the same render, named in the title; V or 0: the picture\n"
     "  H, F1   the keys" TEXT_IN_WINDOW_HELP "\n"
-    "  Q, Esc  quit (Esc when nothing is explained; a render in progress\n"
-    "          is cancelled)\n"
+    "  Q, Esc  quit at once (Esc when nothing is explained; a render or a\n"
+    "          load in progress is cancelled)\n"
     "A scene file dropped on the window is loaded, rendered and watched.\n"
     "\n"
     "Exit status: 0 when the window closes, 1 when a scene was given and\n"
@@ -137,7 +141,7 @@ static int run_viewer(const view_app_options *options, const char *scene)
         return 1;
     }
     if (scene)
-        view_app_open(app, scene);
+        view_app_open(app, scene);     /* read on a worker: see view_load.h */
     view_app_run(app);
     int status = view_app_exit_status(app);
     view_app_destroy(app);

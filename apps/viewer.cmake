@@ -61,6 +61,7 @@ if(RAYTRACE_VIEWER_ENABLED)
   add_library(raytrace_viewer STATIC
     viewer/view_app.c
     viewer/view_explain.c
+    viewer/view_load.c
     viewer/view_overlay.c
     viewer/view_scene.c
     viewer/view_session.c

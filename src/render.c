@@ -475,20 +475,23 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
 }
 
 /* Builds (once per scene and precision) the octree of the render's kernel
- * when the render asks for one; 0 when out of memory. */
-static int prepare_octree(job *j, const rt_scene *scene)
+ * when the render asks for one, polling `cancel` (may be NULL); RT_OK,
+ * RT_ERR_NOMEM or RT_ERR_CANCELLED (nothing kept: the next render builds
+ * it). */
+static rt_status prepare_octree(job *j, const rt_scene *scene,
+                                const rt_cancel *cancel)
 {
     rt_accel accel = j->options->accel;
     if (accel == RT_ACCEL_NONE ||
         (accel == RT_ACCEL_AUTO && scene->live_count < RT_ACCEL_AUTO_FACETS))
-        return 1;
-    int built = j->kernel.d != NULL
-                    ? rt__kernel_d_octree_prepare(j->kernel.d, &j->octree)
-                    : rt__kernel_f_octree_prepare(j->kernel.f, &j->octree);
-    if (!built)
-        return 0;
-    j->settings.octree = 1;
-    return 1;
+        return RT_OK;
+    rt_status status =
+        j->kernel.d != NULL
+            ? rt__kernel_d_octree_prepare(j->kernel.d, cancel, &j->octree)
+            : rt__kernel_f_octree_prepare(j->kernel.f, cancel, &j->octree);
+    if (status == RT_OK)
+        j->settings.octree = 1;
+    return status;
 }
 
 /* RT_OK for a precision rt_precision names, else the refusal. */
@@ -738,11 +741,13 @@ static int sample_grid(int samples, rt_error *error)
  * Sets up *j for a render of `scene` with the (taken and checked) options:
  * camera, lens, kernel, octree and the eye, which *eye_d / *eye_f own
  * (free them with release_job).  `full_width` x `full_height` is the whole
- * image's size.
+ * image's size.  The octree's construction polls `cancel` (may be NULL):
+ * RT_ERR_CANCELLED when it was raised before the octree was complete.
  */
 static rt_status prepare_job(job *j, const rt_scene *scene,
                              const rt_render_options *options, int grid,
                              int full_width, int full_height,
+                             const rt_cancel *cancel,
                              rt_kernel_eye_d **eye_d, rt_kernel_eye_f **eye_f,
                              rt_error *error)
 {
@@ -785,7 +790,11 @@ static rt_status prepare_job(job *j, const rt_scene *scene,
     } else {
         j->kernel.d = scene->kernel;
     }
-    if (!prepare_octree(j, scene))
+    rt_status built = prepare_octree(j, scene, cancel);
+    if (built == RT_ERR_CANCELLED)
+        return rt__error_set(error, RT_ERR_CANCELLED, NULL, 0, 0,
+                             "the render was cancelled");
+    if (built != RT_OK)
         return out_of_memory(error);
     /* The camera rays' origin, subtracted from every vertex once for the
      * whole render (only the fast brute-force loops read it). */
@@ -834,7 +843,7 @@ rt_status rt_render_rows(const rt_scene *scene,
     rt_kernel_eye_d *eye_d;
     rt_kernel_eye_f *eye_f;
     status = prepare_job(&j, scene, options, grid, full_width, full_height,
-                         &eye_d, &eye_f, error);
+                         options->cancel, &eye_d, &eye_f, error);
     if (status != RT_OK) {
         rt__kernel_d_eye_free(eye_d);
         rt__kernel_f_eye_free(eye_f);
@@ -908,7 +917,7 @@ rt_status rt__pixel_tracer_create(const rt_scene *scene,
         status = RT_ERR_ARGUMENT;
     if (status == RT_OK)
         status = prepare_job(&p->j, scene, &p->options, grid, full_width,
-                             full_height, &p->eye_d, &p->eye_f, error);
+                             full_height, NULL, &p->eye_d, &p->eye_f, error);
     if (status != RT_OK) {
         rt__pixel_tracer_destroy(p);
         return status;

@@ -7,3 +7,11 @@ target_include_directories(raytrace_test_octree PRIVATE
   "${PROJECT_SOURCE_DIR}/bench")
 set_tests_properties(test_octree PROPERTIES TIMEOUT 900)
 raytrace_add_shared_test(test_octree TIMEOUT 900)
+
+# The octree under hostile geometry: cancelled builds, sliver fans, far
+# origins (tests/test_octree_hostile.c).
+raytrace_add_suite(test_octree_hostile INTERNAL
+  SOURCES "${PROJECT_SOURCE_DIR}/bench/bench_scenes.c")
+target_include_directories(raytrace_test_octree_hostile PRIVATE
+  "${PROJECT_SOURCE_DIR}/bench")
+set_tests_properties(test_octree_hostile PROPERTIES TIMEOUT 900)

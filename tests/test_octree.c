@@ -464,8 +464,8 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
     rt_scene *scene = grid_scene(n);
     const rt_kernel_f *kf = rt__scene_kernel_f(scene);
     ck_assert_ptr_nonnull(kf);
-    ck_assert(rt__kernel_d_octree_prepare(scene->kernel, NULL));
-    ck_assert(rt__kernel_f_octree_prepare(kf, NULL));
+    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
     int count = memcheck() ? 300 : 6000;
     for (int i = 0; i < count; i++) {
         rt_vec3 o, t;
@@ -501,8 +501,8 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     ck_assert_int_eq(bench_soup(3000, 8, 8, &scene, &error), RT_OK);
     const rt_kernel_f *kf = rt__scene_kernel_f(scene);
     ck_assert_ptr_nonnull(kf);
-    ck_assert(rt__kernel_d_octree_prepare(scene->kernel, NULL));
-    ck_assert(rt__kernel_f_octree_prepare(kf, NULL));
+    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
     for (int i = 0; i < (memcheck() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;

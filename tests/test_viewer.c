@@ -11,7 +11,6 @@
  * second and leaves no thread; restarting starts from the placeholder; and
  * the small pure helpers (window fitting, save path, rescaling, errors).
  */
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -29,6 +28,7 @@
 #include <SDL.h>
 
 #include "testutil.h"
+#include "viewer_testutil.h"
 #include "view_app.h"
 #include "view_scene.h"
 #include "view_session.h"
@@ -39,65 +39,6 @@
 
 /* Longest a test waits for a render before failing. */
 #define WAIT_SECONDS 60.0
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static void sleep_ms(int ms)
-{
-    struct timespec ts = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&ts, NULL);
-}
-
-/* Threads of this process, from /proc/self/task. */
-static int thread_count(void)
-{
-    DIR *dir = opendir("/proc/self/task");
-    ck_assert_msg(dir != NULL, "cannot open /proc/self/task");
-    int count = 0;
-    struct dirent *entry;
-    while ((entry = readdir(dir)) != NULL)
-        if (entry->d_name[0] != '.')
-            count++;
-    closedir(dir);
-    return count;
-}
-
-/*
- * Threads once those that were joined have gone: pthread_join returns when a
- * thread has finished, and the kernel may list it for a moment longer, so
- * this waits up to 200 ms for the count to come down to `expected`.
- */
-static int settled_thread_count(int expected)
-{
-    double deadline = now_seconds() + 0.2;
-    int count;
-    while ((count = thread_count()) > expected && now_seconds() < deadline)
-        sleep_ms(1);
-    return count;
-}
-
-static void *do_nothing(void *argument)
-{
-    return argument;
-}
-
-/*
- * Threads before a test starts any: after one thread has come and gone,
- * because ThreadSanitizer starts its own helper thread at the first
- * pthread_create, and that one stays.
- */
-static int baseline_thread_count(void)
-{
-    pthread_t thread;
-    ck_assert_int_eq(pthread_create(&thread, NULL, do_nothing, NULL), 0);
-    ck_assert_int_eq(pthread_join(thread, NULL), 0);
-    return settled_thread_count(1);
-}
 
 static rt_scene *load_scene(const char *relative)
 {
@@ -182,13 +123,13 @@ static view_session *new_session(rt_scene *scene, int threads,
 static view_state wait_until_finished(view_session *session)
 {
     view_progress progress;
-    double deadline = now_seconds() + WAIT_SECONDS;
+    double deadline = viewer_now_seconds() + WAIT_SECONDS;
     for (;;) {
         view_session_get_progress(session, &progress);
         if (progress.state != VIEW_RENDERING)
             return progress.state;
-        ck_assert_msg(now_seconds() < deadline, "render did not finish");
-        sleep_ms(2);
+        ck_assert_msg(viewer_now_seconds() < deadline, "render did not finish");
+        viewer_sleep_ms(2);
     }
 }
 
@@ -266,14 +207,14 @@ static rt_image show_until_done(rt_scene *scene, int threads)
     view_session *session = new_session(scene, threads, NULL, NULL);
     ck_assert(view_window_attach(window, session, NULL, 0));
     ck_assert_int_eq(view_session_start(session), RT_OK);
-    double deadline = now_seconds() + WAIT_SECONDS;
+    double deadline = viewer_now_seconds() + WAIT_SECONDS;
     view_progress progress;
     do {
         view_session_get_progress(session, &progress);
         if (view_window_sync(window))
             view_window_draw(window);
-        ck_assert_msg(now_seconds() < deadline, "render did not finish");
-        sleep_ms(5);
+        ck_assert_msg(viewer_now_seconds() < deadline, "render did not finish");
+        viewer_sleep_ms(5);
     } while (progress.state == VIEW_RENDERING);
     view_window_sync(window);
     ck_assert_int_eq(progress.state, VIEW_DONE);
@@ -416,30 +357,30 @@ END_TEST
 
 START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
 {
-    int threads_before = baseline_thread_count();
+    int threads_before = viewer_baseline_thread_count();
     view_session *session = new_session(heavy_scene(2000, 48, 1500), 0,
                                         NULL, NULL);
     ck_assert_int_eq(view_session_start(session), RT_OK);
 
     view_progress progress;
-    double deadline = now_seconds() + WAIT_SECONDS;
+    double deadline = viewer_now_seconds() + WAIT_SECONDS;
     do {
-        sleep_ms(1);
+        viewer_sleep_ms(1);
         view_session_get_progress(session, &progress);
-        ck_assert(now_seconds() < deadline);
+        ck_assert(viewer_now_seconds() < deadline);
     } while (progress.rows_done < 3 && progress.state == VIEW_RENDERING);
     ck_assert_msg(progress.state == VIEW_RENDERING,
                   "the heavy scene finished before it could be cancelled");
-    ck_assert_int_gt(thread_count(), threads_before);
+    ck_assert_int_gt(viewer_thread_count(), threads_before);
 
-    double started = now_seconds();
+    double started = viewer_now_seconds();
     view_session_cancel(session);
-    double took = now_seconds() - started;
+    double took = viewer_now_seconds() - started;
     if (getenv("RT_TEST_VERBOSE"))
         fprintf(stderr, "cancel: %.4f s after %d rows\n", took,
                 progress.rows_done);
     ck_assert_msg(took < 0.5, "cancelling took %.3f s", took);
-    ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+    ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
 
     view_session_get_progress(session, &progress);
     ck_assert_int_eq(progress.state, VIEW_CANCELLED);
@@ -456,23 +397,23 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
     ck_assert_int_eq(marked, progress.rows_done);
 
     view_session_destroy(session);
-    ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+    ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
 }
 END_TEST
 
 START_TEST(destroying_a_rendering_session_joins_its_thread)
 {
-    int threads_before = baseline_thread_count();
+    int threads_before = viewer_baseline_thread_count();
     for (int i = 0; i < 5; i++) {
         view_session *session = new_session(heavy_scene(1500, 64, 400),
                                             i % 3, NULL, NULL);
         ck_assert_int_eq(view_session_start(session), RT_OK);
-        sleep_ms(i * 7);
-        double started = now_seconds();
+        viewer_sleep_ms(i * 7);
+        double started = viewer_now_seconds();
         view_session_destroy(session);
-        double took = now_seconds() - started;
+        double took = viewer_now_seconds() - started;
         ck_assert_msg(took < 0.5, "destroying took %.3f s", took);
-        ck_assert_int_eq(settled_thread_count(threads_before), threads_before);
+        ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
     }
 }
 END_TEST
@@ -697,20 +638,6 @@ START_TEST(bad_scene_reports_file_line_and_column)
 END_TEST
 
 /* two-facets.scn with the background `background` ("30, 30, 60"). */
-static void write_scene(const char *path, const char *background)
-{
-    FILE *file = fopen(path, "w");
-    ck_assert_msg(file != NULL, "cannot write %s", path);
-    fprintf(file,
-            "0,0,10\n0,0,5, 4,0,5, 64,48\n6\n"
-            "-9.37,-5.73,0\n9.71,-5.38,0\n0.31,13.1,0\n"
-            "-1.13,-1.27,2\n1.58,-0.93,2\n-0.17,1.74,2\n2\n"
-            "1,2,3, 0, 180,180,180\n4,5,6, 0.4, 40,120,255\n"
-            "%s\n-3.875,0.125,4, 255,255,255\n",
-            background);
-    ck_assert_int_eq(fclose(file), 0);
-}
-
 /* Moves the file's modification time `seconds` on, so that --watch sees a
  * change even on a file system with coarse times. */
 static void touch_later(const char *path, int seconds)
@@ -743,6 +670,13 @@ static view_app *open_app_with(const char *output, int watch, int samples)
     view_app *app = view_app_create(&options, error, sizeof error);
     ck_assert_msg(app != NULL, "%s", error);
     return app;
+}
+
+/* view_app_open, then what the event loop does when the load ends: 1 when
+ * the scene loaded. */
+static int open_and_wait(view_app *app, const char *path)
+{
+    return view_app_open(app, path) && view_app_wait_load(app);
 }
 
 static view_app *open_app(const char *output, int watch)
@@ -780,17 +714,18 @@ static void edit_and_reload(view_app *app, const char *path, int r, int g,
 {
     char background[64];
     snprintf(background, sizeof background, "%d, %d, %d", r, g, b);
-    write_scene(path, background);
+    viewer_write_scene(path, background);
     ck_assert(view_app_reload(app));
+    ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), r, g, b));
     ck_assert_str_eq(view_app_message(app), "");
 }
 
 START_TEST(reload_reads_the_edited_file)
 {
-    write_scene("viewer-reload.scn", "30, 30, 60");
+    viewer_write_scene("viewer-reload.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 0);
-    ck_assert(view_app_open(app, "viewer-reload.scn"));
+    ck_assert(open_and_wait(app, "viewer-reload.scn"));
     ck_assert(shows_background(finished_image(app), 30, 30, 60));
     edit_and_reload(app, "viewer-reload.scn", 200, 10, 10);
     close_app(app);
@@ -800,13 +735,14 @@ END_TEST
 
 START_TEST(failing_reload_keeps_the_picture_and_reports_the_error)
 {
-    write_scene("viewer-broken.scn", "30, 30, 60");
+    viewer_write_scene("viewer-broken.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 0);
-    ck_assert(view_app_open(app, "viewer-broken.scn"));
+    ck_assert(open_and_wait(app, "viewer-broken.scn"));
     const rt_image *before = finished_image(app);
     view_session *session = view_app_session(app);
-    write_scene("viewer-broken.scn", "30, 30");
-    ck_assert(!view_app_reload(app));
+    viewer_write_scene("viewer-broken.scn", "30, 30");
+    ck_assert(view_app_reload(app));
+    ck_assert(!view_app_wait_load(app));
     ck_assert_ptr_eq(view_app_session(app), session);
     ck_assert_ptr_eq(finished_image(app), before);
     ck_assert(shows_background(before, 30, 30, 60));
@@ -824,14 +760,15 @@ END_TEST
 
 START_TEST(watch_reloads_when_the_file_changes_and_only_then)
 {
-    write_scene("viewer-watch.scn", "30, 30, 60");
+    viewer_write_scene("viewer-watch.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 1);
-    ck_assert(view_app_open(app, "viewer-watch.scn"));
+    ck_assert(open_and_wait(app, "viewer-watch.scn"));
     ck_assert(shows_background(finished_image(app), 30, 30, 60));
     ck_assert(!view_app_check_watch(app));
-    write_scene("viewer-watch.scn", "60, 30, 30");
+    viewer_write_scene("viewer-watch.scn", "60, 30, 30");
     touch_later("viewer-watch.scn", 2);
     ck_assert(view_app_check_watch(app));
+    ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), 60, 30, 30));
     ck_assert(!view_app_check_watch(app));
     /* Removed (an editor between delete and rename): nothing happens, and
@@ -839,8 +776,9 @@ START_TEST(watch_reloads_when_the_file_changes_and_only_then)
     remove("viewer-watch.scn");
     ck_assert(!view_app_check_watch(app));
     ck_assert_str_eq(view_app_message(app), "");
-    write_scene("viewer-watch.scn", "30, 60, 30");
+    viewer_write_scene("viewer-watch.scn", "30, 60, 30");
     ck_assert(view_app_check_watch(app));
+    ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), 30, 60, 30));
     close_app(app);
     remove("viewer-watch.scn");
@@ -852,11 +790,11 @@ START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
     remove("viewer-save-1.ppm");
     remove("viewer-save-2.ppm");
     remove("viewer-save-3.ppm");
-    write_scene("viewer-save.scn", "30, 30, 60");
+    viewer_write_scene("viewer-save.scn", "30, 30, 60");
     /* A file of that name from before is not a candidate. */
-    write_scene("viewer-save-1.ppm", "not an image");
+    viewer_write_scene("viewer-save-1.ppm", "not an image");
     view_app *app = open_app(NULL, 0);
-    ck_assert(view_app_open(app, "viewer-save.scn"));
+    ck_assert(open_and_wait(app, "viewer-save.scn"));
     finished_image(app);
     char path[256];
     ck_assert(view_app_save(app, path, sizeof path));
@@ -899,9 +837,9 @@ START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
     remove("viewer-out.ppm");
     remove("viewer-out-1.ppm");
     remove("viewer-out-partial-1.ppm");
-    write_scene("viewer-mid.scn", "30, 30, 60");
+    viewer_write_scene("viewer-mid.scn", "30, 30, 60");
     view_app *app = open_app("viewer-out.ppm", 0);
-    ck_assert(view_app_open(app, "viewer-mid.scn"));
+    ck_assert(open_and_wait(app, "viewer-mid.scn"));
     finished_image(app);
     char path[256];
     ck_assert(view_app_save(app, path, sizeof path));
@@ -917,7 +855,7 @@ START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
     /* 1024 rays a pixel on one thread, stopped at once: surely unfinished
      * when S is pressed. */
     app = open_app_with("viewer-out.ppm", 0, 1024);
-    ck_assert(view_app_open(app, "viewer-mid.scn"));
+    ck_assert(open_and_wait(app, "viewer-mid.scn"));
     view_session *session = view_app_session(app);
     view_session_cancel(session);
     view_progress progress;
@@ -966,7 +904,7 @@ END_TEST
 START_TEST(a_scene_that_never_loaded_exits_1_when_the_window_closes)
 {
     view_app *app = open_app(NULL, 0);
-    ck_assert(!view_app_open(app, "viewer-no-such-scene.scn"));
+    ck_assert(!open_and_wait(app, "viewer-no-such-scene.scn"));
     SDL_Event quit;
     SDL_zero(quit);
     quit.type = SDL_QUIT;
@@ -980,7 +918,7 @@ START_TEST(a_scene_that_never_loaded_exits_1_when_the_window_closes)
     ck_assert_int_eq(SDL_PushEvent(&quit), 1);
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 0);
-    ck_assert(view_app_open(app, rt_test_source_path("scenes/empty.scn")));
+    ck_assert(open_and_wait(app, rt_test_source_path("scenes/empty.scn")));
     ck_assert_int_eq(view_app_exit_status(app), 0);
     close_app(app);
 }
@@ -993,9 +931,9 @@ START_TEST(without_a_display_rt_view_says_so_and_exits_1_at_once)
              "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "
              "timeout -s KILL 10 '%s' '%s' 2>viewer-nodisplay.txt",
              RT_VIEW_PATH, rt_test_source_path("scenes/cubes.scn"));
-    double start = now_seconds();
+    double start = viewer_now_seconds();
     int status = system(command);
-    double seconds = now_seconds() - start;
+    double seconds = viewer_now_seconds() - start;
     ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 1,
                   "status %d after %.2f s", status, seconds);
     ck_assert_msg(seconds < 2.0, "took %.2f s", seconds);
@@ -1195,7 +1133,7 @@ END_TEST
 static view_app *open_cubes_app(void)
 {
     view_app *app = open_app(NULL, 0);
-    ck_assert(view_app_open(app, rt_test_source_path("scenes/cubes.scn")));
+    ck_assert(open_and_wait(app, rt_test_source_path("scenes/cubes.scn")));
     finished_image(app);
     view_window_sync(view_app_window(app));
     return app;
@@ -1362,7 +1300,7 @@ START_TEST(view_option_starts_in_that_debug_view)
     char error[256];
     view_app *app = view_app_create(&options, error, sizeof error);
     ck_assert_msg(app != NULL, "%s", error);
-    ck_assert(view_app_open(app, rt_test_source_path("scenes/cubes.scn")));
+    ck_assert(open_and_wait(app, rt_test_source_path("scenes/cubes.scn")));
     ck_assert_ptr_nonnull(strstr(view_app_title(app), "facet view"));
     /* A light the scene does not have: the picture, and the reason. */
     ck_assert(!view_app_set_view(app, RT_VIEW_SHADOW, 7));

@@ -49,7 +49,8 @@ static view_app *open_app(const char *output)
 static view_app *render(const char *path, const char *output)
 {
     view_app *app = open_app(output);
-    ck_assert_msg(view_app_open(app, path), "%s", view_app_message(app));
+    ck_assert_msg(view_app_open(app, path) && view_app_wait_load(app), "%s",
+                  view_app_message(app));
     view_progress progress;
     Uint64 deadline = SDL_GetTicks64() + (Uint64)(WAIT_SECONDS * 1000);
     do {

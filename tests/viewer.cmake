@@ -5,7 +5,7 @@
 if(TARGET raytrace_viewer)
   # One test compares with the image rt-export writes; one runs rt-view
   # without a display (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
-  raytrace_add_suite(test_viewer LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer SOURCES viewer_testutil.c LIBS raytrace_viewer)
   set_tests_properties(test_viewer PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
   # S never writes over an input (tests/test_viewer_outputs.c); the
@@ -21,10 +21,15 @@ if(TARGET raytrace_viewer)
     TIMEOUT 120)
   set_tests_properties(test_viewer_outputs_sources PROPERTIES
     SKIP_RETURN_CODE 77)
+  # Loads on a worker thread: live window, cancels, quits that never wait.
+  raytrace_add_suite(test_viewer_load SOURCES viewer_testutil.c
+    LIBS raytrace_viewer)
+  set_tests_properties(test_viewer_load PROPERTIES
+    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()
 
 # The click overlay on a real X server: rt-view under Xvfb, driven by
-# xdotool (tests/viewer_xvfb.sh).  Skipped (77) without Xvfb or xdotool;
+# xdotool (tests/viewer_xvfb.sh, sharing tests/xvfb_session.sh).  Skipped (77) without Xvfb or xdotool;
 # test_viewer checks the same overlay in process, pixel by pixel.
 if(TARGET raytrace_rt_view)
   find_program(BASH_PROGRAM bash)
@@ -32,6 +37,13 @@ if(TARGET raytrace_rt_view)
     add_test(NAME viewer_xvfb
       COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb.sh")
     set_tests_properties(viewer_xvfb PROPERTIES
+      ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 120)
+    # The watched scene replaced by a FIFO: the window still answers, and
+    # Escape and SIGTERM end it (tests/viewer_xvfb_fifo.sh).
+    add_test(NAME viewer_xvfb_fifo
+      COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb_fifo.sh")
+    set_tests_properties(viewer_xvfb_fifo PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
       SKIP_RETURN_CODE 77 TIMEOUT 120)
   endif()

@@ -9,37 +9,7 @@
 #
 # Environment: RT_VIEW (the rt-view binary), RT_SOURCE_DIR (the sources).
 set -u
-for tool in Xvfb xdotool; do
-    command -v "$tool" >/dev/null 2>&1 || {
-        echo "skipped: $tool is not installed"; exit 77; }
-done
-work=$(mktemp -d)
-xvfb_pid=
-view_pid=
-cleanup() {
-    [ -n "$view_pid" ] && kill "$view_pid" 2>/dev/null
-    [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
-    wait 2>/dev/null
-    rm -rf "$work"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; echo "--- rt-view stdout"; cat "$work/out";
-         echo "--- rt-view stderr"; cat "$work/err"; exit 1; }
-
-# A free display: Xvfb writes the number it took to fd 3.
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$work/display" \
-    >"$work/xvfb.log" 2>&1 &
-xvfb_pid=$!
-for _ in $(seq 100); do
-    [ -s "$work/display" ] && break
-    sleep 0.1
-done
-[ -s "$work/display" ] || { echo "skipped: Xvfb did not start"; exit 77; }
-export DISPLAY=":$(head -n 1 "$work/display")"
-unset WAYLAND_DISPLAY SDL_VIDEODRIVER
-# X libraries' own allocations are not this test's business (test_viewer
-# checks rt-view's code for leaks).
-export ASAN_OPTIONS=detect_leaks=0
+. "$(dirname "$0")/xvfb_session.sh"
 
 "$RT_VIEW" "$RT_SOURCE_DIR/scenes/cubes.scn" >"$work/out" 2>"$work/err" &
 view_pid=$!

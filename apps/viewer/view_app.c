@@ -2,8 +2,10 @@
  * view_app.c - rt-view's window, keys, reloads, saves and event loop (see
  * view_app.h).  The main thread sleeps in SDL_WaitEventTimeout and is woken
  * by a user event that the session's notify hook pushes when rows are
- * finished; frames are drawn at most every FRAME_MS, and with --watch the
- * file is looked at every VIEW_WATCH_MS.
+ * finished, and the load's when a scene is read; frames are drawn at most
+ * every FRAME_MS, with --watch the file is looked at every VIEW_WATCH_MS,
+ * and the loop never sleeps longer than VIEW_SIGNAL_MS (termination
+ * signals cannot wake it).
  */
 #include "view_app.h"
 
@@ -26,7 +28,6 @@
 #define PROGRAM "rt-view"
 #define FRAME_MS 16        /* shortest time between two frames */
 #define TITLE_MS 100       /* how often the elapsed time is refreshed */
-#define IDLE_MS 500        /* wait when nothing is rendering */
 #define EMPTY_SIZE 480     /* window side when no scene is loaded */
 
 struct view_app {
@@ -38,6 +39,7 @@ struct view_app {
     int scene_loaded;           /* one loaded at least once */
     int output_written;         /* -o PATH has a complete image */
     view_session *session;
+    view_load *load;            /* the load under way, or NULL */
     view_window *window;
     Uint32 wake_event;
     char message[RT_ERROR_MESSAGE_SIZE + 64]; /* shown in the title */
@@ -99,10 +101,18 @@ static const char *base_name(const char *path)
 static void update_title(view_app *app)
 {
     char title[sizeof app->title];
+    char loading[160] = "";
+    if (app->load != NULL)
+        snprintf(loading, sizeof loading, "loading %.120s - ",
+                 base_name(view_load_path(app->load)));
     if (app->message[0]) {
-        snprintf(title, sizeof title, "%s - " PROGRAM, app->message);
+        snprintf(title, sizeof title, "%s - %s" PROGRAM, app->message,
+                 loading);
     } else if (app->session == NULL) {
-        snprintf(title, sizeof title, PROGRAM " - drop a .scn file here");
+        if (loading[0])
+            snprintf(title, sizeof title, "%s" PROGRAM, loading);
+        else
+            snprintf(title, sizeof title, PROGRAM " - drop a .scn file here");
     } else {
         view_progress progress;
         view_session_get_progress(app->session, &progress);
@@ -115,9 +125,9 @@ static void update_title(view_app *app)
                      view_names[app->view], app->view_light);
         else if (app->view)
             snprintf(view, sizeof view, " - %s", view_names[app->view]);
-        snprintf(title, sizeof title, "%s %dx%d depth %d - %s%s - " PROGRAM,
+        snprintf(title, sizeof title, "%s %dx%d depth %d - %s%s - %s" PROGRAM,
                  base_name(app->shown_path), image->width, image->height,
-                 progress.max_depth, state, view);
+                 progress.max_depth, state, view, loading);
     }
     if (strcmp(title, app->title) != 0) {
         snprintf(app->title, sizeof app->title, "%s", title);
@@ -199,7 +209,10 @@ void view_app_destroy(view_app *app)
 {
     if (app == NULL)
         return;
-    /* Close the window at once, then wait for the render to stop. */
+    /* A load is let go, never waited for (it may be blocked for ever);
+     * the window closes at once, then the render stops. */
+    view_load_abandon(app->load);
+    app->load = NULL;
     view_window_hide(app->window);
     view_window_attach(app->window, NULL, NULL, 0);
     view_session_destroy(app->session);
@@ -283,37 +296,72 @@ static void show_session(view_app *app, view_session *session,
 int view_app_open(view_app *app, const char *path)
 {
     char *watched = copy_text(path);
-    char *shown = copy_text(path);
-    if (watched == NULL || shown == NULL) {
-        free(watched);
-        free(shown);
+    if (watched == NULL) {
         show_message(app, "out of memory");
         return 0;
     }
     free(app->path);
     app->path = watched;
     app->scene_asked = 1;
-    /* Stamped before reading: an edit during the load is seen next time. */
+    /* Stamped before reading: an edit during the load is seen next time
+     * (a stat: it does not block on a FIFO, unlike opening it). */
     view_file_stamp_read(path, &app->stamp);
+    view_load_abandon(app->load);   /* a new load replaces it */
+    app->load = NULL;
+    view_load_func load = app->options.load_scene ? app->options.load_scene
+                                                  : view_scene_load;
+    if (view_load_start(path, app->options.load, load, wake, app,
+                        &app->load) != RT_OK) {
+        show_message(app, "cannot start loading the scene: out of memory");
+        return 0;
+    }
+    update_title(app);
+    return 1;
+}
 
+int view_app_loading(const view_app *app)
+{
+    return app->load != NULL;
+}
+
+/* The load under way has ended: shows its scene, or its error (the
+ * current picture stays).  Returns 1 when it loaded. */
+static int finish_load(view_app *app)
+{
+    view_load *load = app->load;
+    app->load = NULL;
+    char *shown = copy_text(view_load_path(load));
     rt_scene *scene;
     rt_error error;
-    if (view_scene_load(path, app->options.load, &scene, &error) != RT_OK) {
+    memset(&error, 0, sizeof error);
+    rt_status status = view_load_finish(load, &scene, &error);
+    if (status != RT_OK || shown == NULL) {
+        show_message(app, shown == NULL ? "out of memory"
+                          : error.message[0] ? error.message
+                                             : rt_status_string(status));
+        rt_scene_destroy(scene);
         free(shown);
-        show_message(app, error.message);
         return 0;
     }
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, PROGRAM ": %s\n", rt_scene_warning(scene, i)->message);
-    view_session *session = new_session(app, scene, path);
+    view_session *session = new_session(app, scene, shown);
     if (session == NULL) {
         free(shown);
         return 0;
     }
     show_session(app, session, shown);
     return 1;
+}
+
+int view_app_wait_load(view_app *app)
+{
+    if (app->load == NULL)
+        return 0;
+    view_load_wait(app->load);
+    return finish_load(app);
 }
 
 int view_app_reload(view_app *app)
@@ -325,9 +373,9 @@ int view_app_reload(view_app *app)
         show_message(app, "out of memory");
         return 0;
     }
-    int loaded = view_app_open(app, path);
+    int started = view_app_open(app, path);
     free(path);
-    return loaded;
+    return started;
 }
 
 int view_app_check_watch(view_app *app)
@@ -344,8 +392,7 @@ int view_app_check_watch(view_app *app)
         app->stamp = now;
         return 0;
     }
-    view_app_reload(app);
-    return 1;
+    return view_app_reload(app);
 }
 
 /* SIGINT, SIGTERM and SIGHUP are blocked in every thread (rt-view's main
@@ -734,14 +781,15 @@ static int rendering(view_app *app)
     return progress.state == VIEW_RENDERING;
 }
 
-/* How long the loop may sleep: until the next frame while rendering, and
- * never past the next look at a watched file. */
+/* How long the loop may sleep: until the next frame while rendering, never
+ * past the next look at a watched file, and never more than VIEW_SIGNAL_MS
+ * (a termination signal is taken at each turn). */
 static int wait_ms(int busy, Uint64 now, Uint64 next_frame, Uint64 next_watch,
                    int watch)
 {
-    int timeout = IDLE_MS;
-    if (busy)
-        timeout = next_frame > now ? (int)(next_frame - now) : TITLE_MS;
+    int timeout = VIEW_SIGNAL_MS;
+    if (busy && next_frame > now && next_frame - now < (Uint64)timeout)
+        timeout = (int)(next_frame - now);
     if (watch) {
         int until_watch = next_watch > now ? (int)(next_watch - now) : 0;
         if (until_watch < timeout)
@@ -771,6 +819,10 @@ void view_app_run(view_app *app)
         take_termination_signal(app);
         if (app->quit)
             break;
+        if (app->load != NULL && view_load_done(app->load)) {
+            finish_load(app);
+            app->redraw = 1;
+        }
         now = SDL_GetTicks64();
         if (app->options.watch && now >= next_watch) {
             view_app_check_watch(app);

@@ -5,6 +5,10 @@
  * drive the same functions directly on SDL's dummy driver.
  *
  * The rules it keeps:
+ *   - a scene is read on a worker thread (view_load.h): the window stays
+ *     live meanwhile, the picture shown before stays until the new scene
+ *     is ready, and the title says "loading"; a new load, and quitting,
+ *     cancel the one under way without waiting for it;
  *   - a reload reads the file again; when it fails, the picture shown stays
  *     and the error (FILE:LINE:COLUMN: MESSAGE) goes to stderr and the
  *     title;
@@ -25,10 +29,16 @@
 
 #include "raytrace/raytrace.h"
 #include "view_explain.h"
+#include "view_load.h"
 #include "view_session.h"
 #include "view_window.h"
 
 #define VIEW_WATCH_MS 250   /* how often --watch looks at the file */
+
+/* The longest the event loop sleeps: termination signals are blocked (they
+ * cannot wake it) and taken at each turn, so one is acted on within this
+ * (SIGTERM quits within it whatever a load is doing). */
+#define VIEW_SIGNAL_MS 50
 
 typedef struct view_app_options {
     rt_render_options render;   /* every render option; width and height 0
@@ -45,6 +55,9 @@ typedef struct view_app_options {
     int view;                   /* --view: the rt_debug_view shown first,
                                    0: the picture */
     int view_light;             /* its light (shadow and N.S views) */
+    view_load_func load_scene;  /* how a scene is read (on the load's
+                                   worker): NULL, view_scene_load; the
+                                   tests pass loaders that block */
 } view_app_options;
 
 typedef struct view_app view_app;
@@ -58,20 +71,36 @@ void view_app_options_init(view_app_options *options);
 view_app *view_app_create(const view_app_options *options, char *error,
                           size_t error_size);
 
-/* Cancels the render, waits for its threads, closes the window.  NULL is
- * a no-op. */
+/* Cancels the render and waits for its threads, lets any load go (never
+ * waiting for it), closes the window.  NULL is a no-op. */
 void view_app_destroy(view_app *app);
 
-/* Loads `path` and renders it in place of the current scene; it becomes
- * the file R and --watch reload.  Returns 1, or 0 when it did not load
- * (the current picture stays; the error is shown). */
+/*
+ * Starts loading `path` on a worker thread, to render it in place of the
+ * current scene once loaded (the event loop takes it over, or
+ * view_app_wait_load); a load under way is cancelled and let go.  `path`
+ * becomes the file R and --watch reload.  Returns 1 when the load started,
+ * 0 when it could not (out of memory; the error is shown).
+ */
 int view_app_open(view_app *app, const char *path);
+
+/* Non-zero while a load is under way. */
+int view_app_loading(const view_app *app);
+
+/*
+ * Waits for the load under way, then does what the event loop does when
+ * one ends: renders its scene, or shows its error and keeps the current
+ * picture.  Returns 1 when it loaded, 0 when it failed or none was under
+ * way.  For the tests (the event loop never waits).
+ */
+int view_app_wait_load(view_app *app);
 
 /* R: view_app_open on the current file again (0 when there is none). */
 int view_app_reload(view_app *app);
 
-/* --watch: reloads when the file's stamp differs from the one it had when
- * last read.  Returns 1 when it reloaded (successfully or not). */
+/* --watch: starts a reload when the file's stamp differs from the one it
+ * had when last read (a stat, which never blocks).  Returns 1 when it
+ * started one. */
 int view_app_check_watch(view_app *app);
 
 /* S: saves what is rendered so far by the rules above; returns 1 with the
@@ -79,7 +108,8 @@ int view_app_check_watch(view_app *app);
 int view_app_save(view_app *app, char *path, size_t size);
 
 /* Shows the window and runs the event loop until Q, Esc, closing the
- * window or a termination signal. */
+ * window or a termination signal (taken within VIEW_SIGNAL_MS).  A load
+ * ending meanwhile is shown at once. */
 void view_app_run(view_app *app);
 
 /* The exit status the rules above give. */

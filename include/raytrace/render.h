@@ -63,7 +63,10 @@ typedef struct rt_render_stats {
     uint64_t accel_leaves;
     int accel_depth;
     uint64_t accel_references;        /* facet entries in all leaves */
-    uint64_t accel_always;            /* slivers every ray tests */
+    uint64_t accel_always;            /* facets every ray tests, in no
+                                         leaf: 0 but for scenes whose
+                                         coordinates leave no room for
+                                         cells (slivers are in leaves) */
     uint64_t accel_bytes;             /* its memory */
     uint64_t accel_queries;           /* ray queries through it */
     uint64_t accel_leaves_visited;
@@ -130,9 +133,10 @@ typedef enum rt_accel {
 #define RT_ACCEL_AUTO_FACETS 300
 
 /*
- * A cancellation flag that renders poll before every pixel.  Any thread may
- * raise it while renders that were given it run; each then stops within one
- * pixel's work on every thread and returns RT_ERR_CANCELLED.  It stays raised
+ * A cancellation flag that renders poll before every pixel, and while they
+ * build an octree (about every millisecond).  Any thread may raise it while
+ * renders that were given it run; each then stops within one pixel's work
+ * on every thread and returns RT_ERR_CANCELLED.  It stays raised
  * until reset.  All functions are thread-safe on the same flag, except
  * rt_cancel_destroy, which must wait until no render uses it.
  */

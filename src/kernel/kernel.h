@@ -12,6 +12,10 @@
  * Its octree (octree_impl.h) is built on first request, once, under a lock
  * (rt__kernel_*_octree_prepare, thread-safe), and only read afterwards;
  * once it exists, nearest_hit and occluded go through it (same answers).
+ * octree_prepare returns RT_OK (built now or before; *info filled when not
+ * NULL), RT_ERR_NOMEM, or RT_ERR_CANCELLED when `cancel` (may be NULL) is
+ * raised before the build completes: the build then stops within about a
+ * millisecond and nothing is kept, so a later call builds it again.
  *
  * trace_span traces `count` camera rays from `origin` (the camera rays of
  * neighbouring pixels), the colour of ray j into colors[j], each exactly
@@ -106,7 +110,11 @@ typedef struct rt_octree_info {
     uint64_t leaves;
     int depth;
     uint64_t references;    /* facet indices in all leaves */
-    uint64_t always;        /* slivers every ray tests, in no leaf */
+    uint64_t always;        /* facets every ray tests, in no leaf (all of
+                               them when the coordinates leave no room for
+                               cells; else 0: slivers are in leaves) */
+    uint64_t slivers;       /* facets listed in leaves whose shape the
+                               stopping rule cannot trust: never left out */
     uint64_t bytes;
 } rt_octree_info;
 
@@ -142,8 +150,9 @@ typedef struct rt_kernel_hit {
     int rt__kernel_##suffix##_occluded(const rt_kernel_##suffix *kernel,     \
                                        rt_vec3 from, rt_vec3 to,             \
                                        int skip_facet);                      \
-    int rt__kernel_##suffix##_octree_prepare(                                \
-        const rt_kernel_##suffix *kernel, rt_octree_info *info);
+    rt_status rt__kernel_##suffix##_octree_prepare(                          \
+        const rt_kernel_##suffix *kernel, const rt_cancel *cancel,           \
+        rt_octree_info *info);
 
 RT_KERNEL_DECLARE(d)
 RT_KERNEL_DECLARE(f)

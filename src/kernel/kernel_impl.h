@@ -196,15 +196,19 @@ void KERNEL(free)(KERNEL_T *k)
     free(k);
 }
 
-int KERNEL(octree_prepare)(const KERNEL_T *k, rt_octree_info *info)
+rt_status KERNEL(octree_prepare)(const KERNEL_T *k, const rt_cancel *cancel,
+                                 rt_octree_info *info)
 {
     KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy octree changes */
     const octree *t = octree_of(k);
+    rt_status status = RT_OK;
     if (t == NULL) {
         pthread_mutex_lock(&mutable->tree_lock);
         t = atomic_load_explicit(&mutable->tree, memory_order_relaxed);
         if (t == NULL) {
-            octree *built = octree_build(k);
+            /* Stored only when complete: a cancelled or failed build
+             * leaves NULL, and the next render builds it again. */
+            octree *built = octree_build(k, cancel, &status);
             atomic_store_explicit(&mutable->tree, built,
                                   memory_order_release);
             t = built;
@@ -212,7 +216,7 @@ int KERNEL(octree_prepare)(const KERNEL_T *k, rt_octree_info *info)
         pthread_mutex_unlock(&mutable->tree_lock);
     }
     if (t == NULL)
-        return 0;
+        return status;
     if (info != NULL) {
         info->build_seconds = t->build_seconds;
         info->nodes = (uint64_t)t->node_count;
@@ -220,9 +224,10 @@ int KERNEL(octree_prepare)(const KERNEL_T *k, rt_octree_info *info)
         info->depth = t->depth;
         info->references = (uint64_t)t->ref_count;
         info->always = (uint64_t)t->always_count;
+        info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
     }
-    return 1;
+    return RT_OK;
 }
 
 KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)

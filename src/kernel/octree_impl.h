@@ -35,13 +35,24 @@
  *     and a degenerate scene degrades towards brute force;
  *   - facets whose shape makes the test's rounding large (longest edge
  *     squared over twice the area above OCTREE_CONDITION_MAX: slivers) are
- *     not listed in leaves but in one list every ray tests.
+ *     listed in leaves like the others, after them, and every node whose
+ *     subtree holds one is marked: the nearest-hit walk never leaves out a
+ *     marked node, but beyond its stopping point tests only the slivers
+ *     there (docs/octree.md, "Slivers");
+ *   - the build looks at the render's cancellation flag every
+ *     OCTREE_POLL_WORK facet placements: a cancelled build is thrown away
+ *     within about a millisecond, never kept half built;
+ *   - a ray from farther than the margin covers (see fat_growth()) walks
+ *     cells grown by what the margin lacks, up to OCTREE_FAT_MAX of the
+ *     root's side; beyond, brute force is cheaper and is used.
  */
 #define OCTREE_LEAF_FACETS 8
 #define OCTREE_MAX_DEPTH 16
 #define OCTREE_SPLIT_GROWTH 4
 #define OCTREE_REFERENCE_BUDGET RT_OCTREE_REFERENCE_BUDGET
 #define OCTREE_CONDITION_MAX 4096.0
+#define OCTREE_POLL_WORK 1024
+#define OCTREE_FAT_MAX 0.0625
 #define OCTREE_STACK (7 * OCTREE_MAX_DEPTH + 8)
 #define OCTREE_ENLARGE 0.5234375    /* half the cube's side, in box sizes */
 static const double OCTREE_OFFSET[3] = {0.0103, 0.0071, 0.0137};
@@ -50,13 +61,25 @@ static const double OCTREE_OFFSET[3] = {0.0103, 0.0071, 0.0137};
  * The margin leaf boxes grow by, relative to the root's size: far above
  * the rounding of the overlap and slab tests (a few ulps of double), and
  * above the perturbation under which the watertight test in REAL is exact
- * for rays from within OCTREE_REACH root sizes (see too_far()).
+ * for rays from within its reach (2^16 root sizes in double, 2^6 in float;
+ * see fat_growth() for farther ones).
  */
 #if REAL_IS_FLOAT
 #define OCTREE_MARGIN 0x1p-11
 #else
 #define OCTREE_MARGIN 0x1p-30
 #endif
+
+/*
+ * The margin is at least this much of the largest coordinate of the root
+ * too: the boxes the overlap test is given are computed from the cells'
+ * bounds, and round by an ulp of those coordinates; for a scene far from
+ * the coordinates' origin compared to its size (beyond 2^16 times its
+ * size) that rounding would otherwise exceed the margin.  (64 ulps: the
+ * part of the margin left once the test's perturbation is covered, 9/16
+ * of it, is still 36 ulps of every coordinate.)
+ */
+#define OCTREE_ROUNDING 0x1p-46
 
 /* A node: a leaf when count >= 0 (facets refs[first .. first + count)),
  * else internal with children nodes[first .. first + 8), child bit 0 the
@@ -69,13 +92,22 @@ typedef struct onode {
 typedef struct octree {
     double lo[3], hi[3];    /* the root cube */
     double margin;          /* absolute */
+    double reach_margin;    /* the part of it that covers the watertight
+                               test's perturbation: size * OCTREE_MARGIN */
     onode *nodes;
-    int32_t *refs;          /* facet indices, ascending within a leaf */
-    int32_t *always;        /* the badly conditioned facets */
+    int32_t *refs;          /* facet indices; within a leaf the ordinary
+                               ones, then the slivers, each ascending */
+    int32_t *slivers;       /* NULL when there are none; else per node:
+                               for a leaf, how many of its facets (the
+                               last ones) are slivers; for an internal
+                               node, non-zero when a leaf below holds one */
+    int32_t *always;        /* facets every ray tests: all of them when the
+                               coordinates leave no room for cells */
     int node_count;
     int leaf_count;
     int depth;
     int always_count;
+    int sliver_count;
     size_t ref_count;
     size_t bytes;
     double build_seconds;
@@ -138,8 +170,25 @@ typedef struct builder {
     size_t frontier;        /* references of the leaves if building
                                stopped now */
     size_t budget;
-    int failed;
+    const rt_cancel *cancel;    /* NULL: the build cannot be cancelled */
+    size_t work;            /* facet placements since the flag was read */
+    rt_status status;       /* RT_OK, RT_ERR_NOMEM or RT_ERR_CANCELLED */
 } builder;
+
+/* Counts `amount` units of work (a facet placed or examined) and, every
+ * OCTREE_POLL_WORK of them, reads the cancellation flag; non-zero once
+ * the build must stop (cancelled, or out of memory before). */
+static int stopped(builder *b, size_t amount)
+{
+    b->work += amount;
+    if (b->work >= OCTREE_POLL_WORK) {
+        b->work = 0;
+        if (b->status == RT_OK && b->cancel != NULL &&
+            rt_cancel_requested(b->cancel))
+            b->status = RT_ERR_CANCELLED;
+    }
+    return b->status != RT_OK;
+}
 
 static int grow(void **array, size_t *capacity, size_t needed, size_t size)
 {
@@ -162,7 +211,7 @@ static void make_leaf(builder *b, int node, const int32_t *list, int n)
     if (n > 0) {            /* (an empty leaf may have no list at all) */
         if (!grow((void **)&t->refs, &b->ref_capacity,
                   t->ref_count + (size_t)n, sizeof *t->refs)) {
-            b->failed = 1;
+            b->status = RT_ERR_NOMEM;
             return;
         }
         memcpy(t->refs + t->ref_count, list, (size_t)n * sizeof *list);
@@ -217,12 +266,14 @@ static void build_node(builder *b, const todo *d, const int32_t *list,
         make_leaf(b, d->node, list, n);
         return;
     }
+    if (stopped(b, (size_t)n))
+        return;         /* the level is thrown away */
     size_t need = next->ref_count + (size_t)n * 8;
     if (!grow((void **)&next->refs, &next->ref_capacity, need,
               sizeof *next->refs) ||
         !grow((void **)&next->items, &next->capacity, next->count + 8,
               sizeof *next->items)) {
-        b->failed = 1;
+        b->status = RT_ERR_NOMEM;
         return;
     }
     double mid[3];
@@ -245,6 +296,9 @@ static void build_node(builder *b, const todo *d, const int32_t *list,
      * the margin: the overlap test would reject it too) is not tested. */
     int32_t *region = next->refs + start;
     for (int i = 0; i < n; i++) {
+        if (i % OCTREE_POLL_WORK == OCTREE_POLL_WORK - 1 &&
+            stopped(b, OCTREE_POLL_WORK))
+            return;     /* a large node: looked at within it too */
         double (*v)[3] = b->v[list[i]];
         unsigned sides[3];  /* bit 0: may be in the lower half, 1: upper */
         for (int a = 0; a < 3; a++) {
@@ -275,7 +329,7 @@ static void build_node(builder *b, const todo *d, const int32_t *list,
     }
     if (!grow((void **)&t->nodes, &b->node_capacity,
               (size_t)t->node_count + 8, sizeof *t->nodes)) {
-        b->failed = 1;
+        b->status = RT_ERR_NOMEM;
         return;
     }
     b->frontier += total - (size_t)n;
@@ -295,7 +349,7 @@ static void build_levels(builder *b, int32_t *list, int n)
     cur.items = malloc(sizeof *cur.items);
     if (cur.items == NULL) {
         free(list);
-        b->failed = 1;
+        b->status = RT_ERR_NOMEM;
         return;
     }
     cur.capacity = 1;
@@ -305,10 +359,10 @@ static void build_levels(builder *b, int32_t *list, int n)
     cur.items[0] = (todo){{b->tree->lo[0], b->tree->lo[1], b->tree->lo[2]},
                           {b->tree->hi[0], b->tree->hi[1], b->tree->hi[2]},
                           0, n, 0};
-    for (int depth = 0; cur.count > 0 && !b->failed; depth++) {
+    for (int depth = 0; cur.count > 0 && b->status == RT_OK; depth++) {
         next.count = 0;
         next.ref_count = 0;
-        for (size_t i = 0; i < cur.count && !b->failed; i++)
+        for (size_t i = 0; i < cur.count && b->status == RT_OK; i++)
             build_node(b, &cur.items[i], cur.refs + cur.items[i].list, depth,
                        &next);
         level swap = cur;
@@ -326,6 +380,7 @@ static void octree_free(octree *t)
     if (t != NULL) {
         free(t->nodes);
         free(t->refs);
+        free(t->slivers);
         free(t->always);
     }
     free(t);
@@ -358,23 +413,77 @@ static double seconds_now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* The octree of k's facets, or NULL when out of memory. */
-static octree *octree_build(const KERNEL_T *k)
+/*
+ * Marks the slivers (sliver[i] non-zero for facet i): puts them last in
+ * each leaf's list (both parts keep their ascending order), counts them
+ * per leaf and marks every internal node above one.  Children come after
+ * their parent in t->nodes, so one pass from the end sees them first.
+ * Returns 0 when out of memory.
+ */
+static int mark_slivers(octree *t, const unsigned char *sliver)
+{
+    t->slivers = calloc((size_t)t->node_count, sizeof *t->slivers);
+    int32_t largest = 0;
+    for (int i = 0; i < t->node_count; i++)
+        if (t->nodes[i].count > largest)
+            largest = t->nodes[i].count;
+    int32_t *scratch = malloc((size_t)(largest > 0 ? largest : 1) *
+                              sizeof *scratch);
+    if (t->slivers == NULL || scratch == NULL) {
+        free(scratch);
+        return 0;
+    }
+    for (int i = t->node_count - 1; i >= 0; i--) {
+        const onode *node = &t->nodes[i];
+        if (node->count < 0) {
+            int32_t any = 0;
+            for (int c = 0; c < 8; c++)
+                any |= t->slivers[node->first + c] != 0;
+            t->slivers[i] = any;
+            continue;
+        }
+        int32_t *list = t->refs + node->first;
+        int32_t kept = 0, moved = 0;
+        for (int32_t j = 0; j < node->count; j++) {
+            if (sliver[list[j]])
+                scratch[moved++] = list[j];
+            else
+                list[kept++] = list[j];
+        }
+        memcpy(list + kept, scratch, (size_t)moved * sizeof *list);
+        t->slivers[i] = moved;
+    }
+    free(scratch);
+    return 1;
+}
+
+/*
+ * The octree of k's facets, with *status RT_OK; or NULL with *status
+ * RT_ERR_NOMEM, or RT_ERR_CANCELLED once `cancel` (may be NULL) was
+ * raised: a cancelled build frees what it made.
+ */
+static octree *octree_build(const KERNEL_T *k, const rt_cancel *cancel,
+                            rt_status *status)
 {
     double start = seconds_now();
+    *status = RT_ERR_NOMEM;
     octree *t = calloc(1, sizeof *t);
     if (t == NULL)
         return NULL;
     builder b = {0};
     size_t n = (size_t)k->count;
     b.tree = t;
+    b.cancel = cancel;
     b.v = malloc((n ? n : 1) * sizeof *b.v);
     int32_t *list = malloc((n ? n : 1) * sizeof *list);
+    unsigned char *sliver = malloc(n ? n : 1);
     t->always = malloc((n ? n : 1) * sizeof *t->always);
     t->nodes = malloc(sizeof *t->nodes);
-    if (b.v == NULL || list == NULL || t->always == NULL || t->nodes == NULL) {
+    if (b.v == NULL || list == NULL || sliver == NULL || t->always == NULL ||
+        t->nodes == NULL) {
         free(b.v);
         free(list);
+        free(sliver);
         octree_free(t);
         return NULL;
     }
@@ -382,18 +491,18 @@ static octree *octree_build(const KERNEL_T *k)
     t->node_count = 1;
     double lo[3] = {INFINITY, INFINITY, INFINITY};
     double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    int listed = 0;
+    int listed = 0, slivers = 0;
     for (int i = 0; i < k->count; i++) {
+        if (i % OCTREE_POLL_WORK == 0 && stopped(&b, OCTREE_POLL_WORK))
+            break;
         const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
         for (int j = 0; j < 3; j++) {
             b.v[i][j][0] = (double)p[j]->x;
             b.v[i][j][1] = (double)p[j]->y;
             b.v[i][j][2] = (double)p[j]->z;
         }
-        if (!(condition(b.v[i]) <= OCTREE_CONDITION_MAX)) {
-            t->always[t->always_count++] = i;
-            continue;
-        }
+        sliver[i] = !(condition(b.v[i]) <= OCTREE_CONDITION_MAX);
+        slivers += sliver[i];
         list[listed++] = i;
         for (int j = 0; j < 3; j++)
             for (int a = 0; a < 3; a++) {
@@ -401,18 +510,22 @@ static octree *octree_build(const KERNEL_T *k)
                 hi[a] = fmax(hi[a], b.v[i][j][a]);
             }
     }
-    double size = 0;
-    for (int a = 0; listed > 0 && a < 3; a++)
+    double size = 0, extent = 0;
+    for (int a = 0; listed > 0 && a < 3; a++) {
         size = fmax(size, hi[a] - lo[a]);
-    if (!(size * 2 < INFINITY)) {
+        extent = fmax(extent, fmax(fabs(lo[a]), fabs(hi[a])));
+    }
+    if (b.status == RT_OK && !(size * 2 < INFINITY)) {
         /* coordinates near double's limit: no cell arithmetic would be
          * safe; every facet goes to the list every ray tests */
         for (int i = 0; i < listed; i++)
             t->always[t->always_count++] = list[i];
         listed = 0;
-        size = 0;
+        slivers = 0;
+        size = extent = 0;
     }
-    t->margin = size * OCTREE_MARGIN;
+    t->reach_margin = size * OCTREE_MARGIN;
+    t->margin = fmax(t->reach_margin, (extent + size) * OCTREE_ROUNDING);
     /* A cube a little larger than the facets' box and off its centre, so
      * that the cells' faces do not fall on the round coordinates modelled
      * scenes put their vertices on (a facet on a face is listed on both
@@ -426,17 +539,28 @@ static octree *octree_build(const KERNEL_T *k)
     b.frontier = (size_t)listed;
     b.budget = (size_t)OCTREE_REFERENCE_BUDGET * (size_t)listed +
                RT_OCTREE_REFERENCE_EXTRA;
-    build_levels(&b, list, listed);    /* frees list */
+    if (b.status == RT_OK)
+        build_levels(&b, list, listed);    /* frees list */
+    else
+        free(list);
     free(b.v);
-    if (b.failed) {
-        octree_free(t);
-        return NULL;
+    if (b.status == RT_OK && slivers > 0 && !mark_slivers(t, sliver))
+        b.status = RT_ERR_NOMEM;
+    free(sliver);
+    if (b.status == RT_OK) {     /* complete: kept even if cancelled now */
+        t->bytes = sizeof *t + (size_t)t->node_count * sizeof *t->nodes +
+                   t->ref_count * sizeof *t->refs +
+                   (size_t)k->count * sizeof *t->always +
+                   (t->slivers ? (size_t)t->node_count * sizeof *t->slivers
+                               : 0);
+        t->build_seconds = seconds_now() - start;
+        t->sliver_count = slivers;
+        *status = RT_OK;
+        return t;
     }
-    t->bytes = sizeof *t + (size_t)t->node_count * sizeof *t->nodes +
-               t->ref_count * sizeof *t->refs +
-               (size_t)k->count * sizeof *t->always;
-    t->build_seconds = seconds_now() - start;
-    return t;
+    *status = b.status;
+    octree_free(t);
+    return NULL;
 }
 
 /* --- the walk -------------------------------------------------------- */
@@ -542,6 +666,49 @@ static void split_axes(const oray *q, const double mid[3], double low0[3],
     }
 }
 
+/* The same for the halves grown by g > 0 beyond the middle (the walk of a
+ * ray from far away, see fat_growth()): the lower half ends at mid + g,
+ * the upper one starts at mid - g. */
+static void split_axes_grown(const oray *q, const double mid[3], double g,
+                             double low0[3], double low1[3], double up0[3],
+                             double up1[3])
+{
+    double slack = 2 * gamma_double(3);
+    for (int a = 0; a < 3; a++) {
+        low0[a] = up0[a] = -INFINITY;
+        low1[a] = up1[a] = INFINITY;
+        if (q->direction[a] == 0) {
+            if (q->origin[a] < mid[a] - g)
+                up0[a] = INFINITY;
+            else if (q->origin[a] > mid[a] + g)
+                low0[a] = INFINITY;
+            continue;
+        }
+        /* where the ray crosses the lower half's end and the upper half's
+         * start */
+        double t_low = (mid[a] + g - q->origin[a]) * q->inverse[a];
+        double t_up = (mid[a] - g - q->origin[a]) * q->inverse[a];
+        if (t_low != t_low || t_up != t_up)
+            continue;
+        double low_lo = t_low, low_hi = t_low, up_lo = t_up, up_hi = t_up;
+        if (fabs(t_low) < INFINITY) {
+            low_lo -= fabs(t_low) * slack;
+            low_hi += fabs(t_low) * slack;
+        }
+        if (fabs(t_up) < INFINITY) {
+            up_lo -= fabs(t_up) * slack;
+            up_hi += fabs(t_up) * slack;
+        }
+        if (q->direction[a] > 0) {
+            low1[a] = low_hi;
+            up0[a] = up_lo;
+        } else {
+            up1[a] = up_hi;
+            low0[a] = low_lo;
+        }
+    }
+}
+
 /* A node waiting in the walk, with its box and the ray's interval in it. */
 typedef struct pending {
     double lo[3], hi[3];
@@ -550,27 +717,61 @@ typedef struct pending {
 } pending;
 
 /* The walk: the leaves of `t` the ray meets within [t_min, t_max], nearest
- * first.  Call walk_start, then walk_next until it returns -1; a node whose
- * entry is beyond `cutoff` (which may shrink meanwhile) is not entered, and
- * the smallest such entry is kept in skipped. */
+ * first.  Call walk_start, then walk_next until it returns -1.  A node
+ * whose entry is beyond `cutoff` (which may shrink meanwhile) is not
+ * entered, unless slivers are below it (t->slivers): such a node is
+ * walked on, and its leaves come out with slivers_only set - only their
+ * slivers are to be tested.  The smallest entry of a node whose facets
+ * were left out (all of them, or a leaf's ordinary ones) is kept in
+ * skipped. */
 typedef struct walk {
     const octree *t;
     oray q;
+    double grow;            /* the cells' growth for this ray */
     pending stack[OCTREE_STACK];
     int top;
+    int slivers_only;       /* of the leaf walk_next returned */
     double skipped;         /* smallest entry of a node left out */
 } walk;
 
+/*
+ * The growth of the cells a ray must walk (docs/octree.md, steps 1 and 6).
+ * The watertight test in REAL is exact for vertices moved by about
+ * 4 gamma(8) times their distance to the ray's origin, which 16 gamma(8) R
+ * bounds with room (R: the origin's distance to the root's farthest
+ * corner, per axis).  Within the margin's reach (that bound below
+ * reach_margin) the cells need no growth: 0.  Beyond, they are grown by
+ * the whole bound; and when that exceeds OCTREE_FAT_MAX of the root's side
+ * (the ray would walk much of the tree), -1: brute force is cheaper.
+ */
+static double fat_growth(const octree *t, const ray *r)
+{
+    double reach = 0;
+    for (int a = 0; a < 3; a++) {
+        double o = (double)get(r->origin, a);
+        reach = fmax(reach, fmax(fabs(t->lo[a] - o), fabs(t->hi[a] - o)));
+    }
+    double bound = 16 * (double)gamma_bound(8) * reach;
+    if (bound <= t->reach_margin)
+        return 0;
+    return bound <= OCTREE_FAT_MAX * (t->hi[0] - t->lo[0]) ? bound : -1;
+}
+
+/* Starts the walk of ray r with cells grown by g >= 0 (fat_growth()). */
 static void walk_start(walk *w, const octree *t, const ray *r, double t_min,
-                       double t_max)
+                       double t_max, double g)
 {
     w->t = t;
     w->q = oray_make(r);
+    w->grow = g;
     w->top = 0;
+    w->slivers_only = 0;
     w->skipped = INFINITY;
     pending root = {{t->lo[0], t->lo[1], t->lo[2]},
                     {t->hi[0], t->hi[1], t->hi[2]}, t_min, t_max, 0};
-    if (slabs(&w->q, root.lo, root.hi, &root.t0, &root.t1))
+    double lo[3] = {t->lo[0] - g, t->lo[1] - g, t->lo[2] - g};
+    double hi[3] = {t->hi[0] + g, t->hi[1] + g, t->hi[2] + g};
+    if (slabs(&w->q, lo, hi, &root.t0, &root.t1))
         w->stack[w->top++] = root;
 }
 
@@ -580,13 +781,25 @@ static int walk_next(walk *w, double cutoff)
     while (w->top > 0) {
         const pending *p = &w->stack[--w->top];
         if (p->t0 > cutoff) {
-            if (p->t0 < w->skipped)
-                w->skipped = p->t0;
-            continue;
+            if (w->t->slivers == NULL || !w->t->slivers[p->node]) {
+                if (p->t0 < w->skipped)
+                    w->skipped = p->t0;
+                continue;
+            }
+            const onode *marked = &w->t->nodes[p->node];
+            if (marked->count >= 0) {   /* a leaf: its slivers only */
+                if (marked->count > w->t->slivers[p->node] &&
+                    p->t0 < w->skipped)
+                    w->skipped = p->t0;
+                w->slivers_only = 1;
+                return p->node;
+            }
         }
         const onode *n = &w->t->nodes[p->node];
-        if (n->count >= 0)
+        if (n->count >= 0) {
+            w->slivers_only = 0;
             return p->node;
+        }
         double lo[3], hi[3], mid[3], t0 = p->t0, t1 = p->t1;
         for (int a = 0; a < 3; a++) {
             lo[a] = p->lo[a];
@@ -596,7 +809,10 @@ static int walk_next(walk *w, double cutoff)
         /* per axis, the interval of t in the lower half and in the upper
          * half of the node (bit 0 and 1 of the child) */
         double low0[3], low1[3], up0[3], up1[3];
-        split_axes(&w->q, mid, low0, low1, up0, up1);
+        if (w->grow == 0)
+            split_axes(&w->q, mid, low0, low1, up0, up1);
+        else
+            split_axes_grown(&w->q, mid, w->grow, low0, low1, up0, up1);
         double enter[8], leave[8];
         int order[8], m = 0;
         const onode *kids = &w->t->nodes[n->first];
@@ -632,22 +848,6 @@ static int walk_next(walk *w, double cutoff)
         }
     }
     return -1;
-}
-
-/*
- * Non-zero when the ray's origin is so far from the root that the
- * watertight test's rounding (exact for vertices moved by about
- * 4 gamma(8) times their distance to the origin, in REAL) could exceed the
- * margin: such a ray is traced by brute force.
- */
-static int too_far(const octree *t, const ray *r)
-{
-    double reach = 0;
-    for (int a = 0; a < 3; a++) {
-        double o = (double)get(r->origin, a);
-        reach = fmax(reach, fmax(fabs(t->lo[a] - o), fabs(t->hi[a] - o)));
-    }
-    return !(16 * (double)gamma_bound(8) * reach <= t->margin);
 }
 
 /* --- the facets a ray has tested ------------------------------------- */

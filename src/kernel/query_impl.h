@@ -232,12 +232,30 @@ static int fold_near(const KERNEL_T *k, const collector *c, hit *h)
     return best != NULL;
 }
 
+/* The part of leaf `leaf` the walk asks for: all its facets, or when it
+ * lies beyond the stopping point only its slivers (the last ones). */
+static void leaf_part(const octree *tree, const walk *w, int leaf,
+                      int *first, int *count)
+{
+    const onode *node = &tree->nodes[leaf];
+    *first = node->first;
+    *count = node->count;
+    if (w->slivers_only) {
+        *first += node->count - tree->slivers[leaf];
+        *count = tree->slivers[leaf];
+    }
+}
+
 static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
                           const ray *r, REAL t_max, int skip, hit *h,
                           rt_counters *counters)
 {
-    if (too_far(tree, r))
+    double grow = fat_growth(tree, r);
+    if (grow < 0)
         goto brute_force;
+    /* The stopping rule (docs/octree.md, step 5) only for rays within the
+     * margin's reach: a farther one walks every cell to t_max. */
+    int stops = grow == 0;
     collector c;
     c.n = 0;
     c.reach = 0;
@@ -249,18 +267,20 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
             !collect(&c, k, r, t_max, tree->always[j]))
             goto overflow;
     walk w;
-    walk_start(&w, tree, r, 0, (double)t_max);
+    walk_start(&w, tree, r, 0, (double)t_max, grow);
     int leaf;
-    while ((leaf = walk_next(&w, cutoff(c.reach, c.n))) >= 0) {
-        const onode *node = &tree->nodes[leaf];
+    while ((leaf = walk_next(&w, stops ? cutoff(c.reach, c.n) : INFINITY)) >=
+           0) {
+        int first, count;
+        leaf_part(tree, &w, leaf, &first, &count);
         counters->accel_leaves++;
         int batch[BLOCK_LANES], n = 0;
-        for (int j = 0; j < node->count; j++) {
-            int i = tree->refs[node->first + j];
+        for (int j = 0; j < count; j++) {
+            int i = tree->refs[first + j];
             if (i == skip || !tested_add(&seen, i))
                 continue;
             batch[n++] = i;
-            if (n == BLOCK_LANES || j == node->count - 1) {
+            if (n == BLOCK_LANES || j == count - 1) {
                 if (!collect_batch(&c, k, simd, r, t_max, batch, n))
                     goto overflow;
                 n = 0;
@@ -285,12 +305,14 @@ brute_force:
 }
 
 /* any_hit_brute() through the octree: the same answer, as the facets that
- * can block are listed in the leaves the segment meets. */
+ * can block are listed in the leaves the segment meets (walked with the
+ * cells grown for far origins, as nearest_octree() does). */
 static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
                           const ray *r, REAL t_max, int skip,
                           rt_counters *counters)
 {
-    if (too_far(tree, r)) {
+    double grow = fat_growth(tree, r);
+    if (grow < 0) {
         counters->accel_fallbacks++;
         return any_hit_brute(k, simd, r, t_max, skip, &counters->tests,
                              &counters->early_exit_saved);
@@ -309,7 +331,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
     tested seen;
     tested_clear(&seen);
     walk w;
-    walk_start(&w, tree, r, 0, (double)t_max);
+    walk_start(&w, tree, r, 0, (double)t_max, grow);
     int leaf;
     while (!found && (leaf = walk_next(&w, INFINITY)) >= 0) {
         const onode *node = &tree->nodes[leaf];

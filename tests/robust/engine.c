@@ -92,9 +92,9 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
      * (a kernel that has one uses it for nearest_hit and occluded too). */
     if (rb_accel() == RT_ACCEL_OCTREE) {
         if (e->kf != NULL)
-            rt__kernel_f_octree_prepare(e->kf, NULL);
+            rt__kernel_f_octree_prepare(e->kf, NULL, NULL);
         if (e->kd != NULL)
-            rt__kernel_d_octree_prepare(e->kd, NULL);
+            rt__kernel_d_octree_prepare(e->kd, NULL, NULL);
     }
     return e;
 }

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# viewer_xvfb_fifo.sh - rt-view --watch on a real X server (Xvfb), driven by
+# xdotool, when the watched scene is replaced by a FIFO that no one writes:
+# the reload runs on a worker thread (blocked opening the FIFO, or refused
+# at once by the library), so the window still answers; Escape then quits
+# with status 0, and in a second run SIGTERM ends it with 143.  rt-view
+# used to read on its event loop and froze for ever.  The time from the key
+# or the signal to the exit is printed, not asserted (a 20 s bound only
+# stops a frozen rt-view).  Exits 77 (skipped) without Xvfb or xdotool.
+#
+# Environment: RT_VIEW (the rt-view binary), RT_SOURCE_DIR (the sources).
+set -u
+. "$(dirname "$0")/xvfb_session.sh"
+
+# Starts rt-view --watch on a copy of cubes.scn named $1.scn, waits for its
+# finished window, then puts a FIFO in the file's place and waits until
+# rt-view has looked at it (its title says it is loading, or why not).
+start_and_replace() {
+    local name=$1
+    cp "$RT_SOURCE_DIR/scenes/cubes.scn" "$work/$name.scn"
+    "$RT_VIEW" --watch "$work/$name.scn" >"$work/out" 2>"$work/err" &
+    view_pid=$!
+    window=$(timeout 20 xdotool search --sync --name "$name.scn.*done" |
+             head -n 1)
+    [ -n "$window" ] || fail "no finished rt-view window within 20 s"
+    rm "$work/$name.scn"
+    mkfifo "$work/$name.scn"
+    for _ in $(seq 100); do
+        title=$(xdotool getwindowname "$window")
+        case "$title" in
+            *loading*|*"$name.scn:"*) break ;;
+        esac
+        sleep 0.1
+    done
+    echo "title after the FIFO: $title"
+}
+
+# Waits for rt-view to end; prints the milliseconds since $1 (date +%s%N)
+# and leaves its status in $status.
+wait_exit() {
+    local since=$1
+    for _ in $(seq 2000); do
+        kill -0 "$view_pid" 2>/dev/null || break
+        sleep 0.01
+    done
+    kill -0 "$view_pid" 2>/dev/null && fail "rt-view still runs 20 s later"
+    echo "exited $(( ($(date +%s%N) - since) / 1000000 )) ms later"
+    wait "$view_pid"
+    status=$?
+    view_pid=
+}
+
+start_and_replace watched
+# The window answers: N (the normal view of the picture still shown).
+timeout 10 xdotool key --window "$window" n
+for _ in $(seq 100); do
+    xdotool getwindowname "$window" | grep -q 'normal view' && break
+    sleep 0.1
+done
+xdotool getwindowname "$window" | grep -q 'normal view' ||
+    fail "N was not answered after the FIFO: $(xdotool getwindowname "$window")"
+since=$(date +%s%N)
+# The window is gone before the key's release: X's BadWindow is expected.
+timeout 10 xdotool key --window "$window" Escape 2>/dev/null
+wait_exit "$since"
+[ "$status" -eq 0 ] || fail "Escape: rt-view exited $status"
+
+start_and_replace signalled
+since=$(date +%s%N)
+kill -TERM "$view_pid"
+wait_exit "$since"
+[ "$status" -eq 143 ] || fail "SIGTERM: rt-view exited $status, not 143"
+echo "2 passed, 0 failed"
