@@ -784,7 +784,10 @@ static rt_status prepare_job(job *j, const rt_scene *scene,
                                                     error);
         if (status != RT_OK)
             return status;
-        j->kernel.f = rt__scene_kernel_f(scene);
+        j->kernel.f = rt__scene_kernel_f(scene, cancel);
+        if (j->kernel.f == NULL && rt_cancel_requested(cancel))
+            return rt__error_set(error, RT_ERR_CANCELLED, NULL, 0, 0,
+                                 "the render was cancelled");
         if (j->kernel.f == NULL)
             return out_of_memory(error);
     } else {

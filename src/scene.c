@@ -191,13 +191,16 @@ static void add_repeat_warning(rt_notes *notes, const char *name,
 /* Fills the facet records and counts, sorting out the facets no ray can
  * meet (docs/robustness-input.md, "Facets no ray meets"); their warnings go
  * to `notes`. */
-static void add_facets(rt_scene *s, const rt_scene_desc *d,
-                       const char *name, const int *facet_lines,
-                       rt_notes *notes)
+static int add_facets(rt_scene *s, const rt_scene_desc *d,
+                      const char *name, const int *facet_lines,
+                      rt_notes *notes, const rt_cancel *cancel)
 {
     repeats r = {0, 0, 0, 0};
     int previous = -1;      /* the last facet the renderer keeps */
     for (int i = 0; i < d->facet_count; i++) {
+        if (i % RT_LOAD_POLL == RT_LOAD_POLL - 1 &&
+            rt_cancel_requested(cancel))
+            return 0;
         const rt_facet_desc *f = &d->facets[i];
         rt_facet_info *info = &s->facets[i];
         rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
@@ -230,11 +233,13 @@ static void add_facets(rt_scene *s, const rt_scene_desc *d,
         s->transparent_count += f->t > 0.0;
     }
     add_repeat_warning(notes, name, &r);
+    return 1;
 }
 
 rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
                           const int *facet_lines, const rt_notes *notes,
-                          rt_scene **out, rt_error *error)
+                          const rt_cancel *cancel, rt_scene **out,
+                          rt_error *error)
 {
     *out = NULL;
     rt_status status = check_desc(d, error);
@@ -280,7 +285,12 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt_notes warnings;
     memset(&warnings, 0, sizeof warnings);
     rt__notes_append(&warnings, notes);
-    add_facets(s, d, name, facet_lines, &warnings);
+    if (!add_facets(s, d, name, facet_lines, &warnings, cancel)) {
+        rt__notes_free(&warnings);
+        rt_scene_destroy(s);
+        return rt__error_set(error, RT_ERR_CANCELLED, name, 0, 0,
+                             "the load was cancelled");
+    }
     rt__notes_settle(&warnings);
     if (warnings.count > 0 && warnings.count < warnings.capacity) {
         rt_warning *fitted = realloc(warnings.items, (size_t)warnings.count *
@@ -299,9 +309,13 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     }
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
+    source.cancel = cancel;
     s->kernel = rt__kernel_d_create(&source);
     if (s->kernel == NULL) {
         rt_scene_destroy(s);
+        if (rt_cancel_requested(cancel))
+            return rt__error_set(error, RT_ERR_CANCELLED, name, 0, 0,
+                                 "the load was cancelled");
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
     *out = s;
@@ -327,7 +341,7 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
     if (desc == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a scene description");
-    return rt__scene_build(desc, NULL, NULL, NULL, scene, error);
+    return rt__scene_build(desc, NULL, NULL, NULL, NULL, scene, error);
 }
 
 void rt_scene_destroy(rt_scene *scene)
@@ -435,6 +449,7 @@ const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
 
 void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
 {
+    source->cancel = NULL;
     source->vertices = s->vertices;
     source->facets = s->facets;
     source->facet_count = s->facet_count;
@@ -443,7 +458,8 @@ void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
     source->background = s->background;
 }
 
-const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene)
+const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene,
+                                      const rt_cancel *cancel)
 {
     rt_scene *s = (rt_scene *)scene;   /* only the lazy kernel changes */
     rt_kernel_f *k = atomic_load_explicit(&s->kernel_f, memory_order_acquire);
@@ -454,7 +470,8 @@ const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene)
     if (k == NULL) {
         rt_kernel_source source;
         rt__scene_kernel_source(scene, &source);
-        k = rt__kernel_f_create(&source);
+        source.cancel = cancel;
+        k = rt__kernel_f_create(&source);   /* NULL: not stored */
         atomic_store_explicit(&s->kernel_f, k, memory_order_release);
     }
     pthread_mutex_unlock(&s->kernel_lock);

@@ -45,12 +45,14 @@ struct rt_notes;
 /*
  * Builds a scene from a validated description.  `name` (may be NULL) and
  * `facet_lines` (may be NULL) only serve warnings; `notes` (may be NULL)
- * are the reader's own warnings, listed before the builder's.  On failure
- * returns a status with *error filled and *scene NULL.
+ * are the reader's own warnings, listed before the builder's; `cancel`
+ * (may be NULL) is polled (RT_ERR_CANCELLED).  On failure returns a
+ * status with *error filled and *scene NULL.
  */
 rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
                           const int *facet_lines,
-                          const struct rt_notes *notes, rt_scene **scene,
+                          const struct rt_notes *notes,
+                          const rt_cancel *cancel, rt_scene **scene,
                           rt_error *error);
 
 /*
@@ -70,8 +72,11 @@ size_t rt__scene_bytes(const rt_scene *scene);
 void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
 
 /* The scene's float kernel, built on the first call (thread-safe) and kept
- * until the scene is freed; NULL when out of memory. */
-const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene);
+ * until the scene is freed; NULL when out of memory, or when `cancel` (may
+ * be NULL) was raised during that first build (nothing is kept: the next
+ * call builds again). */
+const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene,
+                                      const rt_cancel *cancel);
 
 /* Gives `scene` the files its load read: `sources` (an array of `count`,
  * from malloc, each name from malloc), which the scene frees; a list it

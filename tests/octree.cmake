@@ -15,3 +15,7 @@ raytrace_add_suite(test_octree_hostile INTERNAL
 target_include_directories(raytrace_test_octree_hostile PRIVATE
   "${PROJECT_SOURCE_DIR}/bench")
 set_tests_properties(test_octree_hostile PROPERTIES TIMEOUT 900)
+
+# The builds of a load and a render poll their cancellation flag (the
+# builder, the kernels).
+raytrace_add_suite(test_cancel_builds INTERNAL)

@@ -462,7 +462,7 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
 {
     const int n = 16;
     rt_scene *scene = grid_scene(n);
-    const rt_kernel_f *kf = rt__scene_kernel_f(scene);
+    const rt_kernel_f *kf = rt__scene_kernel_f(scene, NULL);
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
@@ -499,7 +499,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(bench_soup(3000, 8, 8, &scene, &error), RT_OK);
-    const rt_kernel_f *kf = rt__scene_kernel_f(scene);
+    const rt_kernel_f *kf = rt__scene_kernel_f(scene, NULL);
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
@@ -581,7 +581,7 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     ck_assert_double_eq(first.accel_build_seconds,
                         second.accel_build_seconds);
     ck_assert_uint_eq(first.accel_bytes, second.accel_bytes);
-    ck_assert_ptr_eq(rt__scene_kernel_f(scene), rt__scene_kernel_f(scene));
+    ck_assert_ptr_eq(rt__scene_kernel_f(scene, NULL), rt__scene_kernel_f(scene, NULL));
     ck_assert_int_eq(rt_test_image_diff(&a, &b, NULL), 0);
     rt_image_release(&a);
     rt_image_release(&b);

@@ -101,7 +101,7 @@ static rt_status kept_tree(const rt_scene *scene, rt_precision precision,
     rt_cancel_request(raised);
     rt_status status =
         precision == RT_PRECISION_FLOAT
-            ? rt__kernel_f_octree_prepare(rt__scene_kernel_f(scene), raised,
+            ? rt__kernel_f_octree_prepare(rt__scene_kernel_f(scene, NULL), raised,
                                           info)
             : rt__kernel_d_octree_prepare(scene->kernel, raised, info);
     rt_cancel_destroy(raised);

@@ -224,7 +224,9 @@ rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
         desc->more_lights = options->lights + 1;
         desc->more_light_count = options->light_count - 1;
     }
-    return rt__scene_build(desc, name, facet_lines, notes, scene, error);
+    return rt__scene_build(desc, name, facet_lines, notes,
+                           options != NULL ? options->cancel : NULL, scene,
+                           error);
 }
 
 /* The load of `text` with the options taken: `scene_file` (may be NULL)

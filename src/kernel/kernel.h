@@ -45,7 +45,13 @@ typedef struct rt_kernel_source {
     const rt_light *lights; /* light_count >= 1 */
     int light_count;
     rt_rgb8 background;
+    const rt_cancel *cancel;    /* NULL, or a flag the construction polls:
+                                   raised, it stops and returns NULL */
 } rt_kernel_source;
+
+/* Facets a kernel's construction handles between two polls of its
+ * source's cancellation flag. */
+#define RT_KERNEL_POLL 65536
 
 /*
  * A recorder (explain.c) is told every ray a trace casts, in order, with

@@ -138,6 +138,11 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     k->background[1] = s->background.g;
     k->background[2] = s->background.b;
     for (int i = 0; i < s->facet_count; i++) {
+        if (i % RT_KERNEL_POLL == RT_KERNEL_POLL - 1 &&
+            rt_cancel_requested(s->cancel)) {
+            KERNEL(free)(k);
+            return NULL;
+        }
         const rt_facet_info *info = &s->facets[i];
         if (info->degenerate)
             continue;       /* never hit: not even stored */
