@@ -150,7 +150,7 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     uint64_t queries = s->accel_queries ? s->accel_queries : 1;
     fprintf(out,
             "octree: built in %.3f s; %llu leaves, depth %d, %.2f references "
-            "per facet (+%llu slivers in every ray's list), %.1f MB\n"
+            "per facet (+%llu facets in every ray's list), %.1f MB\n"
             "octree per query: %.2f leaves visited, %.2f facets tested "
             "(brute force: %llu); %llu queries left to brute force\n",
             s->accel_build_seconds, (unsigned long long)s->accel_leaves,
