@@ -1,4 +1,4 @@
-# rt-bench's metrics: built when apps/rt-bench.cmake made the
+# rt-bench's metrics: built when tools/rt-bench/CMakeLists.txt made the
 # raytrace_bench library.
 if(TARGET raytrace_bench)
   raytrace_add_suite(test_metrics LIBS raytrace_bench)

@@ -49,7 +49,7 @@ cd "$workdir" && "$program"
     "LD_LIBRARY_PATH=$<TARGET_FILE_DIR:raytrace::in104>:$<TARGET_FILE_DIR:raytrace::raytrace>")
 endif()
 
-# The example program of apps/ renders a scene, and fails on a bad one.
+# The example program of apps/in104-render/ renders a scene, and fails on a bad one.
 if(TARGET raytrace_in104_render)
   add_test(NAME in104_render_example_renders_a_scene
            COMMAND raytrace_in104_render "${PROJECT_SOURCE_DIR}/scenes/one-facet.scn"

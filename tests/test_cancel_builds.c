@@ -14,7 +14,7 @@
 
 #include "formats/reader.h"
 #include "kernel/kernel.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 #include "testutil.h"
 
 /* A grid of 2 n^2 facets, more than RT_KERNEL_POLL and RT_LOAD_POLL so

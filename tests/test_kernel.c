@@ -17,7 +17,7 @@
 
 #include "bench_scenes.h"
 #include "kernel/kernel.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 #include "testutil.h"
 
 /* The size to render at; 0: the scene's. */

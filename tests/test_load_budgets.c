@@ -19,7 +19,7 @@
 #include "formats/tessellate.h"
 #include "load_util.h"
 #include "raytrace/raytrace.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 #include "testutil.h"
 
 #define PI 3.14159265358979323846

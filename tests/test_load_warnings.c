@@ -14,11 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/reader.h"
 #include "load_util.h"
 #include "raytrace/raytrace.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 #include "testutil.h"
 
 static rt_scene *parse_scn(const load_text *t, const char *name)

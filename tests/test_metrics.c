@@ -1,5 +1,5 @@
 /*
- * test_metrics.c - rt-bench's error metrics (apps/bench/metrics.h) on tiny
+ * test_metrics.c - rt-bench's error metrics (tools/rt-bench/metrics.h) on tiny
  * images whose answers are worked out by hand in the comments.
  */
 #include <math.h>

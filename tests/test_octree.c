@@ -22,7 +22,7 @@
 
 #include "bench_scenes.h"
 #include "kernel/kernel.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 #include "testutil.h"
 
 static int memcheck(void) { return getenv("RT_TEST_MEMCHECK") != NULL; }

@@ -1,5 +1,5 @@
 /*
- * test_vec.c - the internal vector maths of src/vecmath.h: the operations
+ * test_vec.c - the internal vector maths of src/base/vecmath.h: the operations
  * every module builds on, including lengths of vectors whose squared
  * components would overflow or underflow a double.
  */
@@ -8,7 +8,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 /* Components equal within an absolute tolerance; tol = 0 means exactly. */
 static void assert_vec_eq(rt_vec3 a, rt_vec3 b, double tol)

@@ -1,6 +1,6 @@
 /*
  * test_viewer_load.c - rt-view's loads off its event loop
- * (apps/viewer/view_load.c and view_app's use of it), on SDL's dummy video
+ * (apps/rt-view/view_load.c and view_app's use of it), on SDL's dummy video
  * driver: a scene is read on a worker thread while the window keeps its
  * picture and answers keys; a new load cancels the one under way; quitting,
  * closing the app and a termination signal never wait for a loader blocked

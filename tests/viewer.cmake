@@ -1,17 +1,17 @@
-# test_viewer: the viewer's session and window (apps/viewer), driven without
+# test_viewer: the viewer's session and window (apps/rt-view), driven without
 # an event loop on SDL's dummy video driver (software rendering, no
 # display), so it runs headless in CI.
-# Only when the viewer is built (RAYTRACE_VIEWER and SDL2, apps/viewer.cmake).
+# Only when the viewer is built (RAYTRACE_VIEWER and SDL2, apps/rt-view/CMakeLists.txt).
 if(TARGET raytrace_viewer)
   # One test compares with the image rt-export writes; one runs rt-view
   # without a display (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
-  raytrace_add_suite(test_viewer SOURCES viewer_testutil.c LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer SOURCES support/viewer_testutil.c LIBS raytrace_viewer)
   set_tests_properties(test_viewer PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
   # S never writes over an input (tests/test_viewer_outputs.c); the
   # material-library case, `test_viewer_outputs_sources`, is a skip (77)
   # until the loader lists the files it read.
-  raytrace_add_suite(test_viewer_outputs SOURCES program_util.c
+  raytrace_add_suite(test_viewer_outputs SOURCES support/program_util.c
     LIBS raytrace_viewer)
   add_test(NAME test_viewer_outputs_sources
            COMMAND raytrace_test_viewer_outputs sources
@@ -22,7 +22,7 @@ if(TARGET raytrace_viewer)
   set_tests_properties(test_viewer_outputs_sources PROPERTIES
     SKIP_RETURN_CODE 77)
   # Loads on a worker thread: live window, cancels, quits that never wait.
-  raytrace_add_suite(test_viewer_load SOURCES viewer_testutil.c
+  raytrace_add_suite(test_viewer_load SOURCES support/viewer_testutil.c
     LIBS raytrace_viewer)
   set_tests_properties(test_viewer_load PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")

@@ -8,8 +8,8 @@
  * reads the scene once and every file it names (an OBJ's material
  * libraries), checks it and the output, and broadcasts all those bytes,
  * from which every rank parses the same scene without reading its own disk
- * (apps/mpi/share.h), and checks that it is rank 0's; then the bands of
- * the image are handed out from rank 0's queue (apps/mpi/farm.h), rendered
+ * (apps/rt-export-mpi/share.h), and checks that it is rank 0's; then the bands of
+ * the image are handed out from rank 0's queue (apps/rt-export-mpi/farm.h), rendered
  * with all the cores of each rank, and received into rank 0's image, which
  * rank 0 saves with the library's safe save once every band has arrived.
  * A bad scene or output (one the scene was read from included): one

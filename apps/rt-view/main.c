@@ -3,7 +3,7 @@
  *
  * This file is the command line (the shared module apps/common/cli, so
  * rt-view takes every render option rt-export takes, with the same limits
- * and words) and the start-up; the rest is in apps/viewer: view_app (the
+ * and words) and the start-up; the rest is in apps/rt-view: view_app (the
  * window, keys, reloads, saves and event loop), view_load (reads a scene
  * on its own thread, so the window never waits for a file), view_session
  * (renders on its own thread and reports finished rows), view_window

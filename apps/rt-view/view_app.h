@@ -1,7 +1,7 @@
 /*
  * view_app.h - rt-view itself, less its command line: the window, the
  * scene it shows, the keys, reloading (R, --watch), saving (S) and the
- * event loop.  apps/rt-view.c parses the options and calls this; the tests
+ * event loop.  apps/rt-view/main.c parses the options and calls this; the tests
  * drive the same functions directly on SDL's dummy driver.
  *
  * The rules it keeps:

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 
 int rt_image_format_supported(rt_image_format format)

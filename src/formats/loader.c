@@ -12,15 +12,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
-#include "file.h"
+#include "base/error.h"
+#include "base/file.h"
 #include "formats/formats.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
-#include "scene_internal.h"
-#include "vecmath.h"
+#include "scene/scene_internal.h"
+#include "base/vecmath.h"
 
 void rt_load_options_init(rt_load_options *options)
 {

@@ -24,12 +24,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 #include "formats/reader.h"
 #include "formats/tessellate.h"
-#include "scene_internal.h"
-#include "vecmath.h"
+#include "scene/scene_internal.h"
+#include "base/vecmath.h"
 
 #define PI 3.14159265358979323846
 #define MAX_NUMBER_LENGTH 256

@@ -13,7 +13,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/reader.h"
 
 int rt__number_syntax(const char *text, size_t length)

@@ -24,10 +24,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "exact.h"
+#include "base/exact.h"
 #include "formats/formats.h"
 #include "formats/obj.h"
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 /* The automatic view (docs/formats.md): from the front (+z), to the right
  * (+x) and above (+y, OBJ's usual up), the horizontal field of view. */

@@ -10,7 +10,7 @@
 #include <locale.h>
 #include <stddef.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/names.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"

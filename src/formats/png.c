@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 
 typedef struct png_sink {

@@ -28,7 +28,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "error.h"
+#include "base/error.h"
 
 #define MAX_LINKS 40        /* links followed in one name (Linux's limit) */
 #define MAX_DEPTH 64        /* folders below the scene's in one name */

@@ -37,7 +37,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 #include "raytrace/image.h"
 

@@ -19,11 +19,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 #include "formats/reader.h"
-#include "scene_internal.h"
-#include "vecmath.h"
+#include "scene/scene_internal.h"
+#include "base/vecmath.h"
 
 #define MAX_VALUES 10       /* the longest record: the screen with a lens */
 #define MAX_NUMBER_LENGTH 256

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/formats.h"
 #include "raytrace/scene.h"
 #include "raytrace/version.h"

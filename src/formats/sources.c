@@ -11,9 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "formats/resolve.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 
 rt_status rt__files_init(rt_files *files, rt_resolve_func resolve,
                          void *user, const char *scene_name,

@@ -29,11 +29,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "exact.h"
+#include "base/exact.h"
 #include "formats/triangulate.h"
 #include "raytrace/render.h"
-#include "scene_internal.h"
-#include "vecmath.h"
+#include "scene/scene_internal.h"
+#include "base/vecmath.h"
 
 /* Facets cut between two polls of the cancellation flag. */
 #define POLL_FACETS 4096

@@ -21,8 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "exact.h"
-#include "vecmath.h"
+#include "base/exact.h"
+#include "base/vecmath.h"
 
 #define PI 3.14159265358979323846
 

@@ -5,7 +5,7 @@
  */
 #include "util.h"
 
-#include "fast_inv_sqrt.h"
+#include "base/fast_inv_sqrt.h"
 
 float fastInvSqrt(float x)
 {

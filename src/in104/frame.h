@@ -15,7 +15,7 @@
 #define IN104_FRAME_H
 
 #include "geometry.h"
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 typedef struct in104_frame {
     rt_vec3 origin;     /* vertex a, in scene coordinates */

@@ -31,7 +31,7 @@
 
 #include "kernel.h"
 
-#include "fast_inv_sqrt.h"
+#include "base/fast_inv_sqrt.h"
 #include "kernel/plane_crossing.h"
 #include "real_impl.h"
 

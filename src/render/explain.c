@@ -13,10 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "raytrace/explain.h"
 #include "render_internal.h"
-#include "scene_internal.h"
+#include "scene/scene_internal.h"
 
 struct rt_trace_recorder {
     const rt_scene *scene;

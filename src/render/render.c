@@ -18,12 +18,12 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "raytrace/render.h"
 #include "kernel/kernel.h"
 #include "render_internal.h"
-#include "scene_internal.h"
-#include "vecmath.h"
+#include "scene/scene_internal.h"
+#include "base/vecmath.h"
 
 /* The kernel of the precision a render asked for. */
 typedef struct kernel_ref {
@@ -298,7 +298,7 @@ static rt_color render_pixel(const job *j, int i, int row,
 /* Rays a span of pixels traces at most (samples are at most 1024), and
  * its pixels at most: wide enough to share the kernel's tile cull among
  * many rays, narrow enough that the cull stays tight (32 was the best of
- * 8 to 128 in instructions per ray, bench/ray-budget.sh). */
+ * 8 to 128 in instructions per ray, tools/bench/ray-budget.sh). */
 #define SPAN_RAYS 1024
 #define SPAN_PIXELS 32
 

@@ -8,9 +8,9 @@
  */
 #include <float.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "scene_internal.h"
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
                             int width, int height, rt_camera *camera)

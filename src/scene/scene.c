@@ -14,12 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "error.h"
-#include "exact.h"
+#include "base/error.h"
+#include "base/exact.h"
 #include "kernel/plane_crossing.h"
 #include "formats/reader.h"
 #include "scene_internal.h"
-#include "vecmath.h"
+#include "base/vecmath.h"
 
 /* Unit normal in the direction of (b - a) x (c - a), accurate for any
  * shape (slivers and needles included); zero for a zero-area facet. */

@@ -5,7 +5,7 @@
 # samples, a balls-like scene, 32 cores a node, P = 1 8 64 512).
 #
 # Inputs, as environment variables (the defaults are what
-# bench/mpi-scaling.sh measured on a 2-core machine, see docs/mpi.md):
+# tools/bench/mpi-scaling.sh measured on a 2-core machine, see docs/mpi.md):
 #   T_ROW   core-seconds for one row at 16 samples (the mean row)
 #   PEAK    the costliest row's time over the mean row's
 #   SETUP   seconds every rank spends on the scene before rendering

@@ -8,7 +8,7 @@
 #      (a 16-row stripe through the middle of the image, and the mean row
 #      of the whole image, scaled from a render on one core), and how much
 #      costlier than the mean row the slowest band's rows were (PEAK).
-# Usage: bench/mpi-scaling.sh [BUILD_DIR [SCENE [WxH]]]
+# Usage: tools/bench/mpi-scaling.sh [BUILD_DIR [SCENE [WxH]]]
 #   defaults: build, ../shared/spd-scenes/balls-s2.scn, 1920x1080.
 # Each time is the best of REPEAT runs (3).  Run it on an idle machine;
 # it takes a few minutes on two cores.  The

@@ -2,16 +2,16 @@
 # povray-times.sh - POV-Ray 3.7's own trace time against rt-export's render
 # time on the same pictures (docs/performance.md, "The octree").
 #
-#   bench/povray-times.sh BUILD_DIR [SCENE.scn ...]
+#   tools/bench/povray-times.sh BUILD_DIR [SCENE.scn ...]
 #
 # Default scenes: ../shared/spd-scenes/*.scn.  Each is converted by
-# bench/scn2pov.py (one mesh of triangles, one light, max_trace_level =
+# tools/bench/scn2pov.py (one mesh of triangles, one light, max_trace_level =
 # depth + 1) and rendered by both at SIZE (default 400x400) with 2 threads;
 # the table gives POV-Ray's "Trace Time" (its start-up and
 # parsing excluded) and rt-export's render time (--stats) with brute force
 # and with the octree, each the median of RUNS (default 3) runs.  Needs
 # povray (apt-get install povray); without it, prints only ours.
-#   SIZE=1920x1080 RUNS=5 bench/povray-times.sh build scenes/cubes.scn
+#   SIZE=1920x1080 RUNS=5 tools/bench/povray-times.sh build scenes/cubes.scn
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:?usage: povray-times.sh BUILD_DIR [SCENE.scn ...]}

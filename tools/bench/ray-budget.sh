@@ -2,7 +2,7 @@
 # ray-budget.sh - instructions per ray by kind, counted by callgrind
 # (docs/performance.md, "Small scenes: the cost of each ray").
 #
-#   bench/ray-budget.sh BUILD_DIR [SCENE.scn ...]
+#   tools/bench/ray-budget.sh BUILD_DIR [SCENE.scn ...]
 #
 # Renders each scene (default scenes/cubes.scn and scenes/mirror.scn) with
 # BUILD_DIR's rt-export on one thread at SIZE (default 480x270, the same

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """scn2pov - a .scn scene as a POV-Ray 3.7 scene, for timing POV-Ray on
-the pictures rt-perf renders (bench/povray-times.sh).
+the pictures rt-perf renders (tools/bench/povray-times.sh).
 
     scn2pov.py SCENE.scn DEPTH [WIDTH HEIGHT] > SCENE.pov
 
@@ -76,7 +76,7 @@ def main():
     c = cross(ao, ab)
     ac = scale(c, (dot(ab, ab) / dot(c, c)) ** 0.5)
     out = sys.stdout
-    out.write("// %s, converted by bench/scn2pov.py\n" % sys.argv[1])
+    out.write("// %s, converted by tools/bench/scn2pov.py\n" % sys.argv[1])
     out.write("#version 3.7;\n")
     out.write("global_settings { assumed_gamma 1.0 max_trace_level %d "
               "ambient_light 0 }\n" % (depth + 1))

@@ -3,7 +3,7 @@
 # side in one run (docs/performance.md, "Small scenes: the cost of each
 # ray").
 #
-#   bench/small-scenes.sh BUILD_DIR [BASELINE_BUILD_DIR]
+#   tools/bench/small-scenes.sh BUILD_DIR [BASELINE_BUILD_DIR]
 #
 # For each of scenes/cubes.scn and scenes/mirror.scn at SIZE (default
 # 1920x1080), depth 5, ROUNDS times (default 5), taking turns: rt-export on

@@ -1,5 +1,5 @@
 /*
- * bench/metrics.c - image error metrics, timing summaries and the Pareto
+ * metrics.c - image error metrics, timing summaries and the Pareto
  * front for rt-bench (see metrics.h).
  */
 #include "metrics.h"

@@ -1,5 +1,5 @@
 /*
- * bench/metrics.h - how far an image is from another, and which of a set
+ * metrics.h - how far an image is from another, and which of a set
  * of (time, error) points are worth having.
  *
  * The error of a test image against a reference image of the same size,

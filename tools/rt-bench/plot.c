@@ -1,5 +1,5 @@
 /*
- * bench/plot.c - the SVG error-against-time plot of rt-bench (see plot.h).
+ * plot.c - the SVG error-against-time plot of rt-bench (see plot.h).
  *
  * Geometry: a 960 x 640 canvas, the plot area on the left, the legend in a
  * column on the right.  Each axis maps log10 of its value linearly onto the

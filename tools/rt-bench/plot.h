@@ -1,5 +1,5 @@
 /*
- * bench/plot.h - an SVG scatter plot of error against time, log-log, with
+ * plot.h - an SVG scatter plot of error against time, log-log, with
  * the Pareto front drawn as a polyline.
  *
  * Written by hand (no plotting library) so that rt-bench has no dependency

@@ -1,5 +1,5 @@
 /*
- * bench/report.c - rt-bench's table, CSV and run-to-run comparison (see
+ * report.c - rt-bench's table, CSV and run-to-run comparison (see
  * report.h).
  */
 #include "report.h"

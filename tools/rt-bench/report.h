@@ -1,5 +1,5 @@
 /*
- * bench/report.h - the rows of rt-bench's report: one measured
+ * report.h - the rows of rt-bench's report: one measured
  * configuration each, printed as a table, written to and read back from a
  * CSV file, and compared with the rows of an earlier run.
  *
