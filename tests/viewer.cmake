@@ -46,5 +46,9 @@ if(TARGET raytrace_rt_view)
     set_tests_properties(viewer_xvfb_fifo PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
       SKIP_RETURN_CODE 77 TIMEOUT 120)
+    # One X server test at a time: each starts its own Xvfb, and two
+    # starting at once under a loaded machine raced for a display.
+    set_tests_properties(viewer_xvfb viewer_xvfb_fifo PROPERTIES
+      RESOURCE_LOCK xvfb)
   endif()
 endif()

@@ -23,7 +23,9 @@ fail() { echo "FAIL: $*"; echo "--- rt-view stdout"; cat "$work/out";
 touch "$work/out" "$work/err"
 
 # A free display: Xvfb writes the number it took to fd 3.
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$work/display" \
+# -noreset: the server stays up when its last client (an rt-view that quit)
+# goes, so the next xdotool or rt-view does not meet a server regenerating.
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp -noreset 3>"$work/display" \
     >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 for _ in $(seq 100); do
