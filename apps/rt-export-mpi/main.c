@@ -168,8 +168,7 @@ static int prepare(cli_settings *s, plan *p)
                         "--format p6 or p3\n", s->output ? s->output : "PNG");
         return EXIT_BAD_INPUT;
     }
-    struct timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
+    double start = cli_clock_seconds();
     if (!read_scene(path, &p->text))
         return EXIT_BAD_INPUT;
     rt_load_options load = s->load;
@@ -180,7 +179,7 @@ static int prepare(cli_settings *s, plan *p)
         fprintf(stderr, "rt-export-mpi: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
-    p->load_seconds = cli_seconds_since(&start);
+    p->load_seconds = cli_seconds_since(start);
     rt_scene_info info;
     rt_scene_get_info(p->scene, &info);
     for (int i = 0; i < info.warning_count; i++)
@@ -344,12 +343,11 @@ static int render_and_save(const farm_job *job, cli_settings *s,
     cli_progress progress;
     cli_progress_start(&progress, stderr, isatty(STDERR_FILENO), p->text.name,
                        report.height, report.width, s->render.samples);
-    struct timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
+    double start = cli_clock_seconds();
     rt_status status = farm_serve(job, MPI_COMM_WORLD, &image,
                                   progress_on ? count_rows : NULL, &progress,
                                   reports);
-    double seconds = cli_seconds_since(&start);
+    double seconds = cli_seconds_since(start);
     cli_progress_end(&progress);
     if (status != RT_OK) {
         fprintf(stderr, "rt-export-mpi: %s: rendering failed: %s\n",
@@ -362,8 +360,7 @@ static int render_and_save(const farm_job *job, cli_settings *s,
     for (int rank = 0; rank < ranks; rank++)
         farm_stats_add(&stats, &reports[rank].stats);
     stats.seconds = seconds;
-    struct timespec write_start;
-    clock_gettime(CLOCK_MONOTONIC, &write_start);
+    double write_start = cli_clock_seconds();
     rt_error error;
     /* hours of work may be in the image: a save that fails keeps it under
      * another name (a signal, the user's wish to stop, keeps nothing) */
@@ -377,7 +374,7 @@ static int render_and_save(const farm_job *job, cli_settings *s,
         if (status != RT_ERR_INTERRUPTED)
             cli_keep_image("rt-export-mpi", p->output, &image, s->format);
     } else {
-        report.write_seconds = cli_seconds_since(&write_start);
+        report.write_seconds = cli_seconds_since(write_start);
         if (s->stats != CLI_STATS_NONE)
             print_ranks(job, reports, ranks);
         if (s->stats == CLI_STATS_TEXT)

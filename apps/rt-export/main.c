@@ -433,11 +433,10 @@ static int render_and_write(const rt_scene *scene, cli_settings *s,
                 error.message);
         goto done;
     }
-    struct timespec write_start;
-    clock_gettime(CLOCK_MONOTONIC, &write_start);
+    double write_start = cli_clock_seconds();
     if (write_image(scene, s, path, to_stdout, &image) != RT_OK)
         goto done;
-    report->write_seconds = cli_seconds_since(&write_start);
+    report->write_seconds = cli_seconds_since(write_start);
     if (s->stats == CLI_STATS_TEXT)
         cli_print_stats_text(stderr, &stats, report);
     else if (s->stats == CLI_STATS_JSON)
@@ -503,8 +502,7 @@ int main(int argc, char **argv)
 
     rt_scene *scene;
     rt_error error;
-    struct timespec load_start;
-    clock_gettime(CLOCK_MONOTONIC, &load_start);
+    double load_start = cli_clock_seconds();
     rt_status loaded = from_stdin
                            ? load_standard_input(&s.load, &scene, &error)
                            : rt_scene_load_with(scene_path, &s.load, &scene,
@@ -516,7 +514,7 @@ int main(int argc, char **argv)
     cli_render_report report = {
         .program = "rt-export", .scene = from_stdin ? "<stdin>" : scene_path,
         .format = s.format, .settings = &s,
-        .load_seconds = cli_seconds_since(&load_start)};
+        .load_seconds = cli_seconds_since(load_start)};
     if (check_only) {
         print_check(report.scene, scene);
         rt_scene_destroy(scene);

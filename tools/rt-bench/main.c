@@ -23,11 +23,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "raytrace/raytrace.h"
 #include "cli.h"
+#include "cli_clock.h"
 #include "metrics.h"
 #include "output_file.h"
 #include "plot.h"
@@ -145,13 +145,6 @@ static int parse_arguments(int argc, char **argv, arguments *a)
     return CLI_CONTINUE;
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /* Renders with the options the user gave (size, lens, threads) and the
  * knobs `s`; *seconds is the wall-clock time of the call. */
 static rt_status render(const rt_scene *scene, const settings *s,
@@ -164,9 +157,9 @@ static rt_status render(const rt_scene *scene, const settings *s,
     options.samples = s->grid * s->grid;
     options.sampling = s->sampling;
     options.max_depth = s->depth;
-    double start = now_seconds();
+    double start = cli_clock_seconds();
     rt_status status = rt_render(scene, &options, image, error);
-    *seconds = now_seconds() - start;
+    *seconds = cli_seconds_since(start);
     return status;
 }
 
