@@ -30,7 +30,8 @@ static double scale = 1.0;      /* --scale */
 static int watch;               /* --watch */
 
 static const cli_option view_options[] = {
-    {"scale", 0, "F", CLI_NUMBER, VIEW_MIN_SCALE, VIEW_MAX_SCALE, &scale,
+    {"scale", 0, "F", CLI_NUMBER_CLOSED, VIEW_MIN_SCALE, VIEW_MAX_SCALE,
+     &scale,
      "render at F times the scene's size in pixels (0.01..64): 0.5 for a "
      "quick preview, 2 for detail; the same picture with more or fewer "
      "pixels (a shorthand for --size; not with it)"},
