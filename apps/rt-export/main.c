@@ -157,136 +157,6 @@ static void print_check(const char *path, const rt_scene *scene)
         printf("  %s\n", rt_scene_warning(scene, i)->message);
 }
 
-static void print_vec(const char *label, rt_vec3 v)
-{
-    printf("%s(%.6g, %.6g, %.6g)", label, v.x, v.y, v.z);
-}
-
-static void print_color(const char *label, rt_color c)
-{
-    printf("%s%.6g %.6g %.6g", label, c.r, c.g, c.b);
-}
-
-/* Ray i and the rays that come from it, indented by their depth. */
-static void print_ray(const rt_ray_node *n, size_t count, size_t i,
-                      int indent)
-{
-    const rt_ray_node *r = &n[i];
-    printf("%*s", 2 * indent, "");
-    if (r->kind == RT_RAY_SHADOW) {
-        printf("shadow ray to light %d: N.S %.6g, ", r->light, r->n_dot_s);
-        if (!r->cast)
-            printf("not cast (%s), term 0\n",
-                   r->d == 0 && r->n_dot_s > 0 ? "d = 0" : "N.S <= 0");
-        else if (r->e > 0)
-            print_color("E 1 (lit): E (N.S) d C_S C_F / 255 x weight = ",
-                        r->own), printf("\n");
-        else if (r->blocker >= 0)
-            printf("E 0, shadowed by facet %d (line %d), term 0\n",
-                   r->blocker, r->blocker_line);
-        else
-            printf("E 0 (shadowed), term 0\n");
-        return;
-    }
-    printf("%s ray", cli_explain_ray_name(n, count, i));
-    if (r->kind != RT_RAY_CAMERA)
-        printf(" (weight %.6g)", r->weight);
-    print_vec(" from ", r->origin);
-    print_vec(" direction ", r->direction);
-    printf("\n%*s", 2 * indent + 2, "");
-    if (!r->hit) {
-        print_color("hits nothing: background x weight = ", r->own);
-        printf("\n");
-        return;
-    }
-    printf("hits facet %d (line %d) at t %.6g", r->facet, r->line, r->t);
-    print_vec(", point ", r->point);
-    print_vec(", normal as used ", r->normal);
-    printf("; k %.6g, t %.6g, d %.6g\n", r->k, r->transmission, r->d);
-    for (size_t c = i + 1; c < count; c++)
-        if (n[c].parent == (int)i)
-            print_ray(n, count, c, indent + 1);
-    rt_color direct, reflected, refracted;
-    int total = cli_explain_terms(n, count, i, &direct, &reflected,
-                                  &refracted);
-    printf("%*s", 2 * indent + 2, "");
-    print_color("terms: direct light ", direct);
-    print_color(" + reflection k C_R ", reflected);
-    print_color(" + refraction t C_T ", refracted);
-    print_color(" = ", r->subtotal);
-    printf("%s\n", total ? " (total internal reflection: C_T is the colour "
-                           "of the mirror ray, which carries k C_R + t C_T)"
-                         : "");
-}
-
-static const char *const kind_names[] = {"camera", "shadow", "reflected",
-                                         "refracted"};
-
-static void print_json_vec(const char *name, rt_vec3 v)
-{
-    printf(",\"%s\":[%.17g,%.17g,%.17g]", name, v.x, v.y, v.z);
-}
-
-static void print_json_color(const char *name, rt_color c)
-{
-    printf(",\"%s\":[%.17g,%.17g,%.17g]", name, c.r, c.g, c.b);
-}
-
-/* The tree as one JSON object on one line. */
-static void print_json(const char *scene, int x, int y,
-                       const rt_ray_tree *tree)
-{
-    size_t count;
-    const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
-    rt_color v = rt_ray_tree_value(tree);
-    printf("{\"scene\":");
-    cli_json_string(stdout, scene);
-    printf(",\"x\":%d,\"y\":%d", x, y);
-    print_json_color("value", v);
-    printf(",\"bytes\":[%d,%d,%d],\"truncated\":%zu,\"rays\":[",
-           rt_channel_to_byte(v.r), rt_channel_to_byte(v.g),
-           rt_channel_to_byte(v.b), rt_ray_tree_truncated(tree));
-    for (size_t i = 0; i < count; i++) {
-        const rt_ray_node *r = &n[i];
-        printf("%s{\"kind\":\"%s\",\"parent\":%d,\"depth\":%d,"
-               "\"sample\":%d,\"weight\":%.17g", i ? "," : "",
-               kind_names[r->kind], r->parent, r->depth, r->sample,
-               r->weight);
-        print_json_vec("origin", r->origin);
-        print_json_vec("direction", r->direction);
-        if (r->kind == RT_RAY_SHADOW)
-            printf(",\"light\":%d,\"n_dot_s\":%.17g,\"cast\":%d,"
-                   "\"e\":%g,\"blocker\":%d,\"blocker_line\":%d",
-                   r->light, r->n_dot_s, r->cast, r->e, r->blocker,
-                   r->blocker_line);
-        else {
-            printf(",\"hit\":%d", r->hit);
-            if (r->kind == RT_RAY_REFLECTED)
-                printf(",\"total_internal_reflection\":%s",
-                       cli_explain_total_reflection(n, count, i) ? "true"
-                                                                 : "false");
-            if (r->hit) {
-                printf(",\"facet\":%d,\"line\":%d,\"t\":%.17g", r->facet,
-                       r->line, r->t);
-                print_json_vec("point", r->point);
-                print_json_vec("normal", r->normal);
-                printf(",\"k\":%.17g,\"transmission\":%.17g,\"d\":%.17g",
-                       r->k, r->transmission, r->d);
-                rt_color direct, reflected, refracted;
-                cli_explain_terms(n, count, i, &direct, &reflected,
-                                  &refracted);
-                print_json_color("direct", direct);
-                print_json_color("reflection", reflected);
-                print_json_color("refraction", refracted);
-            }
-        }
-        print_json_color("own", r->own);
-        print_json_color("subtotal", r->subtotal);
-        printf("}");
-    }
-    printf("]}\n");
-}
-
 /* --explain X,Y: the ray tree of that pixel, as text or JSON.  Returns an
  * exit status. */
 static int explain(const rt_scene *scene, const cli_settings *s,
@@ -300,31 +170,12 @@ static int explain(const rt_scene *scene, const cli_settings *s,
                 error.message);
         return EXIT_BAD_INPUT;
     }
-    if (s->explain_json) {
-        print_json(scene_name, s->explain_x, s->explain_y, tree);
-        rt_ray_tree_destroy(tree);
-        return EXIT_SUCCESS;
-    }
-    size_t count;
-    const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
-    char shown[1024];
-    printf("pixel %d,%d of %s: C = sum over lights of E (N.S) d C_S C_F / "
-           "255 + k C_R + t C_T\n", s->explain_x, s->explain_y,
-           cli_printable(scene_name, shown, sizeof shown));
-    for (size_t i = 0; i < count; i++)
-        if (n[i].parent < 0) {
-            if (s->render.samples > 1)
-                printf("sample %d:\n", n[i].sample);
-            print_ray(n, count, i, 1);
-        }
-    if (rt_ray_tree_truncated(tree) > 0)
-        printf("  (%zu rays left out: the tree is too large to show)\n",
-               rt_ray_tree_truncated(tree));
-    rt_color v = rt_ray_tree_value(tree);
-    printf("pixel value %.17g %.17g %.17g%s -> bytes %d %d %d\n", v.r, v.g,
-           v.b, s->render.samples > 1 ? " (the mean of the samples)" : "",
-           rt_channel_to_byte(v.r), rt_channel_to_byte(v.g),
-           rt_channel_to_byte(v.b));
+    if (s->explain_json)
+        cli_explain_print_json(stdout, tree, scene_name, s->explain_x,
+                               s->explain_y);
+    else
+        cli_explain_print_text(stdout, tree, scene_name, s->explain_x,
+                               s->explain_y, s->render.samples);
     rt_ray_tree_destroy(tree);
     return EXIT_SUCCESS;
 }

@@ -578,9 +578,8 @@ int view_app_explain(view_app *app, int x, int y)
     view_explanation explanation;
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status status = view_explain_pixel(scene, &options,
-                                          base_name(app->shown_path), x, y,
-                                          &explanation, &error);
+    rt_status status = view_explain_pixel(scene, &options, app->shown_path,
+                                          x, y, &explanation, &error);
     if (status != RT_OK) {
         char message[sizeof app->message];
         snprintf(message, sizeof message, "cannot explain pixel (%d, %d): %s",
