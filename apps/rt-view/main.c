@@ -4,11 +4,13 @@
  * This file is the command line (the shared module apps/common/cli, so
  * rt-view takes every render option rt-export takes, with the same limits
  * and words) and the start-up; the rest is in apps/rt-view: view_app (the
- * window, keys, reloads, saves and event loop), view_load (reads a scene
- * on its own thread, so the window never waits for a file), view_session
- * (renders on its own thread and reports finished rows), view_window
- * (uploads those rows and draws) and view_scene (loads, watches and names
- * files).
+ * app and its event loop), view_reload (opening, R and --watch),
+ * view_save (S), view_navigation (keys, clicks, debug views), view_load
+ * (reads a scene on its own thread, so the window never waits for a file),
+ * view_session (renders on its own thread and reports finished rows),
+ * view_window (uploads those rows and draws), view_overlay (the click's
+ * rays projected), view_explain (a pixel's tree as segments and text) and
+ * view_scene (loads, watches and names files).
  */
 #include <pthread.h>
 #include <signal.h>

@@ -34,8 +34,9 @@ typedef struct view_explanation {
 /*
  * Explains pixel (x, y) of the image rendered with `options` (x, y in that
  * image: a region's own coordinates), `name` the scene as the text names
- * it (rt-export's operand: the path as given).  RT_OK with *out filled (release it), else the library's status
- * and reason in *error (which may be NULL), *out empty.
+ * it (rt-export's operand: the path as given).  RT_OK with *out filled
+ * (release it), else the library's status and reason in *error (which may
+ * be NULL), *out empty.
  */
 rt_status view_explain_pixel(const rt_scene *scene,
                              const rt_render_options *options,
