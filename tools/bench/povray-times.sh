@@ -18,7 +18,7 @@ build=${1:?usage: povray-times.sh BUILD_DIR [SCENE.scn ...]}
 shift
 scenes=("$@")
 if [ ${#scenes[@]} -eq 0 ]; then
-    scenes=("$here"/../../shared/spd-scenes/*.scn)
+    scenes=("$here"/../../../shared/spd-scenes/*.scn)
 fi
 runs=${RUNS:-3}
 size=${SIZE:-400x400}
