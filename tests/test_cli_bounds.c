@@ -67,7 +67,7 @@ static const cli_option own[] = {
     {"closed", 0, "F", CLI_NUMBER_CLOSED, 1, 8, &closed_value,
      "a factor in 1..8"},
     {"open", 0, "F", CLI_NUMBER, 1, 8, &open_value, "a factor below 8"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 static const cli_program program = {

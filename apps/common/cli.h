@@ -93,7 +93,7 @@ typedef enum cli_kind {
 } cli_kind;
 
 /* A program's own option.  A table of them ends with an entry whose
- * `name` is NULL. */
+ * `name` is NULL: CLI_OPTIONS_END. */
 typedef struct cli_option {
     const char *name;       /* long name without "--", e.g. "runs" */
     int short_name;         /* a letter, or 0 for none */
@@ -105,6 +105,9 @@ typedef struct cli_option {
     void *target;           /* where the value goes (see cli_kind) */
     const char *help;       /* one text, wrapped by cli_print_help */
 } cli_option;
+
+/* The entry that ends a table of a program's own options. */
+#define CLI_OPTIONS_END {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL}
 
 /* A program: how it is described and what it accepts. */
 typedef struct cli_program {

@@ -47,7 +47,7 @@ static const cli_option mpi_options[] = {
     {"band-rows", 0, "N", CLI_INT, 0, RT_MAX_IMAGE_SIDE, &band_rows_option,
      "rows of the image in each band handed out to a rank; 0 (the "
      "default): about 32 bands a rank, at most 32 rows each"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 static const cli_program program = {

@@ -28,7 +28,7 @@ static int check_only; /* --check */
 static const cli_option export_options[] = {
     {"check", 0, NULL, CLI_FLAG, 0, 0, &check_only,
      "validate the scene and print what it holds; do not render"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 static const cli_program program = {

@@ -40,7 +40,7 @@ static const cli_option view_options[] = {
     {"watch", 0, NULL, CLI_FLAG, 0, 0, &watch,
      "reload and render the scene whenever its file changes (looked at "
      "every 250 ms)"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 #ifdef RAYTRACE_VIEWER_TTF
@@ -125,16 +125,11 @@ static int run_viewer(const view_app_options *options, const char *scene)
     int started = SDL_Init(0) == 0;
     if (!started)
         snprintf(message, sizeof message, "%s", SDL_GetError());
-    if (!started || !view_video_init(message, sizeof message)) {
-        fprintf(stderr,
-                PROGRAM ": cannot open a window: %s; rt-export renders "
-                        "without a display\n",
-                message);
-        SDL_Quit();
-        return 1;
+    view_app *app = NULL;
+    if (started && view_video_init(message, sizeof message)) {
+        SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
+        app = view_app_create(options, message, sizeof message);
     }
-    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
-    view_app *app = view_app_create(options, message, sizeof message);
     if (app == NULL) {
         fprintf(stderr,
                 PROGRAM ": cannot open a window: %s; rt-export renders "

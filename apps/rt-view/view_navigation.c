@@ -196,8 +196,30 @@ static void toggle_help(view_app *app)
     update_overlay(app);
 }
 
+/* The keys that show a debug view (0: the picture); the light views
+ * (L, I) step through the lights when pressed again. */
+static const struct {
+    int key;
+    int view;
+    int per_light;
+} view_keys[] = {
+    {SDLK_n, RT_VIEW_NORMAL, 0}, {SDLK_d, RT_VIEW_DEPTH, 0},
+    {SDLK_f, RT_VIEW_FACET, 0},  {SDLK_b, RT_VIEW_BOUNCES, 0},
+    {SDLK_l, RT_VIEW_SHADOW, 1}, {SDLK_i, RT_VIEW_NS, 1},
+    {SDLK_v, 0, 0},              {SDLK_0, 0, 0},
+    {SDLK_KP_0, 0, 0},
+};
+
 void view_app_key(view_app *app, int key, int repeat)
 {
+    for (size_t i = 0; i < sizeof view_keys / sizeof *view_keys; i++)
+        if (view_keys[i].key == key) {
+            if (view_keys[i].per_light)
+                cycle_light_view(app, view_keys[i].view);
+            else
+                view_app_set_view(app, view_keys[i].view, 0);
+            return;
+        }
     char path[4096];
     switch (key) {
     case SDLK_ESCAPE:
@@ -208,29 +230,6 @@ void view_app_key(view_app *app, int key, int repeat)
         break;
     case SDLK_q:
         app->quit = 1;
-        break;
-    case SDLK_n:
-        view_app_set_view(app, RT_VIEW_NORMAL, 0);
-        break;
-    case SDLK_d:
-        view_app_set_view(app, RT_VIEW_DEPTH, 0);
-        break;
-    case SDLK_f:
-        view_app_set_view(app, RT_VIEW_FACET, 0);
-        break;
-    case SDLK_b:
-        view_app_set_view(app, RT_VIEW_BOUNCES, 0);
-        break;
-    case SDLK_l:
-        cycle_light_view(app, RT_VIEW_SHADOW);
-        break;
-    case SDLK_i:
-        cycle_light_view(app, RT_VIEW_NS);
-        break;
-    case SDLK_v:
-    case SDLK_0:
-    case SDLK_KP_0:
-        view_app_set_view(app, 0, 0);
         break;
     case SDLK_h:
     case SDLK_F1:

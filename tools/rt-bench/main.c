@@ -97,7 +97,7 @@ static int parse_arguments(int argc, char **argv, arguments *a)
          "pixel on regular and stratified grids (they sample the lens too) "
          "against a reference of 1024 (--ref-samples); writes "
          "DIR/accuracy-dof-NAME-WxH.{csv,svg}"},
-        {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+        CLI_OPTIONS_END,
     };
     const cli_program program = {
         "rt-bench", "SCENE", description, epilogue,
