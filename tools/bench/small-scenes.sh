@@ -22,13 +22,7 @@ build=${1:?usage: small-scenes.sh BUILD_DIR [BASELINE_BUILD_DIR]}
 base=${2:-}
 rounds=${ROUNDS:-5}
 size=${SIZE:-1920x1080}
-width=${size%x*}
-height=${size#*x}
-depth=5
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$here/setup.sh"
 
 # The clock: a dependent chain of additions, timed in CPU seconds.
 cat >"$work/clock.c" <<'EOF'
