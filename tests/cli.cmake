@@ -33,3 +33,8 @@ add_test(NAME test_cli_outputs_sources
          WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
 set_tests_properties(test_cli_outputs_sources PROPERTIES
                      SKIP_RETURN_CODE 77 TIMEOUT 120)
+# The ends of a real option's interval, and rt-view's --scale 64
+# (tests/test_cli_bounds.c).
+raytrace_add_suite(test_cli_bounds SOURCES support/program_util.c
+  LIBS raytrace_cli)
+set_tests_properties(test_cli_bounds PROPERTIES TIMEOUT 120)

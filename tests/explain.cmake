@@ -17,3 +17,12 @@ else()
     RT_TEST_HAVE_VIEWER=0)
 endif()
 set_tests_properties(test_explain_terms PROPERTIES TIMEOUT 120)
+# One formatter: rt-view's text for a clicked pixel is rt-export
+# --explain's, byte for byte (tests/test_explain_same.c; SDL's dummy
+# driver for the click).
+if(TARGET raytrace_viewer)
+  raytrace_add_suite(test_explain_same SOURCES support/program_util.c
+    LIBS raytrace_viewer)
+  set_tests_properties(test_explain_same PROPERTIES TIMEOUT 120
+    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+endif()

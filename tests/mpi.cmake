@@ -40,3 +40,18 @@ foreach(case IN LISTS RT_MPI_TESTS)
   set_tests_properties(mpi_${case} PROPERTIES LABELS mpi
     SKIP_RETURN_CODE 77 TIMEOUT 120)
 endforeach()
+
+# One export pipeline: rt-export-mpi refuses what rt-export refuses, in
+# the same words (tests/mpi/test_mpi_same.sh).
+if(TARGET raytrace_rt_export_mpi AND MPIEXEC_EXECUTABLE AND BASH_PROGRAM)
+  add_test(NAME mpi_same_words
+    COMMAND "${BASH_PROGRAM}"
+            "${CMAKE_CURRENT_SOURCE_DIR}/mpi/test_mpi_same.sh")
+  set_tests_properties(mpi_same_words PROPERTIES ENVIRONMENT
+    "RT_EXPORT=$<TARGET_FILE:${RT_MPI_EXPORT}>;RT_EXPORT_MPI=$<TARGET_FILE:raytrace_rt_export_mpi>;MPIEXEC=${MPIEXEC_EXECUTABLE};RT_SOURCE_DIR=${PROJECT_SOURCE_DIR};ASAN_OPTIONS=detect_leaks=0:abort_on_error=0")
+else()
+  add_test(NAME mpi_same_words COMMAND sh -c
+    "echo 'skipped: rt-export-mpi not built (RAYTRACE_MPI, MPI not found)'; exit 77")
+endif()
+set_tests_properties(mpi_same_words PROPERTIES LABELS mpi
+  SKIP_RETURN_CODE 77 TIMEOUT 120)

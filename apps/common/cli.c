@@ -32,7 +32,7 @@ typedef enum value_kind {
     V_FLAG,         /* int = 1 */
     V_INT,          /* int in [min, max] */
     V_SQUARE,       /* square int in [min, max] */
-    V_NUMBER,       /* double in the interval min..max (see open_min) */
+    V_NUMBER,       /* double in the interval min..max (see bounds) */
     V_CHOICE,       /* int = values[i] for the i-th name of `choices` */
     V_STRING,       /* const char * */
     V_POINT,        /* rt_vec3 */
@@ -52,7 +52,8 @@ typedef struct spec {
     int optional;           /* 1: `--name` or `--name=VALUE` */
     value_kind kind;
     double min, max;
-    int open_min;           /* V_NUMBER: min itself is refused */
+    unsigned bounds;        /* V_NUMBER: CLI_BOUND_... (cli_values.h),
+                               which ends are in the interval */
     const char *choices;    /* V_CHOICE: "a|b|c" */
     int values[4];          /* V_CHOICE: the value of each choice */
     size_t offset;          /* into cli_settings, or NO_OFFSET */
@@ -94,7 +95,8 @@ static const spec table[] = {
      "lens radius >= 0 in scene units for depth of field (default: the "
      "scene's, else 0: a pinhole camera); smooth only with several "
      "samples per pixel"},
-    {CLI_GROUP_LENS, "focus", 0, "F", 0, V_NUMBER, 0, INF, 1, NULL, {0},
+    {CLI_GROUP_LENS, "focus", 0, "F", 0, V_NUMBER, 0, INF,
+     CLI_BOUND_OPEN_MIN, NULL, {0},
      AT(render.focal_distance), NO_OFFSET, NULL,
      "the distance in focus > 0, in scene units along the view axis "
      "(default: the scene's, else |AO|)"},
@@ -131,7 +133,8 @@ static const spec table[] = {
      {RT_SCENE_FORMAT_SCN, RT_SCENE_FORMAT_NFF, RT_SCENE_FORMAT_OBJ},
      AT(load.format), NO_OFFSET, NULL,
      "read the scene as scn, nff or obj, whatever its extension says"},
-    {CLI_GROUP_INPUT, "tessellate", 0, "T", 0, V_NUMBER, 0, 1, 1, NULL, {0},
+    {CLI_GROUP_INPUT, "tessellate", 0, "T", 0, V_NUMBER, 0, 1,
+     CLI_BOUND_OPEN_MIN, NULL, {0},
      AT(load.tessellation), NO_OFFSET, NULL,
      "NFF spheres and cones: the largest distance between the surface and "
      "its facets, relative to the radius; more than 0, less than 1"},
@@ -146,7 +149,8 @@ static const spec table[] = {
      "the point the screen is centred on"},
     {CLI_GROUP_CAMERA, "up", 0, "X,Y,Z", 0, V_POINT, 0, INF, 0, NULL, {0},
      AT(load.up), AT(load.up_given), NULL, "up in the image"},
-    {CLI_GROUP_CAMERA, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180, 1, NULL, {0},
+    {CLI_GROUP_CAMERA, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180,
+     CLI_BOUND_OPEN_MIN, NULL, {0},
      AT(load.fov), AT(load.fov_given), NULL,
      "the horizontal field of view in degrees; more than 0, less than "
      "180"},
@@ -359,7 +363,7 @@ static int store(const cli_program *program, const spec *s,
                                 (int *)target, &problem);
         break;
     case V_NUMBER:
-        read = cli_read_real(value, s->min, s->max, s->open_min,
+        read = cli_read_real(value, s->min, s->max, s->bounds,
                              (double *)target, &problem);
         break;
     case V_CHOICE:
@@ -422,11 +426,13 @@ static int collect(const cli_program *program, cli_settings *settings,
     }
     for (const cli_option *o = program->extra; o && o->name; o++) {
         static const value_kind kinds[] = {V_FLAG, V_INT, V_SQUARE, V_NUMBER,
-                                           V_STRING};
+                                           V_STRING, V_NUMBER};
         if (count == MAX_SPECS)
             break;
+        unsigned bounds = o->kind == CLI_NUMBER_CLOSED ? CLI_BOUND_CLOSED_MAX
+                                                       : 0;
         specs[count++] = (spec){0, o->name, o->short_name, o->argument, 0,
-                                kinds[o->kind], o->min, o->max, 0, NULL,
+                                kinds[o->kind], o->min, o->max, bounds, NULL,
                                 {0}, NO_OFFSET, NO_OFFSET, o->target,
                                 o->help};
     }

@@ -83,23 +83,31 @@ typedef enum cli_kind {
     CLI_FLAG,           /* no argument; *(int *)target = 1 */
     CLI_INT,            /* an integer in min..max into *(int *)target */
     CLI_SQUARE,         /* a square integer (1, 4, 9, ...) in min..max */
-    CLI_NUMBER,         /* a finite number in [min, max] into *(double *) */
-    CLI_STRING          /* any text; *(const char **)target = the argv
+    CLI_NUMBER,         /* a finite number in [min, max) into *(double *)
+                           (max itself allowed when it is infinite: no
+                           upper limit) */
+    CLI_STRING,         /* any text; *(const char **)target = the argv
                            string (not copied) */
+    CLI_NUMBER_CLOSED   /* a finite number in [min, max], max included,
+                           into *(double *) */
 } cli_kind;
 
 /* A program's own option.  A table of them ends with an entry whose
- * `name` is NULL. */
+ * `name` is NULL: CLI_OPTIONS_END. */
 typedef struct cli_option {
     const char *name;       /* long name without "--", e.g. "runs" */
     int short_name;         /* a letter, or 0 for none */
     const char *argument;   /* its name in the help, e.g. "N"; NULL for a
                                CLI_FLAG */
     cli_kind kind;
-    double min, max;        /* limits of CLI_INT, CLI_SQUARE, CLI_NUMBER */
+    double min, max;        /* limits of CLI_INT, CLI_SQUARE, CLI_NUMBER,
+                               CLI_NUMBER_CLOSED */
     void *target;           /* where the value goes (see cli_kind) */
     const char *help;       /* one text, wrapped by cli_print_help */
 } cli_option;
+
+/* The entry that ends a table of a program's own options. */
+#define CLI_OPTIONS_END {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL}
 
 /* A program: how it is described and what it accepts. */
 typedef struct cli_program {

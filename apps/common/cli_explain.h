@@ -1,8 +1,10 @@
 /*
- * cli_explain.h - reading a pixel's ray tree (raytrace/explain.h) as the
- * rendering model writes its formula, shared by rt-export's --explain and
- * rt-view's click so that both name a ray and split a hit's colour into
- * its terms the same way.
+ * cli_explain.h - a pixel's ray tree (raytrace/explain.h) read as the
+ * rendering model writes its formula: the one formatter of rt-export's
+ * --explain (text or JSON) and rt-view's click (the same text, on standard
+ * output and in the window), so that both name a ray, split a hit's colour
+ * into its terms and word every line the same way (docs/teaching.md reads
+ * the text line by line; docs/command-line.md lists the JSON's fields).
  *
  * The one case where a ray's kind is not its term: a total internal
  * reflection.  The model (docs/rendering-model.md) says that when the
@@ -15,6 +17,7 @@
 #define RAYTRACE_CLI_EXPLAIN_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "raytrace/raytrace.h"
 
@@ -38,5 +41,23 @@ const char *cli_explain_ray_name(const rt_ray_node *nodes, size_t count,
 int cli_explain_terms(const rt_ray_node *nodes, size_t count, size_t i,
                       rt_color *direct, rt_color *reflection,
                       rt_color *refraction);
+
+/*
+ * The explanation of `tree`, the tree of pixel (x, y) of the image a
+ * render with `samples` rays a pixel writes (x, y in that image: a
+ * region's own coordinates), as text on `out`: a first line with the
+ * formula, each camera ray (under "sample N:" when samples > 1) and the
+ * rays that come from it indented by generation, each hit's terms and
+ * their sum, and the pixel's value with the bytes it rounds to.  `scene`
+ * names the scene (its control bytes escaped).  Thread-safe on distinct
+ * streams.
+ */
+void cli_explain_print_text(FILE *out, const rt_ray_tree *tree,
+                            const char *scene, int x, int y, int samples);
+
+/* The same tree as one JSON object on one line (its strings through
+ * cli_json_string), on `out`. */
+void cli_explain_print_json(FILE *out, const rt_ray_tree *tree,
+                            const char *scene, int x, int y);
 
 #endif /* RAYTRACE_CLI_EXPLAIN_H */

@@ -12,22 +12,13 @@
 
 #include "cli_text.h"
 
-double cli_seconds_since(const struct timespec *t)
-{
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - t->tv_sec) +
-           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
-}
-
 void cli_progress_start(cli_progress *progress, FILE *out, int terminal,
                         const char *name, int rows, int width, int samples)
 {
     *progress = (cli_progress){.out = out, .name = name,
                                .terminal = terminal, .rows = rows,
                                .rays_per_row = (double)width * samples};
-    clock_gettime(CLOCK_MONOTONIC, &progress->start);
-    progress->last = progress->start;
+    progress->start = progress->last = cli_clock_seconds();
 }
 
 /* "12.3 s", "4 min 05 s", "1 h 02 min" */
@@ -79,12 +70,12 @@ int cli_progress_row(void *user, int row)
     (void)row;
     cli_progress *p = user;
     p->done++;
-    double elapsed = cli_seconds_since(&p->start);
+    double elapsed = cli_seconds_since(p->start);
     double interval = p->terminal ? 0.1 : 1.0;
     if (elapsed < 0.5 ||
-        (cli_seconds_since(&p->last) < interval && p->done < p->rows))
+        (cli_seconds_since(p->last) < interval && p->done < p->rows))
         return 1;
-    clock_gettime(CLOCK_MONOTONIC, &p->last);
+    p->last = cli_clock_seconds();
     draw(p, elapsed);
     return 1;
 }

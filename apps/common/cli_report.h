@@ -9,9 +9,9 @@
 #define RAYTRACE_CLI_REPORT_H
 
 #include <stdio.h>
-#include <time.h>
 
 #include "cli.h"
+#include "cli_clock.h"
 
 /*
  * The progress of one render, on `out` (stderr).  On a terminal the line
@@ -27,7 +27,7 @@ typedef struct cli_progress {
     int terminal;               /* 1: rewrite the line in place */
     int rows, done;
     double rays_per_row;        /* width x samples */
-    struct timespec start, last;
+    double start, last;         /* cli_clock_seconds readings */
     int shown;                  /* a line was written */
 } cli_progress;
 
@@ -42,9 +42,6 @@ int cli_progress_row(void *user, int row);
 
 /* Ends the line, if one was shown. */
 void cli_progress_end(cli_progress *progress);
-
-/* The seconds elapsed since `t` (CLOCK_MONOTONIC). */
-double cli_seconds_since(const struct timespec *t);
 
 /* What a render was asked to do and where its time went, besides what
  * rt_render_stats counts. */

@@ -85,29 +85,31 @@ cli_read cli_read_integer(const char *text, double min, double max,
     return CLI_READ_OK;
 }
 
-void cli_real_limits(double min, double max, int open_min, char *out,
+void cli_real_limits(double min, double max, unsigned bounds, char *out,
                      size_t size)
 {
     char low[32], high[32];
+    int open_min = (bounds & CLI_BOUND_OPEN_MIN) != 0;
     cli_format_number(min, low, sizeof low);
     cli_format_number(max, high, sizeof high);
     if (isinf(max))
         snprintf(out, size, "a number %s %s", open_min ? ">" : ">=", low);
     else
-        snprintf(out, size, "a number in %c%s, %s)", open_min ? '(' : '[',
-                 low, high);
+        snprintf(out, size, "a number in %c%s, %s%c", open_min ? '(' : '[',
+                 low, high, bounds & CLI_BOUND_CLOSED_MAX ? ']' : ')');
 }
 
 cli_read cli_read_real(const char *text, double min, double max,
-                       int open_min, double *out, cli_problem *problem)
+                       unsigned bounds, double *out, cli_problem *problem)
 {
-    cli_real_limits(min, max, open_min, problem->expected,
+    cli_real_limits(min, max, bounds, problem->expected,
                     sizeof problem->expected);
     double v;
     if (rt_scene_read_number(text, strlen(text), &v, NULL) != RT_OK)
         return CLI_READ_SYNTAX;
-    if (v < min || (open_min && v == min) || v > max ||
-        (v == max && !isinf(max)))
+    int max_allowed = isinf(max) || (bounds & CLI_BOUND_CLOSED_MAX);
+    if (v < min || ((bounds & CLI_BOUND_OPEN_MIN) && v == min) || v > max ||
+        (v == max && !max_allowed))
         return out_of_range(problem, v, text, strlen(text));
     *out = v;
     return CLI_READ_OK;

@@ -46,14 +46,23 @@ void cli_format_number(double value, char *out, size_t size);
 cli_read cli_read_integer(const char *text, double min, double max,
                           int square, int *out, cli_problem *problem);
 
-/* A number in [min, max) (max itself allowed when infinite; min refused
- * when open_min), e.g. --aperture. */
+/* Which ends of a real's interval are in it, for cli_read_real: by
+ * default min is and a finite max is not ([min, max): --fov's 180 is no
+ * field of view); an infinite max always stands for "no upper limit". */
+enum {
+    CLI_BOUND_OPEN_MIN = 1 << 0,    /* min itself is refused: (min, ... */
+    CLI_BOUND_CLOSED_MAX = 1 << 1   /* max itself is accepted: ..., max] */
+};
+
+/* A number in the interval from min to max whose ends `bounds` (0 or
+ * CLI_BOUND_... flags) says, e.g. --aperture (>= 0), --fov (in (0, 180)),
+ * rt-view's --scale (in [0.01, 64]). */
 cli_read cli_read_real(const char *text, double min, double max,
-                       int open_min, double *out, cli_problem *problem);
+                       unsigned bounds, double *out, cli_problem *problem);
 
 /* The words of cli_read_real's limits: "a number >= 0", "a number > 0",
- * "a number in (0, 180)". */
-void cli_real_limits(double min, double max, int open_min, char *out,
+ * "a number in (0, 180)", "a number in [0.01, 64]". */
+void cli_real_limits(double min, double max, unsigned bounds, char *out,
                      size_t size);
 
 /* "X,Y,Z": three numbers of magnitude at most `max_magnitude` (infinite:

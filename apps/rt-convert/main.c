@@ -36,7 +36,7 @@ static const cli_option convert_options[] = {
     {"force-name", 0, NULL, CLI_FLAG, 0, 0, &force_name,
      "write the .scn text even to a name that does not end in .scn "
      "(without it, `out.png' is refused)"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 static const cli_program program = {

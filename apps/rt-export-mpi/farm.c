@@ -12,6 +12,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "cli_clock.h"
+
 enum {
     TAG_WORK = 1,       /* rank 0 -> worker: an int, the band, or -1: stop */
     TAG_ROWS = 2,       /* worker -> rank 0: the band's pixels */
@@ -21,14 +23,6 @@ enum {
 
 #define POLL_MIN_NS 20000L      /* idle waits sleep 20 us, doubling ... */
 #define POLL_MAX_NS 1000000L    /* ... up to 1 ms */
-
-static double seconds_since(const struct timespec *start)
-{
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - start->tv_sec) +
-           (double)(now.tv_nsec - start->tv_nsec) * 1e-9;
-}
 
 /* Sleeps *delay (then doubles it, up to POLL_MAX_NS). */
 static void idle(long *delay)
@@ -68,7 +62,7 @@ static int band_height(const farm_job *job, int band)
  * as the region of the whole image it covers; adds to `report`. */
 static rt_status render_band(const farm_job *job, int band,
                              unsigned char *pixels, farm_rank_report *report,
-                             const struct timespec *start)
+                             double start)
 {
     int width = job->area.x1 - job->area.x0;
     int rows = band_height(job, band);
@@ -81,16 +75,15 @@ static rt_status render_band(const farm_job *job, int band,
     options.on_row = NULL;
     options.user = NULL;
     rt_image view = {width, rows, (size_t)width * 3, pixels};
-    struct timespec begin;
-    clock_gettime(CLOCK_MONOTONIC, &begin);
+    double begin = cli_clock_seconds();
     rt_status status = rt_render(job->scene, &options, &view, NULL);
     if (status != RT_OK)
         return status;
-    double seconds = seconds_since(&begin);
+    double seconds = cli_seconds_since(begin);
     if (seconds / rows > report->slowest_row_seconds)
         report->slowest_row_seconds = seconds / rows;
     report->busy_seconds += seconds;
-    report->finish_seconds = seconds_since(start);
+    report->finish_seconds = cli_seconds_since(start);
     report->bands++;
     report->rows += rows;
     farm_stats_add(&report->stats, &stats);
@@ -111,7 +104,7 @@ typedef struct queue {
     const farm_job *job;
     rt_image *image;
     farm_rank_report *report;   /* rank 0's */
-    struct timespec start;
+    double start;               /* cli_clock_seconds at the start */
 } queue;
 
 /* The next band to render, or -1 when none is left. */
@@ -134,7 +127,7 @@ static void *render_locally(void *argument)
         unsigned char *rows = q->image->pixels +
                               (size_t)band * q->job->band_rows *
                                   q->image->stride;
-        status = render_band(q->job, band, rows, q->report, &q->start);
+        status = render_band(q->job, band, rows, q->report, q->start);
         pthread_mutex_lock(&q->lock);
         if (status == RT_OK) {
             q->local_rows += band_height(q->job, band);
@@ -226,8 +219,7 @@ rt_status farm_serve(const farm_job *job, MPI_Comm comm, rt_image *image,
         return RT_ERR_NOMEM;
     queue q = {.next = 0, .total = band_count(job), .local_running = 1,
                .local_status = RT_OK, .job = job, .image = image,
-               .report = &reports[0]};
-    clock_gettime(CLOCK_MONOTONIC, &q.start);
+               .report = &reports[0], .start = cli_clock_seconds()};
     pthread_mutex_init(&q.lock, NULL);
     pthread_t thread;
     int threaded = pthread_create(&thread, NULL, render_locally, &q) == 0;
@@ -292,8 +284,7 @@ rt_status farm_work(const farm_job *job, MPI_Comm comm)
     MPI_Request sends[2] = {MPI_REQUEST_NULL, MPI_REQUEST_NULL};
     farm_rank_report report;
     memset(&report, 0, sizeof report);
-    struct timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
+    double start = cli_clock_seconds();
     rt_status status = buffers[0] && buffers[1] ? RT_OK : RT_ERR_NOMEM;
     for (int turn = 0; status == RT_OK; turn ^= 1) {
         int band = -1;
@@ -303,7 +294,7 @@ rt_status farm_work(const farm_job *job, MPI_Comm comm)
         if (band < 0)
             break;
         wait_request(&sends[turn]);     /* the buffer is free again */
-        status = render_band(job, band, buffers[turn], &report, &start);
+        status = render_band(job, band, buffers[turn], &report, start);
         if (status == RT_OK)
             MPI_Isend(buffers[turn], (int)((size_t)band_height(job, band) *
                                            (size_t)width * 3),

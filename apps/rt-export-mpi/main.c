@@ -5,34 +5,36 @@
  *     mpirun -np N rt-export-mpi SCENE -o OUT [every rt-export render option]
  *
  * Every rank parses the same command line (only rank 0 speaks).  Rank 0
- * reads the scene once and every file it names (an OBJ's material
- * libraries), checks it and the output, and broadcasts all those bytes,
- * from which every rank parses the same scene without reading its own disk
- * (apps/rt-export-mpi/share.h), and checks that it is rank 0's; then the bands of
- * the image are handed out from rank 0's queue (apps/rt-export-mpi/farm.h), rendered
- * with all the cores of each rank, and received into rank 0's image, which
- * rank 0 saves with the library's safe save once every band has arrived.
- * A bad scene or output (one the scene was read from included): one
- * message from rank 0, and every rank exits 1.  A save that fails after
- * the render keeps the image under another name (cli_keep_image).
- * A rank that dies: Open MPI ends the job, nothing is saved.  Exit status
- * as rt-export's: 0 success, 1 bad input or a failed write, 2 bad usage.
+ * runs rt-export's export pipeline (apps/common/cli_export.h) with two
+ * hooks of its own: the load reads the scene once, and every file it
+ * names (an OBJ's material libraries), keeping their bytes; the bands go
+ * to the ranks.  Once rank 0's checks have passed, those bytes go to
+ * every rank, which parses the same scene from them without reading its
+ * own disk and checks that it is rank 0's (apps/rt-export-mpi/share.h);
+ * then the bands of the image are handed out from rank 0's queue
+ * (apps/rt-export-mpi/farm.h), rendered with all the cores of each rank,
+ * and received into rank 0's image, which the pipeline saves once every
+ * band has arrived.  A bad scene or output (one the scene was read from
+ * included): one message from rank 0, and every rank exits with its
+ * status.  A save that fails after the render keeps the image under
+ * another name.  A rank that dies: Open MPI ends the job, nothing is
+ * saved.  Exit status as rt-export's: 0 success, 1 bad input or a failed
+ * write, 2 bad usage.
  */
 #define _GNU_SOURCE /* sched_getaffinity: the cores mpirun or srun gave */
 #include <errno.h>
 #include <fcntl.h>
 #include <mpi.h>
 #include <sched.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
-#include "cli_output.h"
-#include "cli_report.h"
+#include "cli_clock.h"
+#include "cli_export.h"
+#include "cli_text.h"
 #include "farm.h"
 #include "share.h"
 #include "raytrace/raytrace.h"
@@ -45,7 +47,7 @@ static const cli_option mpi_options[] = {
     {"band-rows", 0, "N", CLI_INT, 0, RT_MAX_IMAGE_SIDE, &band_rows_option,
      "rows of the image in each band handed out to a rank; 0 (the "
      "default): about 32 bands a rank, at most 32 rows each"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 static const cli_program program = {
@@ -64,219 +66,55 @@ static const cli_program program = {
         CLI_GROUP_QUIET,
     mpi_options, 1, 1, "expected a scene file"};
 
-/* The scene as rank 0 read it: the bytes every rank parses. */
-typedef struct scene_text {
-    char *bytes;
-    size_t length;
-    const char *name;           /* the path, or "<stdin>" */
-} scene_text;
+/* This rank's part of the job. */
+typedef struct rank_state {
+    int rank, count;
+    share_input input;          /* what rank 0 read, for every rank */
+    int shared;                 /* rank 0: its verdict went out */
+    farm_job job;
+    farm_rank_report *reports;  /* rank 0: a report a rank */
+} rank_state;
 
-/* Reads all of `file` (at most RT_MAX_SCENE_BYTES + 1 bytes, so that the
- * parser names a larger one; up to a NUL byte, which no scene holds). */
-static int read_all(FILE *file, scene_text *text)
+/* Rank 0's load (a cli_export_load_func): the scene's bytes and those of
+ * the files it names, kept for the other ranks, then parsed. */
+static rt_status load_on_rank_0(void *user, const cli_export *ex,
+                                rt_scene **scene, rt_error *error)
 {
-    size_t capacity = 1 << 16, used = 0;
-    char *bytes = malloc(capacity);
-    while (bytes != NULL) {
-        used += fread(bytes + used, 1, capacity - used, file);
-        if (used < capacity || used > RT_MAX_SCENE_BYTES)
-            break;
-        char *bigger = realloc(bytes, capacity * 2);
-        if (bigger == NULL)
-            free(bytes);
-        bytes = bigger;
-        capacity *= 2;
-    }
-    if (bytes == NULL)
-        return 0;
-    char *nul = memchr(bytes, 0, used);
-    text->bytes = bytes;
-    text->length = nul ? (size_t)(nul - bytes) : used;
-    return 1;
-}
-
-/* Rank 0: the scene's bytes, or a message and 0. */
-static int read_scene(const char *path, scene_text *text)
-{
-    int from_stdin = !strcmp(path, "-");
-    text->name = from_stdin ? "<stdin>" : path;
-    FILE *file = from_stdin ? stdin : fopen(path, "rb");
+    rank_state *r = user;
+    FILE *file = ex->from_stdin ? stdin : fopen(ex->operand, "rb");
     if (file == NULL) {
-        fprintf(stderr, "rt-export-mpi: %s: cannot open: %s\n", path,
-                strerror(errno));
-        return 0;
+        char shown[RT_ERROR_MESSAGE_SIZE / 2];
+        memset(error, 0, sizeof *error);
+        error->status = RT_ERR_IO;
+        snprintf(error->message, sizeof error->message,
+                 "%s: cannot open: %s",
+                 cli_printable(ex->operand, shown, sizeof shown),
+                 strerror(errno));
+        return RT_ERR_IO;
     }
-    int read = read_all(file, text);
-    int failed = ferror(file);
-    if (!from_stdin)
+    rt_status status = cli_read_scene_text(file, ex->name, &r->input.text,
+                                           &r->input.length, error);
+    if (!ex->from_stdin)
         fclose(file);
-    if (!read || failed) {
-        fprintf(stderr, "rt-export-mpi: %s: cannot read: %s\n", text->name,
-                read ? strerror(errno) : "out of memory");
-        if (read)
-            free(text->bytes);
-        text->bytes = NULL;
-        return 0;
-    }
-    return 1;
-}
-
-/* "dir/name.scn" -> "name.ppm" (".png" for PNG), in the current folder. */
-static char *default_output(const char *scene, rt_image_format format)
-{
-    const char *base = strrchr(scene, '/');
-    base = base ? base + 1 : scene;
-    const char *dot = strrchr(base, '.');
-    size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    char *out = malloc(stem + 5);
-    if (out != NULL)
-        snprintf(out, stem + 5, "%.*s%s", (int)stem, base,
-                 format == RT_IMAGE_PNG ? ".png" : ".ppm");
-    return out;
-}
-
-/* What rank 0 decided before the render. */
-typedef struct plan {
-    scene_text text;
-    share_files files;          /* the files the scene names, as rank 0
-                                   read them */
-    rt_scene *scene;
-    char *default_path;         /* allocated when -o was not given */
-    const char *output;         /* where the image goes */
-    double load_seconds;
-} plan;
-
-/* Rank 0: reads and parses the scene, checks the output and the options
- * against it.  Returns CLI_CONTINUE or the exit status (after one
- * message). */
-static int prepare(cli_settings *s, plan *p)
-{
-    rt_error error;
-    const char *path = s->operands[0];
-    /* mpirun hands rank 0 a pseudo-terminal for its standard output,
-     * whose line discipline may turn \n into \r\n: no image goes there */
-    if (s->output != NULL && !strcmp(s->output, "-"))
-        return cli_usage_error(&program, "-o -: the image cannot go to "
-                               "standard output under MPI (mpirun passes it "
-                               "through a terminal); name a file");
-    if (!strcmp(path, "-") && s->output == NULL)
-        return cli_usage_error(&program, "expected -o OUT with a scene "
-                               "read from standard input");
-    if (!rt_image_format_supported(s->format)) {
-        fprintf(stderr, "rt-export-mpi: cannot write %s: this build has no "
-                        "PNG support (it was built without libpng); use "
-                        "--format p6 or p3\n", s->output ? s->output : "PNG");
-        return EXIT_BAD_INPUT;
-    }
-    struct timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
-    if (!read_scene(path, &p->text))
-        return EXIT_BAD_INPUT;
-    rt_load_options load = s->load;
+    if (status != RT_OK)
+        return status;
+    rt_load_options load = ex->settings->load;
     load.resolve = share_record;
-    load.resolve_user = &p->files;
-    if (rt_scene_parse_with(p->text.bytes, p->text.length, p->text.name,
-                            &load, &p->scene, &error) != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: %s\n", error.message);
-        return EXIT_BAD_INPUT;
-    }
-    p->load_seconds = cli_seconds_since(&start);
-    rt_scene_info info;
-    rt_scene_get_info(p->scene, &info);
-    for (int i = 0; i < info.warning_count; i++)
-        fprintf(stderr, "rt-export-mpi: %s\n",
-                rt_scene_warning(p->scene, i)->message);
-    if (s->output == NULL)
-        p->default_path = default_output(path, s->format);
-    p->output = s->output ? s->output : p->default_path;
-    if (p->output == NULL) {
-        fprintf(stderr, "rt-export-mpi: out of memory\n");
-        return EXIT_BAD_INPUT;
-    }
-    if (cli_refuse_input_as_output("rt-export-mpi", p->output, p->scene,
-                                   path, "the image"))
-        return EXIT_BAD_INPUT;
-    int width, height;
-    int code = cli_image_size(&program, s, p->scene, &width, &height);
-    if (code != CLI_CONTINUE)
-        return code;
-    if (rt_scene_check_precision(p->scene, s->render.precision, &error) !=
-            RT_OK ||
-        rt_image_save_check(p->output, &error) != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: %s\n", error.message);
-        return EXIT_BAD_INPUT;
-    }
-    return CLI_CONTINUE;
-}
-
-/* Every rank: rank 0's verdict, then the scene's bytes and those of the
- * files it names, parsed on the other ranks into the scene rank 0 built
- * (its digest compared).  Returns CLI_CONTINUE with p->scene set on every
- * rank, or the exit status every rank returns. */
-static int share_scene(cli_settings *s, plan *p, int rank)
-{
-    long long header[2] = {CLI_CONTINUE, 0};
-    if (rank == 0) {
-        header[0] = prepare(s, p);
-        header[1] = (long long)p->text.length;
-    }
-    MPI_Bcast(header, 2, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-    if (header[0] != CLI_CONTINUE)
-        return (int)header[0];
-    if (rank != 0) {
-        p->text.length = (size_t)header[1];
-        p->text.bytes = malloc(p->text.length + 1);
-        p->text.name = strcmp(s->operands[0], "-") ? s->operands[0]
-                                                   : "<stdin>";
-        if (p->text.bytes == NULL) {
-            fprintf(stderr, "rt-export-mpi: rank %d: out of memory\n", rank);
-            MPI_Abort(MPI_COMM_WORLD, EXIT_BAD_INPUT);
-        }
-    }
-    /* <= RT_MAX_SCENE_BYTES (1 GiB): one count fits an int */
-    MPI_Bcast(p->text.bytes, (int)p->text.length, MPI_BYTE, 0,
-              MPI_COMM_WORLD);
-    share_broadcast(&p->files, rank, MPI_COMM_WORLD);
-    int failed = 0;
-    if (rank != 0) {
-        rt_error error;
-        rt_load_options load = s->load;
-        load.resolve = share_serve;
-        load.resolve_user = &p->files;
-        if (rt_scene_parse_with(p->text.bytes, p->text.length, p->text.name,
-                                &load, &p->scene, &error) != RT_OK) {
-            fprintf(stderr, "rt-export-mpi: rank %d: %s\n", rank,
-                    error.message);
-            failed = 1;
-        }
-    }
-    /* The same bytes, the same options: the same scene, unless the ranks
-     * run different programs or were given different command lines. */
-    unsigned long long digest = p->scene ? share_digest(p->scene) : 0;
-    unsigned long long expected = digest;
-    MPI_Bcast(&expected, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
-    if (rank != 0 && !failed && digest != expected) {
-        fprintf(stderr, "rt-export-mpi: rank %d: %s: the scene this rank "
-                        "built from rank 0's bytes is not rank 0's (digest "
-                        "%016llx, rank 0's %016llx): the ranks run different "
-                        "programs or command lines; nothing is rendered\n",
-                rank, p->text.name, digest, expected);
-        failed = 1;
-    }
-    MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX,
-                  MPI_COMM_WORLD);
-    return failed ? EXIT_BAD_INPUT : CLI_CONTINUE;
+    load.resolve_user = &r->input.files;
+    return rt_scene_parse_with(r->input.text, r->input.length, ex->name,
+                               &load, scene, error);
 }
 
 /* The render every rank does. */
-static farm_job make_job(const plan *p, const cli_settings *s, int ranks)
+static farm_job make_job(const rt_scene *scene,
+                         const rt_render_options *render, int ranks)
 {
-    farm_job job = {p->scene, s->render, s->render.region, band_rows_option};
-    rt_render_options whole = s->render;
+    farm_job job = {scene, *render, render->region, band_rows_option};
+    rt_render_options whole = *render;
     whole.region = (rt_region){0, 0, 0, 0};
     int width = 0, height = 0;
-    rt_render_image_size(p->scene, &whole, &width, &height, NULL);
-    rt_region r = s->render.region;
+    rt_render_image_size(scene, &whole, &width, &height, NULL);
+    rt_region r = render->region;
     if (r.x0 == 0 && r.y0 == 0 && r.x1 == 0 && r.y1 == 0)
         job.area = (rt_region){0, 0, width, height};
     if (job.band_rows == 0)
@@ -291,16 +129,51 @@ static void count_rows(void *user, int rows)
         cli_progress_row(user, 0);
 }
 
+/* Rank 0's bands (a cli_export_bands_func), once its checks passed: the
+ * scene goes to every rank, then the farm hands the bands out. */
+static int bands_on_ranks(void *user, const cli_export *ex,
+                          cli_progress *progress, rt_image *image,
+                          rt_render_stats *stats)
+{
+    rank_state *r = user;
+    rt_scene *scene = ex->scene;
+    r->shared = 1;
+    int code = share_scene(&r->input, CLI_CONTINUE, ex->name,
+                           &ex->settings->load, &scene, 0, MPI_COMM_WORLD);
+    if (code != CLI_CONTINUE)
+        return code;
+    r->job = make_job(ex->scene, &ex->settings->render, r->count);
+    r->reports = calloc((size_t)r->count, sizeof *r->reports);
+    if (r->reports == NULL) {   /* the others are rendering: end the job */
+        fprintf(stderr, "rt-export-mpi: out of memory\n");
+        MPI_Abort(MPI_COMM_WORLD, EXIT_BAD_INPUT);
+    }
+    double start = cli_clock_seconds();
+    rt_status status = farm_serve(&r->job, MPI_COMM_WORLD, image,
+                                  progress ? count_rows : NULL, progress,
+                                  r->reports);
+    double seconds = cli_seconds_since(start);
+    if (status != RT_OK) {
+        fprintf(stderr, "rt-export-mpi: %s: rendering failed: %s\n",
+                ex->name, rt_status_string(status));
+        MPI_Abort(MPI_COMM_WORLD, EXIT_BAD_INPUT);
+    }
+    for (int rank = 0; rank < r->count; rank++)
+        farm_stats_add(stats, &r->reports[rank].stats);
+    stats->seconds = seconds;
+    return CLI_CONTINUE;
+}
+
 /* --stats: a line a rank, and how even the ranks' work was. */
-static void print_ranks(const farm_job *job, const farm_rank_report *reports,
-                        int ranks)
+static void print_ranks(FILE *out, const farm_job *job,
+                        const farm_rank_report *reports, int ranks)
 {
     double most = 0, total = 0, first = -1, last = 0;
     for (int rank = 0; rank < ranks; rank++) {
         const farm_rank_report *r = &reports[rank];
-        fprintf(stderr, "rt-export-mpi: rank %d: %d bands, %d rows, %.3f s "
-                        "rendering (%.4f s a row, %.4f in its slowest band), "
-                        "last band done at %.3f s\n", rank, r->bands, r->rows,
+        fprintf(out, "rt-export-mpi: rank %d: %d bands, %d rows, %.3f s "
+                     "rendering (%.4f s a row, %.4f in its slowest band), "
+                     "last band done at %.3f s\n", rank, r->bands, r->rows,
                 r->busy_seconds, r->rows ? r->busy_seconds / r->rows : 0.0,
                 r->slowest_row_seconds, r->finish_seconds);
         total += r->busy_seconds;
@@ -311,84 +184,58 @@ static void print_ranks(const farm_job *job, const farm_rank_report *reports,
             last = r->finish_seconds > last ? r->finish_seconds : last;
         }
     }
-    fprintf(stderr, "rt-export-mpi: %d ranks, bands of %d rows; imbalance "
-                    "%.3f (the busiest rank's time over the mean); the last "
-                    "rank finished %.3f s after the first\n", ranks,
+    fprintf(out, "rt-export-mpi: %d ranks, bands of %d rows; imbalance "
+                 "%.3f (the busiest rank's time over the mean); the last "
+                 "rank finished %.3f s after the first\n", ranks,
             job->band_rows, total > 0 ? most * ranks / total : 1.0,
             first < 0 ? 0.0 : last - first);
 }
 
-/* Rank 0: serves the bands, then saves the image.  Returns the exit
- * status; a failed render aborts the job. */
-static int render_and_save(const farm_job *job, cli_settings *s,
-                           const plan *p, int ranks)
+/* print_ranks as a cli_export_report_func. */
+static void report_ranks(void *user, FILE *out)
 {
-    cli_render_report report = {
-        .program = "rt-export-mpi", .scene = p->text.name,
-        .output = p->output, .format = s->format, .settings = s,
-        .load_seconds = p->load_seconds,
-        .width = job->area.x1 - job->area.x0,
-        .height = job->area.y1 - job->area.y0};
-    rt_render_options whole = s->render;
-    whole.region = (rt_region){0, 0, 0, 0};
-    rt_render_image_size(p->scene, &whole, &report.full_width,
-                         &report.full_height, NULL);
-    rt_image image = {0};
-    farm_rank_report *reports = calloc((size_t)ranks, sizeof *reports);
-    if (reports == NULL ||
-        rt_image_init(&image, report.width, report.height, NULL) != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: out of memory\n");
-        MPI_Abort(MPI_COMM_WORLD, EXIT_BAD_INPUT);
+    const rank_state *r = user;
+    print_ranks(out, &r->job, r->reports, r->count);
+}
+
+/* Rank 0: the pipeline, rt-export's but for the two hooks.  Returns the
+ * exit status (the others have it too once r->shared). */
+static int run_rank_0(cli_settings *s, rank_state *r)
+{
+    /* mpirun hands rank 0 a pseudo-terminal for its standard output,
+     * whose line discipline may turn \n into \r\n: no image goes there */
+    if (s->output != NULL && !strcmp(s->output, "-"))
+        return cli_usage_error(&program, "-o -: the image cannot go to "
+                               "standard output under MPI (mpirun passes it "
+                               "through a terminal); name a file");
+    const cli_export_config config = {
+        .load = load_on_rank_0, .bands = bands_on_ranks,
+        .report = report_ranks, .user = r, .no_stdout = 1};
+    cli_export ex;
+    cli_export_init(&ex, &program, s, &config);
+    int code = cli_export_load(&ex, 1);
+    if (code == CLI_CONTINUE) {
+        cli_export_print_warnings(&ex);
+        code = cli_export_render(&ex);
     }
-    int progress_on = !s->quiet && (s->progress || isatty(STDERR_FILENO));
-    cli_progress progress;
-    cli_progress_start(&progress, stderr, isatty(STDERR_FILENO), p->text.name,
-                       report.height, report.width, s->render.samples);
-    struct timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
-    rt_status status = farm_serve(job, MPI_COMM_WORLD, &image,
-                                  progress_on ? count_rows : NULL, &progress,
-                                  reports);
-    double seconds = cli_seconds_since(&start);
-    cli_progress_end(&progress);
-    if (status != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: %s: rendering failed: %s\n",
-                p->text.name, rt_status_string(status));
-        MPI_Abort(MPI_COMM_WORLD, EXIT_BAD_INPUT);
-    }
-    /* every band is in: only now is anything written */
-    rt_render_stats stats;
-    memset(&stats, 0, sizeof stats);
-    for (int rank = 0; rank < ranks; rank++)
-        farm_stats_add(&stats, &reports[rank].stats);
-    stats.seconds = seconds;
-    struct timespec write_start;
-    clock_gettime(CLOCK_MONOTONIC, &write_start);
-    rt_error error;
-    /* hours of work may be in the image: a save that fails keeps it under
-     * another name (a signal, the user's wish to stop, keeps nothing) */
-    int code = EXIT_BAD_INPUT;
-    if (cli_refuse_input_as_output("rt-export-mpi", p->output, p->scene,
-                                   s->operands[0], "the image")) {
-        cli_keep_image("rt-export-mpi", p->output, &image, s->format);
-    } else if ((status = rt_image_save(p->output, &image, s->format,
-                                       &error)) != RT_OK) {
-        fprintf(stderr, "rt-export-mpi: %s\n", error.message);
-        if (status != RT_ERR_INTERRUPTED)
-            cli_keep_image("rt-export-mpi", p->output, &image, s->format);
-    } else {
-        report.write_seconds = cli_seconds_since(&write_start);
-        if (s->stats != CLI_STATS_NONE)
-            print_ranks(job, reports, ranks);
-        if (s->stats == CLI_STATS_TEXT)
-            cli_print_stats_text(stderr, &stats, &report);
-        else if (s->stats == CLI_STATS_JSON)
-            cli_print_stats_json(stderr, &stats, &report);
-        printf("%s\n", p->output);
+    cli_export_release(&ex);
+    return code;
+}
+
+/* Every other rank: rank 0's verdict, then the scene and the bands. */
+static int run_worker(const cli_settings *s, rank_state *r)
+{
+    rt_scene *scene = NULL;
+    const char *name = strcmp(s->operands[0], "-") ? s->operands[0]
+                                                   : "<stdin>";
+    int code = share_scene(&r->input, CLI_CONTINUE, name, &s->load, &scene,
+                           r->rank, MPI_COMM_WORLD);
+    if (code == CLI_CONTINUE) {
+        farm_job job = make_job(scene, &s->render, r->count);
+        farm_work(&job, MPI_COMM_WORLD);
         code = EXIT_SUCCESS;
     }
-    rt_image_release(&image);
-    free(reports);
+    rt_scene_destroy(scene);
     return code;
 }
 
@@ -450,35 +297,32 @@ static void fit_threads(cli_settings *s, int rank)
 
 int main(int argc, char **argv)
 {
-    int provided, rank, ranks;
+    int provided;
+    rank_state r;
+    memset(&r, 0, sizeof r);
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-    if (provided < MPI_THREAD_FUNNELED && rank == 0)
+    MPI_Comm_rank(MPI_COMM_WORLD, &r.rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &r.count);
+    if (provided < MPI_THREAD_FUNNELED && r.rank == 0)
         fprintf(stderr, "rt-export-mpi: warning: this MPI gives no thread "
                         "support; rank 0 renders anyway on a thread that "
                         "makes no MPI call\n");
     cli_settings s;
-    plan p;
-    memset(&p, 0, sizeof p);
-    int code = parse_everywhere(argc, argv, &s, rank);
+    int code = parse_everywhere(argc, argv, &s, r.rank);
     if (code == CLI_CONTINUE) {
-        fit_threads(&s, rank);
-        code = share_scene(&s, &p, rank);
-    }
-    if (code == CLI_CONTINUE) {
-        farm_job job = make_job(&p, &s, ranks);
-        if (rank == 0) {
-            code = render_and_save(&job, &s, &p, ranks);
+        fit_threads(&s, r.rank);
+        if (r.rank != 0) {
+            code = run_worker(&s, &r);
         } else {
-            farm_work(&job, MPI_COMM_WORLD);
-            code = EXIT_SUCCESS;
+            code = run_rank_0(&s, &r);
+            /* a refusal before the render: the others wait for it */
+            if (!r.shared)
+                share_scene(&r.input, code, NULL, NULL, NULL, 0,
+                            MPI_COMM_WORLD);
         }
     }
-    rt_scene_destroy(p.scene);
-    share_free(&p.files);
-    free(p.text.bytes);
-    free(p.default_path);
+    share_input_free(&r.input);
+    free(r.reports);
     MPI_Finalize();
     return code;
 }

@@ -1,6 +1,7 @@
 /*
- * share.c - the files rank 0's load read, recorded, broadcast and served
- * to the other ranks, and the digest every rank compares (share.h).
+ * share.c - the scene and the files rank 0's load read, recorded,
+ * broadcast and served to the other ranks, and the digest every rank
+ * compares (share.h).
  */
 #include "share.h"
 
@@ -196,4 +197,61 @@ void share_free(share_files *files)
         free_item(&files->items[i]);
     free(files->items);
     memset(files, 0, sizeof *files);
+}
+
+void share_input_free(share_input *input)
+{
+    free(input->text);
+    share_free(&input->files);
+    memset(input, 0, sizeof *input);
+}
+
+/* Every rank: whether this rank's scene is rank 0's. */
+static int same_scene(const rt_scene *scene, const char *name, int rank,
+                      MPI_Comm comm)
+{
+    /* The same bytes, the same options: the same scene, unless the ranks
+     * run different programs or were given different command lines. */
+    unsigned long long digest = scene ? share_digest(scene) : 0;
+    unsigned long long expected = digest;
+    MPI_Bcast(&expected, 1, MPI_UNSIGNED_LONG_LONG, 0, comm);
+    if (rank == 0 || scene == NULL || digest == expected)
+        return 1;
+    fprintf(stderr, "rt-export-mpi: rank %d: %s: the scene this rank built "
+                    "from rank 0's bytes is not rank 0's (digest %016llx, "
+                    "rank 0's %016llx): the ranks run different programs or "
+                    "command lines; nothing is rendered\n",
+            rank, name, digest, expected);
+    return 0;
+}
+
+int share_scene(share_input *input, int verdict, const char *name,
+                const rt_load_options *load, rt_scene **scene, int rank,
+                MPI_Comm comm)
+{
+    long long header[2] = {verdict, (long long)input->length};
+    MPI_Bcast(header, 2, MPI_LONG_LONG, 0, comm);
+    if (header[0] != CLI_CONTINUE)
+        return (int)header[0];
+    /* <= RT_MAX_SCENE_BYTES (1 GiB): one count fits an int */
+    broadcast_bytes(&input->text, header[1], rank, comm);
+    input->length = (size_t)header[1];
+    share_broadcast(&input->files, rank, comm);
+    int failed = 0;
+    if (rank != 0) {
+        rt_error error;
+        rt_load_options options = *load;
+        options.resolve = share_serve;
+        options.resolve_user = &input->files;
+        if (rt_scene_parse_with(input->text, input->length, name, &options,
+                                scene, &error) != RT_OK) {
+            fprintf(stderr, "rt-export-mpi: rank %d: %s\n", rank,
+                    error.message);
+            *scene = NULL;
+            failed = 1;
+        }
+    }
+    failed |= !same_scene(*scene, name, rank, comm);
+    MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm);
+    return failed ? 1 : CLI_CONTINUE;
 }

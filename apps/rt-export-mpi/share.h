@@ -6,7 +6,9 @@
  * them, so that no worker reads its own disk (a worker without the OBJ's
  * material library, or with another one, renders the same picture).  Then
  * every rank checks that it built the scene rank 0 built, by a digest of
- * everything the picture depends on.
+ * everything the picture depends on.  Only rank 0 reads anything, and
+ * only rank 0's verdict on the command line and the scene counts: every
+ * rank returns it.
  */
 #ifndef RAYTRACE_MPI_SHARE_H
 #define RAYTRACE_MPI_SHARE_H
@@ -14,6 +16,7 @@
 #include <mpi.h>
 #include <stdint.h>
 
+#include "cli.h"
 #include "raytrace/raytrace.h"
 
 /* A file rank 0's load read, as its resolver gave it. */
@@ -52,5 +55,27 @@ void share_broadcast(share_files *files, int rank, MPI_Comm comm);
 uint64_t share_digest(const rt_scene *scene);
 
 void share_free(share_files *files);
+
+/* What rank 0's load read: the scene's bytes and the files it names. */
+typedef struct share_input {
+    char *text;                 /* NUL-terminated after `length` bytes */
+    size_t length;
+    share_files files;          /* recorded by share_record */
+} share_input;
+
+/*
+ * Every rank of `comm`: rank 0's `verdict` goes to every rank; when it is
+ * CLI_CONTINUE the scene's bytes and its files follow, every other rank
+ * parses them (named `name`, with `load` and share_serve as the resolver)
+ * into *scene, and every rank checks that it built rank 0's scene (rank 0
+ * passes its own in *scene) by share_digest.  Returns CLI_CONTINUE, or the
+ * exit status every rank returns: rank 0's verdict, or 1 when a rank's
+ * scene differs or does not parse (that rank says so).
+ */
+int share_scene(share_input *input, int verdict, const char *name,
+                const rt_load_options *load, rt_scene **scene, int rank,
+                MPI_Comm comm);
+
+void share_input_free(share_input *input);
 
 #endif /* RAYTRACE_MPI_SHARE_H */

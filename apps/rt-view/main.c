@@ -4,11 +4,13 @@
  * This file is the command line (the shared module apps/common/cli, so
  * rt-view takes every render option rt-export takes, with the same limits
  * and words) and the start-up; the rest is in apps/rt-view: view_app (the
- * window, keys, reloads, saves and event loop), view_load (reads a scene
- * on its own thread, so the window never waits for a file), view_session
- * (renders on its own thread and reports finished rows), view_window
- * (uploads those rows and draws) and view_scene (loads, watches and names
- * files).
+ * app and its event loop), view_reload (opening, R and --watch),
+ * view_save (S), view_navigation (keys, clicks, debug views), view_load
+ * (reads a scene on its own thread, so the window never waits for a file),
+ * view_session (renders on its own thread and reports finished rows),
+ * view_window (uploads those rows and draws), view_overlay (the click's
+ * rays projected), view_explain (a pixel's tree as segments and text) and
+ * view_scene (loads, watches and names files).
  */
 #include <pthread.h>
 #include <signal.h>
@@ -30,14 +32,15 @@ static double scale = 1.0;      /* --scale */
 static int watch;               /* --watch */
 
 static const cli_option view_options[] = {
-    {"scale", 0, "F", CLI_NUMBER, VIEW_MIN_SCALE, VIEW_MAX_SCALE, &scale,
+    {"scale", 0, "F", CLI_NUMBER_CLOSED, VIEW_MIN_SCALE, VIEW_MAX_SCALE,
+     &scale,
      "render at F times the scene's size in pixels (0.01..64): 0.5 for a "
      "quick preview, 2 for detail; the same picture with more or fewer "
      "pixels (a shorthand for --size; not with it)"},
     {"watch", 0, NULL, CLI_FLAG, 0, 0, &watch,
      "reload and render the scene whenever its file changes (looked at "
      "every 250 ms)"},
-    {NULL, 0, NULL, CLI_FLAG, 0, 0, NULL, NULL},
+    CLI_OPTIONS_END,
 };
 
 #ifdef RAYTRACE_VIEWER_TTF
@@ -122,16 +125,11 @@ static int run_viewer(const view_app_options *options, const char *scene)
     int started = SDL_Init(0) == 0;
     if (!started)
         snprintf(message, sizeof message, "%s", SDL_GetError());
-    if (!started || !view_video_init(message, sizeof message)) {
-        fprintf(stderr,
-                PROGRAM ": cannot open a window: %s; rt-export renders "
-                        "without a display\n",
-                message);
-        SDL_Quit();
-        return 1;
+    view_app *app = NULL;
+    if (started && view_video_init(message, sizeof message)) {
+        SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
+        app = view_app_create(options, message, sizeof message);
     }
-    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
-    view_app *app = view_app_create(options, message, sizeof message);
     if (app == NULL) {
         fprintf(stderr,
                 PROGRAM ": cannot open a window: %s; rt-export renders "

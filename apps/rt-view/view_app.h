@@ -1,8 +1,10 @@
 /*
  * view_app.h - rt-view itself, less its command line: the window, the
  * scene it shows, the keys, reloading (R, --watch), saving (S) and the
- * event loop.  apps/rt-view/main.c parses the options and calls this; the tests
- * drive the same functions directly on SDL's dummy driver.
+ * event loop (view_app.c, view_reload.c, view_save.c and
+ * view_navigation.c, one job each: view_app_internal.h).  main.c parses
+ * the options and calls this; the tests drive the same functions directly
+ * on SDL's dummy driver.
  *
  * The rules it keeps:
  *   - a scene is read on a worker thread (view_load.h): the window stays

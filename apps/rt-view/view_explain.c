@@ -1,11 +1,11 @@
 /*
  * view_explain.c - a clicked pixel's ray tree as overlay segments and text
- * (see view_explain.h).
+ * (see view_explain.h); the text is rt-export --explain's, from the one
+ * formatter (apps/common/cli_explain.h).
  */
 #include "view_explain.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,43 +15,6 @@
 /* A ray that hits nothing is drawn this many |AO| far. */
 #define MISS_DISTANCE 1000.0
 
-/* A growing string. */
-typedef struct text {
-    char *data;
-    size_t length, capacity;
-    int failed;
-} text;
-
-static void append(text *t, const char *format, ...)
-{
-    if (t->failed)
-        return;
-    for (;;) {
-        va_list args;
-        va_start(args, format);
-        int n = vsnprintf(t->data ? t->data + t->length : NULL,
-                          t->data ? t->capacity - t->length : 0, format,
-                          args);
-        va_end(args);
-        if (n < 0) {
-            t->failed = 1;
-            return;
-        }
-        if (t->data && t->length + (size_t)n < t->capacity) {
-            t->length += (size_t)n;
-            return;
-        }
-        size_t capacity = (t->capacity + (size_t)n + 1) * 2;
-        char *data = realloc(t->data, capacity);
-        if (data == NULL) {
-            t->failed = 1;
-            return;
-        }
-        t->data = data;
-        t->capacity = capacity;
-    }
-}
-
 static rt_vec3 point_along(rt_vec3 origin, rt_vec3 direction, double t)
 {
     rt_vec3 p = {origin.x + t * direction.x, origin.y + t * direction.y,
@@ -59,57 +22,23 @@ static rt_vec3 point_along(rt_vec3 origin, rt_vec3 direction, double t)
     return p;
 }
 
-static void describe_facet(text *t, int facet, int line)
+/* The tree's text, as rt-export --explain prints it (cli_explain.h), in a
+ * new string; NULL when out of memory. */
+static char *explanation_text(const rt_ray_tree *tree, const char *name,
+                              int x, int y, int samples)
 {
-    if (line > 0)
-        append(t, "facet %d (line %d)", facet, line);
-    else
-        append(t, "facet %d", facet);
-}
-
-/* One line of the text for node i (its name as cli_explain_ray_name
- * gives it: the mirror ray of a total internal reflection is "totally
- * reflected", the t C_T term, not a k C_R one). */
-static void describe(text *t, const rt_ray_node *nodes, size_t count,
-                     size_t i)
-{
-    const rt_ray_node *node = &nodes[i];
-    int indent = 2 * node->depth + (node->kind == RT_RAY_SHADOW ? 2 : 0);
-    append(t, "%*s%s", indent, "", cli_explain_ray_name(nodes, count, i));
-    if (node->kind == RT_RAY_SHADOW) {
-        append(t, " to light %d: N.S %.4g", node->light, node->n_dot_s);
-        if (!node->cast)
-            append(t, ", not cast (faces away or d = 0): E 0\n");
-        else if (node->e > 0)
-            append(t, ", E %g: lit, adds (%.4g %.4g %.4g)\n", node->e,
-                   node->own.r, node->own.g, node->own.b);
-        else if (node->blocker >= 0) {
-            append(t, ", E 0: shadowed by ");
-            describe_facet(t, node->blocker, node->blocker_line);
-            append(t, "\n");
-        } else
-            append(t, ", E 0\n");
-        return;
+    char *data = NULL;
+    size_t length = 0;
+    FILE *out = open_memstream(&data, &length);
+    if (out == NULL)
+        return NULL;
+    cli_explain_print_text(out, tree, name, x, y, samples);
+    int failed = ferror(out);
+    if (fclose(out) != 0 || failed) {
+        free(data);
+        return NULL;
     }
-    if (cli_explain_total_reflection(nodes, count, i))
-        append(t, " (weight %.4g, for k C_R + t C_T: a total internal "
-                  "reflection)", node->weight);
-    else if (node->weight != 1)
-        append(t, " (weight %.4g)", node->weight);
-    if (!node->hit) {
-        append(t, ": hits nothing, background adds (%.4g %.4g %.4g)\n",
-               node->own.r, node->own.g, node->own.b);
-        return;
-    }
-    append(t, ": hits ");
-    describe_facet(t, node->facet, node->line);
-    append(t, " at t %.4g, point (%.4g %.4g %.4g), N (%.3f %.3f %.3f)",
-           node->t, node->point.x, node->point.y, node->point.z,
-           node->normal.x, node->normal.y, node->normal.z);
-    if (node->k > 0 || node->transmission > 0)
-        append(t, ", k %.3g t %.3g", node->k, node->transmission);
-    append(t, "; carries (%.4g %.4g %.4g)\n", node->subtotal.r,
-           node->subtotal.g, node->subtotal.b);
+    return data;
 }
 
 /* The segment `node` draws, 0 when none (a shadow ray not cast). */
@@ -182,30 +111,20 @@ rt_status view_explain_pixel(const rt_scene *scene,
     double miss_distance =
         MISS_DISTANCE * sqrt(ao.x * ao.x + ao.y * ao.y + ao.z * ao.z);
 
-    rt_color value = rt_ray_tree_value(tree);
-    text t = {NULL, 0, 0, 0};
-    append(&t, "%s pixel (%d, %d): (%.4g %.4g %.4g) -> (%d %d %d)\n", name,
-           x, y, value.r, value.g, value.b, rt_channel_to_byte(value.r),
-           rt_channel_to_byte(value.g), rt_channel_to_byte(value.b));
     out->segments = count ? malloc(sizeof *out->segments * count) : NULL;
-    for (size_t i = 0; i < count; i++) {
-        describe(&t, nodes, count, i);
-        if (out->segments &&
-            segment_of(scene, miss_distance, &nodes[i],
+    for (size_t i = 0; i < count && out->segments; i++)
+        if (segment_of(scene, miss_distance, &nodes[i],
                        &out->segments[out->segment_count]))
             out->segment_count++;
-    }
-    if (rt_ray_tree_truncated(tree))
-        append(&t, "(%zu more rays not recorded)\n",
-               rt_ray_tree_truncated(tree));
     out->x = x;
     out->y = y;
-    out->value = value;
+    out->value = rt_ray_tree_value(tree);
     if (count)
         out->first = nodes[0];
-    out->text = t.data;
+    out->text = explanation_text(tree, name, x, y,
+                                 options ? options->samples : 1);
     rt_ray_tree_destroy(tree);
-    if (t.failed || (count && out->segments == NULL)) {
+    if (out->text == NULL || (count && out->segments == NULL)) {
         view_explanation_release(out);
         if (error) {
             memset(error, 0, sizeof *error);

@@ -1,8 +1,9 @@
 /*
  * view_explain.h - what rt-view shows of one clicked pixel: its ray tree
  * from the library (rt_explain_pixel, same render options as the picture),
- * turned into the segments the overlay draws and a short text, one line a
- * ray, indented by bounce.
+ * turned into the segments the overlay draws and the text rt-export
+ * --explain prints for the same pixel, word for word (the one formatter,
+ * apps/common/cli_explain.h).
  *
  * Shadow rays are drawn yellow to their light, or red up to the facet that
  * blocks them (found again with rt_scene_nearest_hit, as the tree names
@@ -25,16 +26,17 @@ typedef struct view_explanation {
     int x, y;                   /* the pixel, in the shown image */
     view_segment *segments;     /* what the overlay draws */
     int segment_count;
-    char *text;                 /* one line a ray, '\n' after each */
+    char *text;                 /* rt-export --explain's text */
     rt_color value;             /* the pixel's value before rounding */
     rt_ray_node first;          /* the tree's first ray (a camera ray) */
 } view_explanation;
 
 /*
  * Explains pixel (x, y) of the image rendered with `options` (x, y in that
- * image: a region's own coordinates), `name` the scene's name for the
- * text.  RT_OK with *out filled (release it), else the library's status
- * and reason in *error (which may be NULL), *out empty.
+ * image: a region's own coordinates), `name` the scene as the text names
+ * it (rt-export's operand: the path as given).  RT_OK with *out filled
+ * (release it), else the library's status and reason in *error (which may
+ * be NULL), *out empty.
  */
 rt_status view_explain_pixel(const rt_scene *scene,
                              const rt_render_options *options,

@@ -11,7 +11,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+
+#include "cli_clock.h"
 
 struct view_session {
     rt_scene *scene;
@@ -34,13 +35,6 @@ struct view_session {
     double started;             /* monotonic seconds */
     double finished;
 };
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
 
 static void notify(view_session *session)
 {
@@ -79,7 +73,7 @@ static void *worker_main(void *arg)
 
     pthread_mutex_lock(&session->lock);
     session->status = status;
-    session->finished = now_seconds();
+    session->finished = cli_clock_seconds();
     if (status == RT_OK)
         session->state = VIEW_DONE;
     else if (status == RT_ERR_CANCELLED)
@@ -204,7 +198,7 @@ rt_status view_session_start(view_session *session)
     session->generation++;
     session->state = VIEW_RENDERING;
     session->status = RT_OK;
-    session->started = now_seconds();
+    session->started = cli_clock_seconds();
     session->finished = session->started;
     pthread_mutex_unlock(&session->lock);
     rt_cancel_reset(session->cancel);
@@ -270,7 +264,7 @@ void view_session_get_progress(view_session *session,
     progress->max_depth = session->options.render.max_depth;
     progress->status = session->status;
     progress->generation = session->generation;
-    double end = session->state == VIEW_RENDERING ? now_seconds()
+    double end = session->state == VIEW_RENDERING ? cli_clock_seconds()
                                                   : session->finished;
     progress->seconds = session->state == VIEW_IDLE
                             ? 0.0 : end - session->started;

@@ -19,28 +19,9 @@
 #                            another scene: the job fails with a message
 #                            from that rank, and writes no image
 # The environment gives the programs: RT_EXPORT, RT_EXPORT_MPI, MPIEXEC,
-# RT_SOURCE_DIR.  Open MPI needs --oversubscribe to start more ranks than
-# cores, and leave to run as root (CI runs as root).
-set -u
+# RT_SOURCE_DIR (mpi_session.sh starts the ranks).
 mode=$1
-scenes=$RT_SOURCE_DIR/scenes
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-
-launcher=("$MPIEXEC")
-if "$MPIEXEC" --version 2>&1 | grep -q -i -e 'Open MPI' -e 'OpenRTE'; then
-    launcher+=(--oversubscribe)
-    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-    # no ssh or rsh needed (a fresh CI machine has none): every rank is
-    # local, so the agent, which must exist, is never called
-    export OMPI_MCA_plm_rsh_agent=false
-    # a container may forbid the cross-memory attach (ptrace) that shared
-    # memory uses for large messages: plain copies work everywhere
-    export OMPI_MCA_btl_vader_single_copy_mechanism=none
-fi
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/mpi_session.sh"
 
 # same NAME NP OPTIONS...: rt-export and rt-export-mpi -np NP (with
 # $bands, its own option, too), compared.

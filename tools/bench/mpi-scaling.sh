@@ -16,9 +16,9 @@
 # one or two ranks to a single core by default, where -j 2 would run both
 # threads on that core.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-scene=${2:-$here/../shared/spd-scenes/balls-s2.scn}
+root=$(cd "$(dirname "$0")/../.." && pwd)    # the project
+build=${1:-$root/build}
+scene=${2:-$root/../shared/spd-scenes/balls-s2.scn}
 size=${3:-1920x1080}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_plm_rsh_agent=false  # local ranks only: never called

@@ -18,17 +18,11 @@ build=${1:?usage: povray-times.sh BUILD_DIR [SCENE.scn ...]}
 shift
 scenes=("$@")
 if [ ${#scenes[@]} -eq 0 ]; then
-    scenes=("$here"/../../shared/spd-scenes/*.scn)
+    scenes=("$here"/../../../shared/spd-scenes/*.scn)
 fi
 runs=${RUNS:-3}
 size=${SIZE:-400x400}
-width=${size%x*}
-height=${size#*x}
-depth=5
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$here/setup.sh"
 
 ours() {    # scene accel -> seconds of render
     for _ in $(seq "$runs"); do

@@ -20,7 +20,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 build=${1:?usage: ray-budget.sh BUILD_DIR [SCENE.scn ...]}
 shift
 scenes=("$@")
-[ ${#scenes[@]} -eq 0 ] && scenes=("$here/../scenes/cubes.scn" "$here/../scenes/mirror.scn")
+[ ${#scenes[@]} -eq 0 ] && scenes=("$here/../../scenes/cubes.scn" "$here/../../scenes/mirror.scn")
 size=${SIZE:-480x270}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -22,13 +22,7 @@ build=${1:?usage: small-scenes.sh BUILD_DIR [BASELINE_BUILD_DIR]}
 base=${2:-}
 rounds=${ROUNDS:-5}
 size=${SIZE:-1920x1080}
-width=${size%x*}
-height=${size#*x}
-depth=5
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$here/setup.sh"
 
 # The clock: a dependent chain of additions, timed in CPU seconds.
 cat >"$work/clock.c" <<'EOF'
@@ -76,7 +70,7 @@ command -v povray >/dev/null && have_pov=1
 scenes=(cubes mirror)
 for s in "${scenes[@]}"; do
     [ $have_pov = 1 ] &&
-        python3 "$here/scn2pov.py" "$here/../scenes/$s.scn" "$depth" \
+        python3 "$here/scn2pov.py" "$here/../../scenes/$s.scn" "$depth" \
             "$width" "$height" >"$work/$s.pov"
 done
 
@@ -84,13 +78,13 @@ done
 for r in $(seq "$rounds"); do
     echo "clock - $("$work/clock")" >>"$work/log"
     for s in "${scenes[@]}"; do
-        echo "$s new2 $(ours "$build" "$here/../scenes/$s.scn" 2)" >>"$work/log"
+        echo "$s new2 $(ours "$build" "$here/../../scenes/$s.scn" 2)" >>"$work/log"
         [ -n "$base" ] &&
-            echo "$s base2 $(ours "$base" "$here/../scenes/$s.scn" 2)" >>"$work/log"
+            echo "$s base2 $(ours "$base" "$here/../../scenes/$s.scn" 2)" >>"$work/log"
         [ $have_pov = 1 ] && echo "$s pov $(pov "$s")" >>"$work/log"
-        echo "$s new1 $(ours "$build" "$here/../scenes/$s.scn" 1)" >>"$work/log"
+        echo "$s new1 $(ours "$build" "$here/../../scenes/$s.scn" 1)" >>"$work/log"
         [ -n "$base" ] &&
-            echo "$s base1 $(ours "$base" "$here/../scenes/$s.scn" 1)" >>"$work/log"
+            echo "$s base1 $(ours "$base" "$here/../../scenes/$s.scn" 1)" >>"$work/log"
     done
 done
 

@@ -27,7 +27,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #if defined(__linux__)
 #include <linux/perf_event.h>
 #include <sys/ioctl.h>
@@ -36,6 +35,7 @@
 #endif
 
 #include "bench_scenes.h"
+#include "cli_clock.h"
 #include "raytrace/raytrace.h"
 
 #define MAX_RUNS 101
@@ -114,13 +114,6 @@ typedef struct result {
     double median_cycles, median_instructions;
     rt_render_stats stats;  /* of the last run */
 } result;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static int compare_double(const void *a, const void *b)
 {
@@ -211,9 +204,9 @@ static int measure_once(const rt_scene *scene, const setting *s,
     int instructions = counter_open(PERF_COUNT_HW_INSTRUCTIONS);
     counter_start(cycles);
     counter_start(instructions);
-    double start = now();
+    double start = cli_clock_seconds();
     rt_status status = rt_render(scene, &options, image, NULL);
-    r->times[run] = now() - start;
+    r->times[run] = cli_seconds_since(start);
     r->cycles[run] = counter_stop(cycles);
     r->instructions[run] = counter_stop(instructions);
 #if defined(__linux__)

@@ -1,0 +1,259 @@
+/*
+ * view_navigation.c - what the user does in rt-view's window besides
+ * loading and saving (see view_app.h): the keys, a click's explanation
+ * drawn over the image with its text, the debug views, the depth and the
+ * help.
+ */
+#include "view_app_internal.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#define SDL_MAIN_HANDLED
+#include <SDL.h>
+
+#include "view_explain.h"
+#include "view_overlay.h"
+#include "view_window.h"
+
+const char view_app_keys_help[] =
+    "Keys (rt-view --help says more)\n"
+    "click    explain that pixel: its rays over\n"
+    "         the image (camera white, shadow\n"
+    "         yellow, blocked red, reflected\n"
+    "         cyan, refracted magenta) and text\n"
+    "right click, Esc  clear (Esc: else quit)\n"
+    "N normal   D depth   F facet index\n"
+    "L shadow term E (again: next light)\n"
+    "B bounces  I N.S (again: next light)\n"
+    "V, 0     the picture\n"
+    "S save   R reload   + - depth\n"
+    "H, F1    this help  Q quit\n";
+
+/* How the title and the messages name each view (an rt_debug_view). */
+static const char *const view_names[] = {
+    "", "normal view", "depth view", "facet view", "shadow view",
+    "bounces view", "N.S view",
+};
+
+const char *view_app__view_name(int view)
+{
+    return view >= 0 && view <= RT_VIEW_NS ? view_names[view] : "";
+}
+
+static void change_depth(view_app *app, int delta)
+{
+    int depth = app->options.render.max_depth + delta;
+    if (depth < 0 || depth > VIEW_MAX_DEPTH)
+        return;
+    app->options.render.max_depth = depth;
+    if (app->session) {
+        view_session_set_depth(app->session, depth);
+        view_app__start_render(app);
+    }
+}
+
+/* The overlay and text panel for what is shown now. */
+static void update_overlay(view_app *app)
+{
+    const view_explanation *e = &app->explanation;
+    view_projection projection;
+    if (app->session && e->text) {
+        rt_render_options options =
+            view_app__render_options(app, view_session_scene(app->session));
+        view_projection_init(&projection, view_session_scene(app->session),
+                             &options);
+        view_window_set_overlay(app->window, &projection, e->segments,
+                                e->segment_count);
+    } else {
+        view_window_set_overlay(app->window, NULL, NULL, 0);
+    }
+    /* The text away from the clicked pixel. */
+    int bottom = 0;
+    if (app->session && e->text && !app->help)
+        bottom = e->y < view_session_image(app->session)->height / 2;
+    view_window_set_text_place(app->window, bottom);
+    view_window_set_text(app->window, app->help ? view_app_keys_help
+                                                : e->text);
+    app->redraw = 1;
+}
+
+void view_app__clear_explanation(view_app *app)
+{
+    if (app->explanation.text == NULL && !app->help)
+        return;
+    view_explanation_release(&app->explanation);
+    app->help = 0;
+    update_overlay(app);
+}
+
+int view_app_explain(view_app *app, int x, int y)
+{
+    if (app->session == NULL)
+        return 0;
+    const rt_scene *scene = view_session_scene(app->session);
+    rt_render_options options = view_app__render_options(app, scene);
+    view_explanation explanation;
+    rt_error error;
+    memset(&error, 0, sizeof error);
+    rt_status status = view_explain_pixel(scene, &options, app->shown_path,
+                                          x, y, &explanation, &error);
+    if (status != RT_OK) {
+        char message[sizeof app->message];
+        snprintf(message, sizeof message, "cannot explain pixel (%d, %d): %s",
+                 x, y, error.message[0] ? error.message
+                                        : rt_status_string(status));
+        view_app__show_message(app, message);
+        return 0;
+    }
+    view_explanation_release(&app->explanation);
+    app->explanation = explanation;
+    app->help = 0;
+    fputs(explanation.text, stdout);
+    fflush(stdout);
+    update_overlay(app);
+    return 1;
+}
+
+int view_app_click(view_app *app, int window_x, int window_y)
+{
+    int x, y;
+    if (!view_window_pixel_at(app->window, window_x, window_y, &x, &y))
+        return 0;
+    return view_app_explain(app, x, y);
+}
+
+const view_explanation *view_app_explanation(const view_app *app)
+{
+    return app->explanation.text ? &app->explanation : NULL;
+}
+
+/* Renders debug view app->view into the window (or the picture again). */
+int view_app__show_view(view_app *app)
+{
+    if (app->session == NULL)
+        return 0;
+    app->redraw = 1;
+    if (app->view == 0)
+        return view_window_show_image(app->window, NULL);
+    const rt_scene *scene = view_session_scene(app->session);
+    rt_render_options options = view_app__render_options(app, scene);
+    const rt_image *picture = view_session_image(app->session);
+    rt_image image;
+    rt_error error;
+    memset(&error, 0, sizeof error);
+    rt_status status = rt_image_init(&image, picture->width, picture->height,
+                                     NULL);
+    if (status == RT_OK) {
+        status = rt_render_view(scene, &options, (rt_debug_view)app->view,
+                                app->view_light, &image, &error);
+        if (status == RT_OK)
+            view_window_show_image(app->window, &image);
+        rt_image_release(&image);
+    }
+    if (status != RT_OK) {
+        char message[sizeof app->message];
+        snprintf(message, sizeof message, "cannot show the %s: %s",
+                 view_names[app->view],
+                 error.message[0] ? error.message : rt_status_string(status));
+        app->view = 0;
+        view_window_show_image(app->window, NULL);
+        view_app__show_message(app, message);
+        return 0;
+    }
+    view_app__update_title(app);
+    return 1;
+}
+
+int view_app_set_view(view_app *app, int view, int light)
+{
+    if (view < 0 || view > RT_VIEW_NS)
+        return 0;
+    app->view = view;
+    app->view_light = light;
+    int shown = view_app__show_view(app);
+    view_app__update_title(app);
+    return shown;
+}
+
+/* L and I: the view of the first light, then of the next one. */
+static void cycle_light_view(view_app *app, int view)
+{
+    int light = 0;
+    if (app->view == view && app->session) {
+        rt_scene_info info;
+        rt_scene_get_info(view_session_scene(app->session), &info);
+        light = (app->view_light + 1) % info.light_count;
+    }
+    view_app_set_view(app, view, light);
+}
+
+static void toggle_help(view_app *app)
+{
+    app->help = !app->help;
+    if (app->help && !view_window_has_text(app->window))
+        fputs(view_app_keys_help, stdout);
+    update_overlay(app);
+}
+
+/* The keys that show a debug view (0: the picture); the light views
+ * (L, I) step through the lights when pressed again. */
+static const struct {
+    int key;
+    int view;
+    int per_light;
+} view_keys[] = {
+    {SDLK_n, RT_VIEW_NORMAL, 0}, {SDLK_d, RT_VIEW_DEPTH, 0},
+    {SDLK_f, RT_VIEW_FACET, 0},  {SDLK_b, RT_VIEW_BOUNCES, 0},
+    {SDLK_l, RT_VIEW_SHADOW, 1}, {SDLK_i, RT_VIEW_NS, 1},
+    {SDLK_v, 0, 0},              {SDLK_0, 0, 0},
+    {SDLK_KP_0, 0, 0},
+};
+
+void view_app_key(view_app *app, int key, int repeat)
+{
+    for (size_t i = 0; i < sizeof view_keys / sizeof *view_keys; i++)
+        if (view_keys[i].key == key) {
+            if (view_keys[i].per_light)
+                cycle_light_view(app, view_keys[i].view);
+            else
+                view_app_set_view(app, view_keys[i].view, 0);
+            return;
+        }
+    char path[4096];
+    switch (key) {
+    case SDLK_ESCAPE:
+        if (app->explanation.text || app->help)
+            view_app__clear_explanation(app);
+        else
+            app->quit = 1;
+        break;
+    case SDLK_q:
+        app->quit = 1;
+        break;
+    case SDLK_h:
+    case SDLK_F1:
+        if (!repeat)
+            toggle_help(app);
+        break;
+    case SDLK_s:
+        if (!repeat)
+            view_app_save(app, path, sizeof path);
+        break;
+    case SDLK_r:
+        if (!repeat)
+            view_app_reload(app);
+        break;
+    case SDLK_PLUS:
+    case SDLK_EQUALS:
+    case SDLK_KP_PLUS:
+        change_depth(app, +1);
+        break;
+    case SDLK_MINUS:
+    case SDLK_KP_MINUS:
+        change_depth(app, -1);
+        break;
+    default:
+        break;
+    }
+}
