@@ -38,14 +38,14 @@ if(TARGET raytrace_rt_view)
       COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb.sh")
     set_tests_properties(viewer_xvfb PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
-      SKIP_RETURN_CODE 77 TIMEOUT 120)
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
     # The watched scene replaced by a FIFO: the window still answers, and
     # Escape and SIGTERM end it (tests/viewer_xvfb_fifo.sh).
     add_test(NAME viewer_xvfb_fifo
       COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb_fifo.sh")
     set_tests_properties(viewer_xvfb_fifo PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
-      SKIP_RETURN_CODE 77 TIMEOUT 120)
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
     # One X server test at a time: each starts its own Xvfb, and two
     # starting at once under a loaded machine raced for a display.
     set_tests_properties(viewer_xvfb viewer_xvfb_fifo PROPERTIES
