@@ -27,10 +27,10 @@
 
 #include <stdatomic.h>
 #include <stdint.h>
-#include <time.h>
 
 #include "kernel.h"
 
+#include "base/clock.h"
 #include "base/fast_inv_sqrt.h"
 #include "kernel/plane_crossing.h"
 #include "real_impl.h"

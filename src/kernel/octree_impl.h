@@ -406,13 +406,6 @@ static double condition(double v[3][3])
     return area2 > 0 ? longest / area2 : INFINITY;
 }
 
-static double seconds_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /*
  * Marks the slivers (sliver[i] non-zero for facet i): puts them last in
  * each leaf's list (both parts keep their ascending order), counts them
@@ -465,7 +458,7 @@ static int mark_slivers(octree *t, const unsigned char *sliver)
 static octree *octree_build(const KERNEL_T *k, const rt_cancel *cancel,
                             rt_status *status)
 {
-    double start = seconds_now();
+    double start = rt__clock_seconds();
     *status = RT_ERR_NOMEM;
     octree *t = calloc(1, sizeof *t);
     if (t == NULL)
@@ -553,7 +546,7 @@ static octree *octree_build(const KERNEL_T *k, const rt_cancel *cancel,
                    (size_t)k->count * sizeof *t->always +
                    (t->slivers ? (size_t)t->node_count * sizeof *t->slivers
                                : 0);
-        t->build_seconds = seconds_now() - start;
+        t->build_seconds = rt__clock_seconds() - start;
         t->sliver_count = slivers;
         *status = RT_OK;
         return t;

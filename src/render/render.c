@@ -15,9 +15,10 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
+#include "base/cancel.h"
+#include "base/clock.h"
 #include "base/error.h"
 #include "raytrace/render.h"
 #include "kernel/kernel.h"
@@ -58,45 +59,6 @@ typedef struct job {
     uint64_t pixels;
 } job;
 
-struct rt_cancel {
-    atomic_int raised;
-};
-
-rt_status rt_cancel_create(rt_cancel **cancel, rt_error *error)
-{
-    if (cancel == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "expected a pointer to fill");
-    *cancel = malloc(sizeof **cancel);
-    if (*cancel == NULL)
-        return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
-                             "out of memory for a cancellation flag");
-    atomic_init(&(*cancel)->raised, 0);
-    return RT_OK;
-}
-
-void rt_cancel_destroy(rt_cancel *cancel)
-{
-    free(cancel);
-}
-
-void rt_cancel_request(rt_cancel *cancel)
-{
-    if (cancel != NULL)
-        atomic_store(&cancel->raised, 1);
-}
-
-void rt_cancel_reset(rt_cancel *cancel)
-{
-    if (cancel != NULL)
-        atomic_store(&cancel->raised, 0);
-}
-
-int rt_cancel_requested(const rt_cancel *cancel)
-{
-    return cancel != NULL && atomic_load(&((rt_cancel *)cancel)->raised);
-}
-
 /* Non-zero once the render must stop: its callback said so, or the caller
  * raised its cancellation flag (which is then remembered for the job). */
 static int stopping(job *j)
@@ -104,8 +66,7 @@ static int stopping(job *j)
     if (atomic_load_explicit(&j->cancelled, memory_order_relaxed))
         return 1;
     rt_cancel *cancel = j->options->cancel;
-    if (cancel != NULL &&
-        atomic_load_explicit(&cancel->raised, memory_order_relaxed)) {
+    if (cancel != NULL && rt__cancel_raised(cancel)) {
         atomic_store(&j->cancelled, 1);
         return 1;
     }
@@ -426,13 +387,6 @@ static int thread_count(int requested, int rows)
     if (n > rows)
         n = rows;
     return n < 1 ? 1 : n;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
 static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
@@ -841,7 +795,7 @@ rt_status rt_render_rows(const rt_scene *scene,
     if (grid == 0)
         return RT_ERR_ARGUMENT;
 
-    double start = now_seconds();
+    double start = rt__clock_seconds();
     job j = {.width = width, .image = image, .row_end = row_end};
     rt_kernel_eye_d *eye_d;
     rt_kernel_eye_f *eye_f;
@@ -879,7 +833,7 @@ rt_status rt_render_rows(const rt_scene *scene,
     rt__kernel_f_eye_free(eye_f);
 
     if (options->stats != NULL)
-        fill_stats(&j, now_seconds() - start, options->stats);
+        fill_stats(&j, rt__clock_seconds() - start, options->stats);
     if (status == RT_OK && atomic_load(&j.cancelled))
         return rt__error_set(error, RT_ERR_CANCELLED, NULL, 0, 0,
                              "the render was cancelled");
