@@ -84,25 +84,24 @@ typedef struct rt_trace_settings {
                                        rays for rt_explain_pixel */
 } rt_trace_settings;
 
-/* Work counters of one thread; summed into rt_render_stats at the end. */
+/* Work counters of one thread: the THREAD counters of RT_STATS_MAP
+ * (raytrace/render.h), by the same names, summed into rt_render_stats at
+ * the end, and what the kernel counts for the render's own use. */
+#define RT_COUNTER_FIELD_(type, name, origin, merge, group, key, title)     \
+    RT_COUNTER_##origin##_(type, name)
+#define RT_COUNTER_THREAD_(type, name) type name;
+#define RT_COUNTER_RENDER_(type, name)
+#define RT_COUNTER_OCTREE_(type, name)
 typedef struct rt_counters {
-    uint64_t shadow_rays;
-    uint64_t reflection_rays;
-    uint64_t tests;
-    uint64_t shadow_rays_skipped;
-    uint64_t reflection_rays_skipped;
-    uint64_t refraction_rays;
-    uint64_t refraction_rays_skipped;   /* t > 0 but the depth limit, or
-                                           a total internal reflection */
+    RT_STATS_MAP(RT_COUNTER_FIELD_)
     uint64_t early_exit_saved;  /* facets a shadow ray did not test after
                                    its first hit */
-    uint64_t accel_queries;     /* queries through the octree */
-    uint64_t accel_leaves;      /* leaves they visited */
-    uint64_t accel_tests;       /* facets they tested */
-    uint64_t accel_fallbacks;   /* of them, done by brute force after all
-                                   (origin too far, too many hits) */
     int out_of_memory;          /* a ray tree outgrew the memory */
 } rt_counters;
+#undef RT_COUNTER_FIELD_
+#undef RT_COUNTER_THREAD_
+#undef RT_COUNTER_RENDER_
+#undef RT_COUNTER_OCTREE_
 
 /* An octree lists at most this many facet references per facet (plus
  * RT_OCTREE_REFERENCE_EXTRA) in all its leaves together. */

@@ -408,13 +408,13 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
         int skipped = skip[l];
         blocked[l] = blocker[l] >= 0;
         if (blocker[l] < 0) {
-            counters->tests += (uint64_t)k->count - (skipped >= 0);
+            counters->ray_facet_tests += (uint64_t)k->count - (skipped >= 0);
             continue;
         }
         int made = (blocker[l] / BLOCK_LANES + 1) * BLOCK_LANES;
         if (made > k->count)
             made = k->count;
-        counters->tests += (uint64_t)made - (skipped >= 0 && skipped < made);
+        counters->ray_facet_tests += (uint64_t)made - (skipped >= 0 && skipped < made);
         counters->early_exit_saved +=
             (uint64_t)(k->count - made) - (skipped >= made);
     }
@@ -573,7 +573,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
                 continue;
             hit h[VW];
             int found[VW];
-            packet_nearest(k, eye, &t, r, n, h, found, &counters->tests);
+            packet_nearest(k, eye, &t, r, n, h, found, &counters->ray_facet_tests);
             first_bounce first[VW];
             packet_first_bounce(k, origin, incoming, found, h, n, first,
                                 counters);

@@ -273,7 +273,7 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
            0) {
         int first, count;
         leaf_part(tree, &w, leaf, &first, &count);
-        counters->accel_leaves++;
+        counters->accel_leaves_visited++;
         int batch[BLOCK_LANES], n = 0;
         for (int j = 0; j < count; j++) {
             int i = tree->refs[first + j];
@@ -289,8 +289,8 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
         if (n > 0 && !collect_batch(&c, k, simd, r, t_max, batch, n))
             goto overflow;
     }
-    counters->tests += c.made;
-    counters->accel_tests += c.made;
+    counters->ray_facet_tests += c.made;
+    counters->accel_facet_tests += c.made;
     counters->accel_queries++;
     if (c.n == 0)
         return 0;
@@ -298,10 +298,10 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
         goto brute_force;   /* reach grew past a node left out */
     return fold_near(k, &c, h);
 overflow:
-    counters->tests += c.made;
+    counters->ray_facet_tests += c.made;
 brute_force:
     counters->accel_fallbacks++;
-    return nearest_brute(k, simd, NULL, r, t_max, skip, h, &counters->tests);
+    return nearest_brute(k, simd, NULL, r, t_max, skip, h, &counters->ray_facet_tests);
 }
 
 /* any_hit_brute() through the octree: the same answer, as the facets that
@@ -314,7 +314,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
     double grow = fat_growth(tree, r);
     if (grow < 0) {
         counters->accel_fallbacks++;
-        return any_hit_brute(k, simd, r, t_max, skip, &counters->tests,
+        return any_hit_brute(k, simd, r, t_max, skip, &counters->ray_facet_tests,
                              &counters->early_exit_saved);
     }
     hit ignored;
@@ -335,7 +335,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
     int leaf;
     while (!found && (leaf = walk_next(&w, INFINITY)) >= 0) {
         const onode *node = &tree->nodes[leaf];
-        counters->accel_leaves++;
+        counters->accel_leaves_visited++;
         int batch[BLOCK_LANES], n = 0;
         for (int j = 0; j < node->count && !found; j++) {
             int i = tree->refs[node->first + j];
@@ -350,8 +350,8 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
         if (!found && n > 0)
             found = blocked_batch(k, simd, r, t_max, batch, n, &made);
     }
-    counters->tests += made;
-    counters->accel_tests += made;
+    counters->ray_facet_tests += made;
+    counters->accel_facet_tests += made;
     counters->accel_queries++;
     return found;
 }
@@ -364,7 +364,7 @@ static inline int nearest(const KERNEL_T *k, int simd, const octree *tree,
 {
     if (tree != NULL)
         return nearest_octree(k, simd, tree, r, t_max, skip, h, counters);
-    return nearest_brute(k, simd, eye, r, t_max, skip, h, &counters->tests);
+    return nearest_brute(k, simd, eye, r, t_max, skip, h, &counters->ray_facet_tests);
 }
 
 static inline int any_hit(const KERNEL_T *k, int simd, const octree *tree,
@@ -372,6 +372,6 @@ static inline int any_hit(const KERNEL_T *k, int simd, const octree *tree,
 {
     if (tree != NULL)
         return any_hit_octree(k, simd, tree, r, t_max, skip, counters);
-    return any_hit_brute(k, simd, r, t_max, skip, &counters->tests,
+    return any_hit_brute(k, simd, r, t_max, skip, &counters->ray_facet_tests,
                          &counters->early_exit_saved);
 }

@@ -55,8 +55,6 @@ typedef struct job {
     pthread_mutex_t stats_lock;
     rt_counters totals;
     rt_octree_info octree;  /* when settings.octree */
-    uint64_t camera_rays;
-    uint64_t pixels;
 } job;
 
 /* Non-zero once the render must stop: its callback said so, or the caller
@@ -237,11 +235,11 @@ static inline rt_ray centre_ray(const job *j, int i, int row)
 /* The colour of pixel (i, row) of the whole image: the mean of its
  * samples. */
 static rt_color render_pixel(const job *j, int i, int row,
-                             rt_counters *counters, uint64_t *rays)
+                             rt_counters *counters)
 {
     int n = j->grid;
     if (n == 1) {
-        (*rays)++;
+        counters->camera_rays++;
         return trace(j, centre_ray(j, i, row), counters);
     }
     rt_color sum = {0.0, 0.0, 0.0};
@@ -249,7 +247,7 @@ static rt_color render_pixel(const job *j, int i, int row,
         for (int sx = 0; sx < n; sx++) {
             rt_color c = trace(j, sample_ray(j, i, row, sx, sy), counters);
             sum.r += c.r, sum.g += c.g, sum.b += c.b;
-            (*rays)++;
+            counters->camera_rays++;
         }
     }
     double inv = 1.0 / (n * n);
@@ -270,8 +268,7 @@ static rt_color render_pixel(const job *j, int i, int row,
  * Pinhole renders only: every ray leaves the observer.
  */
 static void render_span(const job *j, int row, int i0, int i1,
-                        unsigned char *out, rt_counters *counters,
-                        uint64_t *rays)
+                        unsigned char *out, rt_counters *counters)
 {
     rt_vec3 directions[SPAN_RAYS];
     rt_color colors[SPAN_RAYS];
@@ -289,7 +286,7 @@ static void render_span(const job *j, int row, int i0, int i1,
     else
         rt__kernel_f_trace_span(j->kernel.f, j->camera.observer, directions,
                                 m, &j->settings, counters, colors);
-    *rays += (uint64_t)m;
+    counters->camera_rays += (uint64_t)m;
     double inv = 1.0 / (n * n);
     for (int i = i0, k = 0; i < i1; i++) {
         rt_color c = colors[k++];
@@ -307,8 +304,7 @@ static void render_span(const job *j, int row, int i0, int i1,
 }
 
 /* Renders one row; returns 0 if the render was cancelled meanwhile. */
-static int render_row(job *j, int row, rt_counters *counters,
-                      uint64_t *rays)
+static int render_row(job *j, int row, rt_counters *counters)
 {
     unsigned char *out = rt_image_pixel(j->image, 0, row);
     if (j->settings.eye != NULL && j->aperture == 0.0) {
@@ -319,14 +315,14 @@ static int render_row(job *j, int row, rt_counters *counters,
             if (stopping(j))
                 return 0;
             int end = i + per_span < j->width ? i + per_span : j->width;
-            render_span(j, row, i, end, out, counters, rays);
+            render_span(j, row, i, end, out, counters);
         }
         return 1;
     }
     for (int i = 0; i < j->width; i++) {
         if (stopping(j))
             return 0;
-        rt_color c = render_pixel(j, j->x0 + i, j->y0 + row, counters, rays);
+        rt_color c = render_pixel(j, j->x0 + i, j->y0 + row, counters);
         out[3 * i + 0] = rt_channel_to_byte(c.r);
         out[3 * i + 1] = rt_channel_to_byte(c.g);
         out[3 * i + 2] = rt_channel_to_byte(c.b);
@@ -334,18 +330,34 @@ static int render_row(job *j, int row, rt_counters *counters,
     return 1;
 }
 
+/* Adds a thread's counters into the render's. */
+static void add_counters(rt_counters *to, const rt_counters *from)
+{
+#define ADD_THREAD_(type, name) to->name += from->name;
+#define ADD_RENDER_(type, name)
+#define ADD_OCTREE_(type, name)
+#define ADD_(type, name, origin, merge, group, key, title)                   \
+    ADD_##origin##_(type, name)
+    RT_STATS_MAP(ADD_)
+#undef ADD_
+#undef ADD_THREAD_
+#undef ADD_RENDER_
+#undef ADD_OCTREE_
+    to->early_exit_saved += from->early_exit_saved;
+    to->out_of_memory |= from->out_of_memory;
+}
+
 static void *worker(void *argument)
 {
     job *j = argument;
     rt_counters counters = {0};
-    uint64_t rays = 0, pixels = 0;
     for (;;) {
         int row = atomic_fetch_add(&j->next_row, 1);
         if (row >= j->row_end)
             break;
-        if (!render_row(j, row, &counters, &rays))
+        if (!render_row(j, row, &counters))
             break;
-        pixels += (uint64_t)j->width;
+        counters.pixels += (uint64_t)j->width;
         if (j->options->on_row != NULL) {
             pthread_mutex_lock(&j->callback_lock);
             int go_on = atomic_load(&j->cancelled) ||
@@ -358,21 +370,7 @@ static void *worker(void *argument)
         }
     }
     pthread_mutex_lock(&j->stats_lock);
-    j->totals.shadow_rays += counters.shadow_rays;
-    j->totals.reflection_rays += counters.reflection_rays;
-    j->totals.tests += counters.tests;
-    j->totals.shadow_rays_skipped += counters.shadow_rays_skipped;
-    j->totals.reflection_rays_skipped += counters.reflection_rays_skipped;
-    j->totals.refraction_rays += counters.refraction_rays;
-    j->totals.refraction_rays_skipped += counters.refraction_rays_skipped;
-    j->totals.out_of_memory |= counters.out_of_memory;
-    j->totals.early_exit_saved += counters.early_exit_saved;
-    j->totals.accel_queries += counters.accel_queries;
-    j->totals.accel_leaves += counters.accel_leaves;
-    j->totals.accel_tests += counters.accel_tests;
-    j->totals.accel_fallbacks += counters.accel_fallbacks;
-    j->camera_rays += rays;
-    j->pixels += pixels;
+    add_counters(&j->totals, &counters);
     pthread_mutex_unlock(&j->stats_lock);
     return NULL;
 }
@@ -389,28 +387,41 @@ static int thread_count(int requested, int rows)
     return n < 1 ? 1 : n;
 }
 
+/* The rays a render cast: the sum of RT_STATS_MAP's group `rays`. */
+static uint64_t rays_cast(const rt_render_stats *s)
+{
+    uint64_t all = 0;
+#define RAYS_(type, name, origin, merge, group, key, title)                  \
+    if (strcmp(#group, "rays") == 0)                                         \
+        all += (uint64_t)s->name;
+    RT_STATS_MAP(RAYS_)
+#undef RAYS_
+    return all;
+}
+
 static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
 {
     memset(stats, 0, sizeof *stats);
-    stats->camera_rays = j->camera_rays;
-    stats->pixels = j->pixels;
-    stats->shadow_rays = j->totals.shadow_rays;
-    stats->reflection_rays = j->totals.reflection_rays;
-    stats->ray_facet_tests = j->totals.tests;
-    stats->shadow_rays_skipped = j->totals.shadow_rays_skipped;
-    stats->reflection_rays_skipped = j->totals.reflection_rays_skipped;
-    stats->refraction_rays = j->totals.refraction_rays;
-    stats->refraction_rays_skipped = j->totals.refraction_rays_skipped;
+    /* the THREAD counters, summed over the threads */
+#define COPY_THREAD_(type, name) stats->name = j->totals.name;
+#define COPY_RENDER_(type, name)
+#define COPY_OCTREE_(type, name)
+#define COPY_(type, name, origin, merge, group, key, title)                  \
+    COPY_##origin##_(type, name)
+    RT_STATS_MAP(COPY_)
+#undef COPY_
+#undef COPY_THREAD_
+#undef COPY_RENDER_
+#undef COPY_OCTREE_
     stats->seconds = seconds;
     /* what a renderer that skips nothing would test on top */
     uint64_t live = (uint64_t)j->scene->live_count;
     uint64_t dead = (uint64_t)(j->scene->facet_count - j->scene->live_count);
     uint64_t skipped_rays = stats->shadow_rays_skipped +
                             stats->reflection_rays_skipped;
-    uint64_t cast = stats->camera_rays + stats->shadow_rays +
-                    stats->reflection_rays + stats->refraction_rays;
-    stats->ray_facet_tests_skipped =
-        skipped_rays * (live + dead) + cast * dead + j->totals.early_exit_saved;
+    stats->ray_facet_tests_skipped = skipped_rays * (live + dead) +
+                                     rays_cast(stats) * dead +
+                                     j->totals.early_exit_saved;
     if (j->settings.octree) {
         stats->accel_used = 1;
         stats->accel_build_seconds = j->octree.build_seconds;
@@ -420,10 +431,6 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
         stats->accel_references = j->octree.references;
         stats->accel_always = j->octree.always;
         stats->accel_bytes = j->octree.bytes;
-        stats->accel_queries = j->totals.accel_queries;
-        stats->accel_leaves_visited = j->totals.accel_leaves;
-        stats->accel_facet_tests = j->totals.accel_tests;
-        stats->accel_fallbacks = j->totals.accel_fallbacks;
         stats->accel_facets = (uint64_t)j->scene->live_count;
     }
 }
@@ -906,12 +913,11 @@ rt_color rt__pixel_tracer_trace(rt_pixel_tracer *tracer, int x, int y,
 {
     job *j = &tracer->j;
     rt_counters counters = {0};
-    uint64_t rays = 0;
     int i = j->x0 + x, row = j->y0 + y, n = j->grid;
     j->settings.recorder = recorder;
     rt_color c;
     if (sample < 0)
-        c = render_pixel(j, i, row, &counters, &rays);
+        c = render_pixel(j, i, row, &counters);
     else if (n == 1)
         c = trace(j, centre_ray(j, i, row), &counters);
     else
