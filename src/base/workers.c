@@ -101,11 +101,16 @@ void rt__workers_destroy(rt_workers *w)
 {
     if (w == NULL)
         return;
+    if (getpid() != w->owner) {
+        /* A forked child has none of these threads, and its copies of the
+         * lock and conditions may show their waiters: it only frees. */
+        free(w);
+        return;
+    }
     pthread_mutex_lock(&w->lock);
     w->quit = 1;
     pthread_cond_broadcast(&w->wake);
-    /* A forked child has none of these threads: none to wait for. */
-    while (w->alive > 0 && getpid() == w->owner)
+    while (w->alive > 0)
         pthread_cond_wait(&w->done, &w->lock);
     pthread_mutex_unlock(&w->lock);
     pthread_cond_destroy(&w->done);
