@@ -12,4 +12,4 @@ raytrace_add_suite(test_packets INTERNAL)
 
 # What a render prepares once and reuses: the scene's eye, the team of
 # threads (src/base/workers.c), the statistics generated from RT_STATS_MAP.
-raytrace_add_suite(test_prepared INTERNAL)
+raytrace_add_suite(test_prepared INTERNAL SOURCES support/viewer_testutil.c)

@@ -9,7 +9,6 @@
  * same whatever their number.
  */
 #include <check.h>
-#include <dirent.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -18,12 +17,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "base/workers.h"
 #include "scene/scene_internal.h"
 #include "testutil.h"
+#include "viewer_testutil.h"
 
 /* A half-mirror ground and a matte triangle above it that the ground
  * reflects, lit from the side (the handout's format). */
@@ -85,33 +84,6 @@ START_TEST(an_octree_or_scalar_render_builds_no_eye)
 END_TEST
 
 /* ---- the team of threads -------------------------------------------- */
-
-/* The threads of this process (/proc/self/task). */
-static int thread_count(void)
-{
-    DIR *dir = opendir("/proc/self/task");
-    ck_assert_msg(dir != NULL, "cannot open /proc/self/task");
-    int count = 0;
-    struct dirent *entry;
-    while ((entry = readdir(dir)) != NULL)
-        if (entry->d_name[0] != '.')
-            count++;
-    closedir(dir);
-    return count;
-}
-
-/* The thread count once it is down to `expected`, or what it is after
- * `seconds` (a bound on a wait, not a measurement). */
-static int settled_thread_count(int expected, double seconds)
-{
-    struct timespec pause = {0, 1000000};
-    int count;
-    for (double waited = 0;
-         (count = thread_count()) > expected && waited < seconds;
-         waited += 0.001)
-        nanosleep(&pause, NULL);
-    return count;
-}
 
 typedef struct tally {
     atomic_int runs;
@@ -209,17 +181,17 @@ END_TEST
 
 START_TEST(a_team_holds_no_thread_once_idle_or_destroyed)
 {
-    int before = thread_count();
+    int before = viewer_baseline_thread_count();
     rt_workers *team = rt__workers_create();
     ck_assert_ptr_nonnull(team);
     tally t = {.team = NULL};
     run_counted(team, 4, &t);
     /* idle: its threads end after RT_WORKERS_LINGER */
-    ck_assert_int_eq(settled_thread_count(before, 10), before);
+    ck_assert_int_eq(viewer_settled_thread_count(before, 10), before);
     run_counted(team, 4, &t);   /* and start again when needed */
     ck_assert_int_eq(atomic_load(&t.runs), 4);
     rt__workers_destroy(team);
-    ck_assert_int_eq(settled_thread_count(before, 10), before);
+    ck_assert_int_eq(viewer_settled_thread_count(before, 10), before);
 }
 END_TEST
 

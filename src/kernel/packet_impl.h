@@ -14,7 +14,7 @@
  *        e(sx, sy) = e0 + sx ex + sy ey,
  *    where (ex, ey, e0) is the cross product of the edge's two vertices
  *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy qz) -
- *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as trace()
+ *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as a trace
  *    prepares them, and the box of the shears of those of one frame is
  *    taken from the shears themselves: each edge function stays in an
  *    interval over it.  Where one edge's interval is below -slack and
@@ -39,10 +39,10 @@
  * the diagonals where the dominant axis changes) is traced alone, as
  * kernel_trace() traces it.  The rest of each ray's path (shading, shadow
  * rays, reflections) is the one trace_opaque() of trace_impl.h, told what
- * the packet found of the first hit (a known_hit, shade_impl.h).  Only renders of scenes with at most
- * PACKET_MAX_FACETS facets, brute force, the fast loops and no
- * transparency take this path; the work it saves is the filter's, which
- * dominates there.
+ * the packet found of the first hit (a known_hit, shade_impl.h).  Only
+ * renders of scenes with at most PACKET_MAX_FACETS facets, brute force,
+ * the fast loops and no transparency take this path; the work it saves is
+ * the filter's, which dominates there.
  */
 
 #if HAVE_AVX2_KERNEL
@@ -416,7 +416,8 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
         int made = (blocker[l] / BLOCK_LANES + 1) * BLOCK_LANES;
         if (made > k->count)
             made = k->count;
-        counters->ray_facet_tests += (uint64_t)made - (skipped >= 0 && skipped < made);
+        counters->ray_facet_tests +=
+            (uint64_t)made - (skipped >= 0 && skipped < made);
         counters->early_exit_saved +=
             (uint64_t)(k->count - made) - (skipped >= made);
     }
@@ -532,7 +533,7 @@ static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
     int fast = c.fast;
     for (int begin = 0; begin < count; begin += CHUNK_RAYS) {
         int end = begin + CHUNK_RAYS < count ? begin + CHUNK_RAYS : count;
-        /* The chunk's rays as trace() prepares them; the tile's frame is
+        /* The chunk's rays as a trace prepares them; the tile's frame is
          * the first ray's, its box of shears the hull of the shears of the
          * rays of that frame - so every ray packed below lies in it. */
         ray q[CHUNK_RAYS];
