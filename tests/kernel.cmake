@@ -9,3 +9,7 @@ raytrace_add_shared_test(test_kernel)
 # The camera-ray packets (src/kernel/packet_impl.h) against the scalar
 # loops: scenes built in memory to stress the tile and shadow culls.
 raytrace_add_suite(test_packets INTERNAL)
+
+# What a render prepares once and reuses: the scene's eye, the team of
+# threads (src/base/workers.c), the statistics generated from RT_STATS_MAP.
+raytrace_add_suite(test_prepared INTERNAL SOURCES support/viewer_testutil.c)

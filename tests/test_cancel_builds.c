@@ -104,11 +104,11 @@ START_TEST(a_raised_flag_stops_the_kernels_construction)
     rt_kernel_source source;
     rt__scene_kernel_source(scene, &source);
     source.cancel = cancel;
-    ck_assert_ptr_null(rt__kernel_d_create(&source));
-    ck_assert_ptr_null(rt__kernel_f_create(&source));
+    ck_assert_ptr_null(rt__kernel_double_ops.create(&source));
+    ck_assert_ptr_null(rt__kernel_float_ops.create(&source));
     /* the scene's lazy float kernel: nothing kept, built next time */
-    ck_assert_ptr_null(rt__scene_kernel_f(scene, cancel));
-    ck_assert_ptr_nonnull(rt__scene_kernel_f(scene, NULL));
+    ck_assert_ptr_null(rt__scene_kernel(scene, RT_PRECISION_FLOAT, cancel));
+    ck_assert_ptr_nonnull(rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL));
     rt_cancel_destroy(cancel);
     rt_scene_destroy(scene);
     free_grid(&g);

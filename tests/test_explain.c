@@ -56,17 +56,19 @@ static int check_every_pixel(const rt_scene *scene, rt_render_options *o,
         return 0;
     }
     ck_assert_msg(status == RT_OK, "%s: %s", what, error.message);
-    rt_pixel_tracer *tracer;
-    ck_assert_int_eq(rt__pixel_tracer_create(scene, o, &tracer, NULL), RT_OK);
+    rt_frame frame;
+    int frame_width, frame_height, samples;
+    ck_assert_int_eq(rt__frame_setup(scene, o, &frame, &frame_width,
+                                     &frame_height, &samples, NULL),
+                     RT_OK);
     for (int y = 0; y < height; y++)
         for (int x = 0; x < width; x++) {
             rt_ray_tree *tree;
             status = rt_explain_pixel(scene, o, x, y, -1, &tree, &error);
             ck_assert_msg(status == RT_OK, "%s: %s", what, error.message);
             rt_color value = rt_ray_tree_value(tree);
-            int oom = 0;
-            rt_color plain = rt__pixel_tracer_trace(tracer, x, y, -1, NULL,
-                                                    &oom);
+            rt_counters counters = {0};
+            rt_color plain = rt__frame_pixel(&frame, x, y, -1, &counters);
             ck_assert_msg(memcmp(&value, &plain, sizeof value) == 0,
                           "%s pixel %d,%d: explained %.17g %.17g %.17g, "
                           "rendered %.17g %.17g %.17g", what, x, y, value.r,
@@ -84,7 +86,6 @@ static int check_every_pixel(const rt_scene *scene, rt_render_options *o,
             ck_assert_int_eq(nodes[0].kind, RT_RAY_CAMERA);
             rt_ray_tree_destroy(tree);
         }
-    rt__pixel_tracer_destroy(tracer);
     rt_image_release(&image);
     return 1;
 }

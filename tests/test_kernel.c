@@ -184,7 +184,7 @@ static rt_scene *grid_scene(int n, int jitter)
 
 /* The same colour, bit for bit, and the same rays, from the scalar loops
  * and the fast ones (with and without the eye at the ray's origin). */
-static void check_ray(const rt_scene *scene, const rt_kernel_f *kf,
+static void check_ray(const rt_scene *scene, const rt_kernel *kf,
                       rt_vec3 origin, rt_vec3 target)
 {
     rt_vec3 direction = {target.x - origin.x, target.y - origin.y,
@@ -195,16 +195,16 @@ static void check_ray(const rt_scene *scene, const rt_kernel_f *kf,
     rt_trace_settings fast = {5, 0, RT_KERNEL_AUTO, NULL};
     rt_counters c1 = {0}, c2 = {0}, c3 = {0};
 
-    rt_color expected = rt__kernel_d_trace(scene->kernel, origin, direction,
+    rt_color expected = rt__kernel_trace(scene->kernel, origin, direction,
                                            &scalar, &c1);
-    rt_color got = rt__kernel_d_trace(scene->kernel, origin, direction,
+    rt_color got = rt__kernel_trace(scene->kernel, origin, direction,
                                       &fast, &c2);
-    rt_kernel_eye_d *eye_d = rt__kernel_d_eye_create(scene->kernel, origin);
+    rt_kernel_eye *eye_d = rt__kernel_eye_create(scene->kernel, origin);
     ck_assert_ptr_nonnull(eye_d);
     fast.eye = eye_d;
-    rt_color from_eye = rt__kernel_d_trace(scene->kernel, origin, direction,
+    rt_color from_eye = rt__kernel_trace(scene->kernel, origin, direction,
                                            &fast, &c3);
-    rt__kernel_d_eye_free(eye_d);
+    rt__kernel_eye_destroy(scene->kernel, eye_d);
     ck_assert_msg(memcmp(&expected, &got, sizeof got) == 0 &&
                       memcmp(&expected, &from_eye, sizeof got) == 0,
                   "double: (%.17g %.17g %.17g) -> (%.17g %.17g %.17g): "
@@ -214,13 +214,13 @@ static void check_ray(const rt_scene *scene, const rt_kernel_f *kf,
     ck_assert_uint_eq(c1.reflection_rays, c3.reflection_rays);
 
     fast.eye = NULL;
-    expected = rt__kernel_f_trace(kf, origin, direction, &scalar, &c1);
-    got = rt__kernel_f_trace(kf, origin, direction, &fast, &c2);
-    rt_kernel_eye_f *eye_f = rt__kernel_f_eye_create(kf, origin);
+    expected = rt__kernel_trace(kf, origin, direction, &scalar, &c1);
+    got = rt__kernel_trace(kf, origin, direction, &fast, &c2);
+    rt_kernel_eye *eye_f = rt__kernel_eye_create(kf, origin);
     ck_assert_ptr_nonnull(eye_f);
     fast.eye = eye_f;
-    from_eye = rt__kernel_f_trace(kf, origin, direction, &fast, &c3);
-    rt__kernel_f_eye_free(eye_f);
+    from_eye = rt__kernel_trace(kf, origin, direction, &fast, &c3);
+    rt__kernel_eye_destroy(kf, eye_f);
     ck_assert_msg(memcmp(&expected, &got, sizeof got) == 0 &&
                       memcmp(&expected, &from_eye, sizeof got) == 0,
                   "float: (%.9g %.9g %.9g) -> (%.9g %.9g %.9g): "
@@ -234,7 +234,7 @@ static void check_rays_on_grid(int jitter)
     rt_scene *scene = grid_scene(n, jitter);
     rt_kernel_source source;
     rt__scene_kernel_source(scene, &source);
-    rt_kernel_f *kf = rt__kernel_f_create(&source);
+    rt_kernel *kf = rt__kernel_float_ops.create(&source);
     ck_assert_ptr_nonnull(kf);
     for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 4000); i++) {
         rt_vec3 origin = {uniform(-2, n + 2), uniform(-2, n + 2),
@@ -273,7 +273,7 @@ static void check_rays_on_grid(int jitter)
                           (rt_vec3){x, y + 0.25, 1.0});
             }
     }
-    rt__kernel_f_free(kf);
+    rt__kernel_destroy(kf);
     rt_scene_destroy(scene);
 }
 
@@ -296,7 +296,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
     ck_assert_int_eq(bench_soup(300, 8, 8, &scene, &error), RT_OK);
     rt_kernel_source source;
     rt__scene_kernel_source(scene, &source);
-    rt_kernel_f *kf = rt__kernel_f_create(&source);
+    rt_kernel *kf = rt__kernel_float_ops.create(&source);
     ck_assert_ptr_nonnull(kf);
     for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 5000); i++) {
         rt_vec3 origin = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
@@ -309,7 +309,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
                                uniform(-1, 1)};
         check_ray(scene, kf, origin, target);
     }
-    rt__kernel_f_free(kf);
+    rt__kernel_destroy(kf);
     rt_scene_destroy(scene);
 }
 END_TEST

@@ -163,10 +163,10 @@ static void keep_repeats(rt_scene *s)
             s->facets[i].degenerate = 0;
             s->live_count++;
         }
-    rt__kernel_d_free(s->kernel);
+    rt__kernel_destroy(s->kernel);
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
-    s->kernel = rt__kernel_d_create(&source);
+    s->kernel = rt__kernel_double_ops.create(&source);
     ck_assert_ptr_nonnull(s->kernel);
 }
 

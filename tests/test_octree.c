@@ -413,7 +413,7 @@ END_TEST
 
 /* The same colour, bit for bit, through the octree and brute force, in
  * both precisions. */
-static void check_ray(const rt_kernel_d *kd, const rt_kernel_f *kf,
+static void check_ray(const rt_kernel *kd, const rt_kernel *kf,
                       rt_vec3 origin, rt_vec3 target)
 {
     rt_vec3 d = {target.x - origin.x, target.y - origin.y,
@@ -424,14 +424,14 @@ static void check_ray(const rt_kernel_d *kd, const rt_kernel_f *kf,
         rt_trace_settings brute = {5, 0, (rt_kernel_choice)kernel, NULL, 0};
         rt_trace_settings tree = {5, 0, (rt_kernel_choice)kernel, NULL, 1};
         rt_counters c = {0};
-        rt_color a = rt__kernel_d_trace(kd, origin, d, &brute, &c);
-        rt_color b = rt__kernel_d_trace(kd, origin, d, &tree, &c);
+        rt_color a = rt__kernel_trace(kd, origin, d, &brute, &c);
+        rt_color b = rt__kernel_trace(kd, origin, d, &tree, &c);
         ck_assert_msg(memcmp(&a, &b, sizeof a) == 0,
                       "double: (%.17g %.17g %.17g) -> (%.17g %.17g %.17g)",
                       origin.x, origin.y, origin.z, target.x, target.y,
                       target.z);
-        a = rt__kernel_f_trace(kf, origin, d, &brute, &c);
-        b = rt__kernel_f_trace(kf, origin, d, &tree, &c);
+        a = rt__kernel_trace(kf, origin, d, &brute, &c);
+        b = rt__kernel_trace(kf, origin, d, &tree, &c);
         ck_assert_msg(memcmp(&a, &b, sizeof a) == 0,
                       "float: (%.9g %.9g %.9g) -> (%.9g %.9g %.9g)",
                       origin.x, origin.y, origin.z, target.x, target.y,
@@ -462,10 +462,10 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
 {
     const int n = 16;
     rt_scene *scene = grid_scene(n);
-    const rt_kernel_f *kf = rt__scene_kernel_f(scene, NULL);
+    const rt_kernel *kf = rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL);
     ck_assert_ptr_nonnull(kf);
-    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
-    ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
     int count = memcheck() ? 300 : 6000;
     for (int i = 0; i < count; i++) {
         rt_vec3 o, t;
@@ -499,10 +499,10 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(bench_soup(3000, 8, 8, &scene, &error), RT_OK);
-    const rt_kernel_f *kf = rt__scene_kernel_f(scene, NULL);
+    const rt_kernel *kf = rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL);
     ck_assert_ptr_nonnull(kf);
-    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, NULL), RT_OK);
-    ck_assert_int_eq(rt__kernel_f_octree_prepare(kf, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
     for (int i = 0; i < (memcheck() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;
@@ -581,7 +581,8 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     ck_assert_double_eq(first.accel_build_seconds,
                         second.accel_build_seconds);
     ck_assert_uint_eq(first.accel_bytes, second.accel_bytes);
-    ck_assert_ptr_eq(rt__scene_kernel_f(scene, NULL), rt__scene_kernel_f(scene, NULL));
+    ck_assert_ptr_eq(rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL),
+                     rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL));
     ck_assert_int_eq(rt_test_image_diff(&a, &b, NULL), 0);
     rt_image_release(&a);
     rt_image_release(&b);

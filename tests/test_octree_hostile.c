@@ -99,11 +99,8 @@ static rt_status kept_tree(const rt_scene *scene, rt_precision precision,
     rt_cancel *raised;
     ck_assert_int_eq(rt_cancel_create(&raised, NULL), RT_OK);
     rt_cancel_request(raised);
-    rt_status status =
-        precision == RT_PRECISION_FLOAT
-            ? rt__kernel_f_octree_prepare(rt__scene_kernel_f(scene, NULL), raised,
-                                          info)
-            : rt__kernel_d_octree_prepare(scene->kernel, raised, info);
+    rt_status status = rt__kernel_prepare_octree(
+        rt__scene_kernel(scene, precision, NULL), raised, info);
     rt_cancel_destroy(raised);
     return status;
 }
@@ -161,7 +158,7 @@ START_TEST(a_render_cancelled_from_another_thread_keeps_no_partial_octree)
 {
     rt_scene *scene = big_soup(), *twin = big_soup();
     rt_octree_info whole, left;
-    ck_assert_int_eq(rt__kernel_d_octree_prepare(twin->kernel, NULL, &whole),
+    ck_assert_int_eq(rt__kernel_prepare_octree(twin->kernel, NULL, &whole),
                      RT_OK);
     rt_cancel *cancel;
     ck_assert_int_eq(rt_cancel_create(&cancel, NULL), RT_OK);
@@ -289,7 +286,7 @@ START_TEST(a_fan_of_slivers_renders_identically_and_no_ray_tests_it_whole)
     double angle = 0.5;     /* conditions from about 12,000 */
     rt_scene *scene = sliver_fan_scene(corners, angle, memcheck() ? 12 : 64);
     rt_octree_info info;
-    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, &info),
+    ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, &info),
                      RT_OK);
     ck_assert_uint_eq(info.slivers, (uint64_t)corners - 1);
     ck_assert_uint_eq(info.always, 0);
@@ -347,7 +344,7 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
                                  (rt_vec3){0, 0, 0}, 0.45,
                                  (rt_vec3){-2.5, -3, 4}, memcheck() ? 12 : 48);
     rt_octree_info tree;
-    ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, &tree),
+    ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, &tree),
                      RT_OK);
     ck_assert_uint_ge(tree.slivers, (uint64_t)corners - 1);
     for (int p = 0; p < 2; p++) {

@@ -105,32 +105,52 @@ static const char *accel_name(rt_accel a)
                                   : "auto";
 }
 
+/* The rays a render cast: the sum of RT_STATS_MAP's group `rays`. */
+static unsigned long long rays_in_all(const rt_render_stats *s)
+{
+    unsigned long long all = 0;
+#define RAYS_(type, name, origin, merge, group, key, title)                  \
+    if (strcmp(#group, "rays") == 0)                                         \
+        all += (unsigned long long)s->name;
+    RT_STATS_MAP(RAYS_)
+#undef RAYS_
+    return all;
+}
+
+/* The counters of RT_STATS_MAP's `group`, in its order, as
+ * "<value> <title>" joined by ", " (the integer counters of the groups
+ * the text lists). */
+static void print_text_group(FILE *out, const rt_render_stats *s,
+                             const char *group)
+{
+    const char *between = "";
+#define TEXT_(type, name, origin, merge, grp, key, title)                    \
+    if (strcmp(#grp, group) == 0) {                                          \
+        fprintf(out, "%s%llu %s", between, (unsigned long long)s->name,     \
+                title);                                                      \
+        between = ", ";                                                      \
+    }
+    RT_STATS_MAP(TEXT_)
+#undef TEXT_
+}
+
 void cli_print_stats_text(FILE *out, const rt_render_stats *s,
                           const cli_render_report *r)
 {
     const rt_render_options *o = &r->settings->render;
     double tests_per_second = s->seconds > 0 ? s->ray_facet_tests / s->seconds
                                              : 0.0;
-    unsigned long long cast = s->camera_rays + s->shadow_rays +
-                              s->reflection_rays + s->refraction_rays;
+    fputs("rays: ", out);
+    print_text_group(out, s, "rays");
+    fprintf(out, " (%llu in all)\nskipped by the scene analysis: ",
+            rays_in_all(s));
+    print_text_group(out, s, "rays_skipped");
     fprintf(out,
-            "rays: %llu camera, %llu shadow, %llu reflection, %llu refraction "
-            "(%llu in all)\n"
-            "skipped by the scene analysis: %llu shadow rays "
-            "(N.S <= 0 or d = 0), %llu reflection rays (k = 0), %llu "
-            "refraction rays (depth limit or total internal reflection; "
-            "none where t = 0)\n"
+            "\n"
             "ray-facet tests: %llu (%.3g per second); %llu more without the "
             "analysis and early exits\n"
             "time: load %.3f s, render %.3f s (%s threads, %s kernel, %s), "
             "write %.3f s\n",
-            (unsigned long long)s->camera_rays,
-            (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->reflection_rays,
-            (unsigned long long)s->refraction_rays, cast,
-            (unsigned long long)s->shadow_rays_skipped,
-            (unsigned long long)s->reflection_rays_skipped,
-            (unsigned long long)s->refraction_rays_skipped,
             (unsigned long long)s->ray_facet_tests, tests_per_second,
             (unsigned long long)s->ray_facet_tests_skipped, r->load_seconds,
             s->seconds, o->threads == 0 ? "all" : "the given",
@@ -156,10 +176,36 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
             (unsigned long long)s->accel_fallbacks);
 }
 
-static void json_u64(FILE *out, const char *name, uint64_t value,
-                     const char *after)
+static void json_number(FILE *out, const char *name, uint64_t value)
 {
-    fprintf(out, "\"%s\":%llu%s", name, (unsigned long long)value, after);
+    fprintf(out, "\"%s\":%llu", name, (unsigned long long)value);
+}
+
+static void json_int(FILE *out, const char *name, int value)
+{
+    fprintf(out, "\"%s\":%d", name, value);
+}
+
+static void json_seconds(FILE *out, const char *name, double value)
+{
+    fprintf(out, "\"%s\":%.6f", name, value);
+}
+
+/* The members "key":value of RT_STATS_MAP's `group`, in its order, each
+ * but the first after a comma. */
+static void print_json_group(FILE *out, const rt_render_stats *s,
+                             const char *group)
+{
+    const char *between = "";
+#define JSON_(type, name, origin, merge, grp, key, title)                    \
+    if (strcmp(#grp, group) == 0) {                                          \
+        fputs(between, out);                                                 \
+        _Generic(s->name, double: json_seconds, int: json_int,               \
+                 default: json_number)(out, #key, s->name);                  \
+        between = ",";                                                       \
+    }
+    RT_STATS_MAP(JSON_)
+#undef JSON_
 }
 
 static void print_json_octree(FILE *out, const rt_render_stats *s)
@@ -168,18 +214,9 @@ static void print_json_octree(FILE *out, const rt_render_stats *s)
         fputs("\"octree\":null", out);
         return;
     }
-    fprintf(out, "\"octree\":{\"build_seconds\":%.6f,", s->accel_build_seconds);
-    json_u64(out, "nodes", s->accel_nodes, ",");
-    json_u64(out, "leaves", s->accel_leaves, ",");
-    fprintf(out, "\"depth\":%d,", s->accel_depth);
-    json_u64(out, "references", s->accel_references, ",");
-    json_u64(out, "always_tested", s->accel_always, ",");
-    json_u64(out, "bytes", s->accel_bytes, ",");
-    json_u64(out, "queries", s->accel_queries, ",");
-    json_u64(out, "leaves_visited", s->accel_leaves_visited, ",");
-    json_u64(out, "facet_tests", s->accel_facet_tests, ",");
-    json_u64(out, "fallbacks", s->accel_fallbacks, ",");
-    json_u64(out, "facets", s->accel_facets, "}");
+    fputs("\"octree\":{", out);
+    print_json_group(out, s, "octree");
+    fputc('}', out);
 }
 
 static void print_json_settings(FILE *out, const cli_render_report *r)
@@ -214,24 +251,18 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
     cli_json_string(out, r->output);
     fprintf(out, ",\"format\":\"%s\",\"width\":%d,\"height\":%d,",
             rt_image_format_name(r->format), r->width, r->height);
-    json_u64(out, "pixels", s->pixels, ",");
+    print_json_group(out, s, "image");
+    fputc(',', out);
     print_json_settings(out, r);
-    fprintf(out, "\"seconds\":{\"load\":%.6f,\"render\":%.6f,"
-                 "\"write\":%.6f},",
-            r->load_seconds, s->seconds, r->write_seconds);
-    fputs("\"rays\":{", out);
-    json_u64(out, "camera", s->camera_rays, ",");
-    json_u64(out, "shadow", s->shadow_rays, ",");
-    json_u64(out, "reflection", s->reflection_rays, ",");
-    json_u64(out, "refraction", s->refraction_rays, ",");
-    json_u64(out, "total", s->camera_rays + s->shadow_rays +
-                               s->reflection_rays + s->refraction_rays,
-             "},\"rays_skipped\":{");
-    json_u64(out, "shadow", s->shadow_rays_skipped, ",");
-    json_u64(out, "reflection", s->reflection_rays_skipped, ",");
-    json_u64(out, "refraction", s->refraction_rays_skipped, "},");
-    json_u64(out, "ray_facet_tests", s->ray_facet_tests, ",");
-    json_u64(out, "ray_facet_tests_skipped", s->ray_facet_tests_skipped, ",");
+    fprintf(out, "\"seconds\":{\"load\":%.6f,", r->load_seconds);
+    print_json_group(out, s, "seconds");
+    fprintf(out, ",\"write\":%.6f},\"rays\":{", r->write_seconds);
+    print_json_group(out, s, "rays");
+    fprintf(out, ",\"total\":%llu},\"rays_skipped\":{", rays_in_all(s));
+    print_json_group(out, s, "rays_skipped");
+    fputs("},", out);
+    print_json_group(out, s, "tests");
+    fputc(',', out);
     print_json_octree(out, s);
     fputs("}\n", out);
 }

@@ -325,31 +325,21 @@ int farm_default_band_rows(int rows, int ranks)
 
 void farm_stats_add(rt_render_stats *to, const rt_render_stats *from)
 {
-    to->camera_rays += from->camera_rays;
-    to->shadow_rays += from->shadow_rays;
-    to->reflection_rays += from->reflection_rays;
-    to->ray_facet_tests += from->ray_facet_tests;
-    to->shadow_rays_skipped += from->shadow_rays_skipped;
-    to->reflection_rays_skipped += from->reflection_rays_skipped;
-    to->pixels += from->pixels;
-    to->seconds += from->seconds;
-    to->ray_facet_tests_skipped += from->ray_facet_tests_skipped;
-    to->accel_queries += from->accel_queries;
-    to->accel_leaves_visited += from->accel_leaves_visited;
-    to->accel_facet_tests += from->accel_facet_tests;
-    to->accel_fallbacks += from->accel_fallbacks;
-    to->refraction_rays += from->refraction_rays;
-    to->refraction_rays_skipped += from->refraction_rays_skipped;
-    if (from->accel_used) {     /* one octree per rank, built once */
-        to->accel_used = 1;
-        if (from->accel_build_seconds > to->accel_build_seconds)
-            to->accel_build_seconds = from->accel_build_seconds;
-        to->accel_nodes = from->accel_nodes;
-        to->accel_leaves = from->accel_leaves;
-        to->accel_depth = from->accel_depth;
-        to->accel_references = from->accel_references;
-        to->accel_always = from->accel_always;
-        to->accel_bytes = from->accel_bytes;
-        to->accel_facets = from->accel_facets;
-    }
+    /* Field by field as RT_STATS_MAP says: SUM adds, MAX keeps the
+     * largest, SAME (the octree's figures: one octree per rank, built
+     * once) is taken from any band that used it. */
+#define MERGE_SUM_(name) to->name += from->name;
+#define MERGE_MAX_(name)                                                     \
+    if (from->name > to->name)                                               \
+        to->name = from->name;
+#define MERGE_SAME_(name)                                                    \
+    if (from->accel_used)                                                    \
+        to->name = from->name;
+#define MERGE_(type, name, origin, merge, group, key, title)                 \
+    MERGE_##merge##_(name)
+    RT_STATS_MAP(MERGE_)
+#undef MERGE_
+#undef MERGE_SUM_
+#undef MERGE_MAX_
+#undef MERGE_SAME_
 }

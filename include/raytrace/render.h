@@ -38,48 +38,82 @@ extern "C" {
  * casts a shadow ray at every hit, a reflected ray at every hit before the
  * depth limit, tests every facet of the file (zero-area ones too) and lets
  * shadow rays test every facet even after a hit.
+ *
+ * RT_STATS_MAP(X) declares them once, in the order of rt_render_stats's
+ * fields: X(type, name, origin, merge, group, key, title), where
+ *   origin  THREAD: counted by each rendering thread and summed at the end;
+ *           RENDER: filled once at the end of the render;
+ *           OCTREE: a property of the octree the render used;
+ *   merge   how the stats of parts of one image (bands rendered apart)
+ *           combine: SUM, MAX, or SAME (the octree's, the same in every
+ *           part that used it: kept from any of them);
+ *   group, key   where the JSON of --stats=json lists it (an object of
+ *           docs/command-line.md, or `image`, `tests`: the top level;
+ *           `flag`: not listed, it says whether `octree` is);
+ *   title   what the text of --stats calls it (rays and rays skipped),
+ *           or says what it is.
+ * The library, the programs' reports and the MPI farm's sum are generated
+ * from it, so a counter is added in one place.
  */
+#define RT_STATS_MAP(X)                                                      \
+    X(uint64_t, camera_rays, THREAD, SUM, rays, camera, "camera")            \
+    X(uint64_t, shadow_rays, THREAD, SUM, rays, shadow, "shadow")            \
+    X(uint64_t, reflection_rays, THREAD, SUM, rays, reflection,              \
+      "reflection")                                                          \
+    X(uint64_t, ray_facet_tests, THREAD, SUM, tests, ray_facet_tests,        \
+      "ray-facet tests")                                                     \
+    X(uint64_t, shadow_rays_skipped, THREAD, SUM, rays_skipped, shadow,      \
+      "shadow rays (N.S <= 0 or d = 0)")                                     \
+    X(uint64_t, reflection_rays_skipped, THREAD, SUM, rays_skipped,          \
+      reflection, "reflection rays (k = 0)")                                 \
+    X(uint64_t, pixels, THREAD, SUM, image, pixels, "pixels")                \
+    /* the wall-clock time of the render */                                  \
+    X(double, seconds, RENDER, SUM, seconds, render, "render")               \
+    /* tests the renderer that skips nothing would make on top: the skipped  \
+       rays (one pass each; their own reflections not counted), the          \
+       zero-area facets, the shadow rays' tests after their first hit */     \
+    X(uint64_t, ray_facet_tests_skipped, RENDER, SUM, tests,                 \
+      ray_facet_tests_skipped, "more without the analysis and early exits")  \
+    /* 1: the render used the octree, whose figures follow; 0: brute force   \
+       (and they are 0) */                                                   \
+    X(int, accel_used, OCTREE, MAX, flag, used, "octree")                    \
+    /* the time its construction took (once per scene and precision, by the  \
+       first render that used it) */                                         \
+    X(double, accel_build_seconds, OCTREE, MAX, octree, build_seconds,       \
+      "built in")                                                            \
+    X(uint64_t, accel_nodes, OCTREE, SAME, octree, nodes, "nodes")           \
+    X(uint64_t, accel_leaves, OCTREE, SAME, octree, leaves, "leaves")        \
+    X(int, accel_depth, OCTREE, SAME, octree, depth, "depth")                \
+    X(uint64_t, accel_references, OCTREE, SAME, octree, references,          \
+      "facet entries in all leaves")                                         \
+    /* 0 but for scenes whose coordinates leave no room for cells (slivers   \
+       are in leaves) */                                                     \
+    X(uint64_t, accel_always, OCTREE, SAME, octree, always_tested,           \
+      "facets every ray tests, in no leaf")                                  \
+    X(uint64_t, accel_bytes, OCTREE, SAME, octree, bytes, "its memory")      \
+    X(uint64_t, accel_queries, THREAD, SUM, octree, queries,                 \
+      "ray queries through it")                                              \
+    X(uint64_t, accel_leaves_visited, THREAD, SUM, octree, leaves_visited,   \
+      "leaves visited")                                                      \
+    /* brute force tests every live facet per query */                       \
+    X(uint64_t, accel_facet_tests, THREAD, SUM, octree, facet_tests,         \
+      "facets tested")                                                       \
+    X(uint64_t, accel_fallbacks, THREAD, SUM, octree, fallbacks,             \
+      "queries left to brute force")                                         \
+    X(uint64_t, accel_facets, OCTREE, SAME, octree, facets,                  \
+      "live facets: what brute force tests per query")                       \
+    X(uint64_t, refraction_rays, THREAD, SUM, rays, refraction,              \
+      "refraction")                                                          \
+    /* the mirror ray of a total internal reflection carries t */            \
+    X(uint64_t, refraction_rays_skipped, THREAD, SUM, rays_skipped,          \
+      refraction, "refraction rays (depth limit or total internal "          \
+                  "reflection; none where t = 0)")
+
 typedef struct rt_render_stats {
-    uint64_t camera_rays;
-    uint64_t shadow_rays;
-    uint64_t reflection_rays;
-    uint64_t ray_facet_tests;
-    uint64_t shadow_rays_skipped;     /* N.S <= 0 or k = 1: no ray needed */
-    uint64_t reflection_rays_skipped; /* k = 0: no ray needed */
-    uint64_t pixels;
-    double seconds;                   /* wall-clock time of the render */
-    uint64_t ray_facet_tests_skipped; /* tests the renderer that skips
-                                         nothing would make on top: the
-                                         skipped rays (one pass each; their
-                                         own reflections not counted), the
-                                         zero-area facets, the shadow rays'
-                                         tests after their first hit */
-    /* The octree, when the render used one (accel_used non-zero): */
-    int accel_used;                   /* 1: the octree, 0: brute force */
-    double accel_build_seconds;       /* the time its construction took
-                                         (once per scene and precision, by
-                                         the first render that used it) */
-    uint64_t accel_nodes;
-    uint64_t accel_leaves;
-    int accel_depth;
-    uint64_t accel_references;        /* facet entries in all leaves */
-    uint64_t accel_always;            /* facets every ray tests, in no
-                                         leaf: 0 but for scenes whose
-                                         coordinates leave no room for
-                                         cells (slivers are in leaves) */
-    uint64_t accel_bytes;             /* its memory */
-    uint64_t accel_queries;           /* ray queries through it */
-    uint64_t accel_leaves_visited;
-    uint64_t accel_facet_tests;       /* facets those queries tested;
-                                         brute force tests every live facet
-                                         per query */
-    uint64_t accel_fallbacks;         /* queries it left to brute force */
-    uint64_t accel_facets;            /* live facets: what brute force
-                                         tests per query */
-    uint64_t refraction_rays;         /* rays refracted at facets t > 0 */
-    uint64_t refraction_rays_skipped; /* t > 0 but past the depth limit,
-                                         or a total internal reflection
-                                         (the mirror ray carries t) */
+#define RT_STATS_FIELD_(type, name, origin, merge, group, key, title)      \
+    type name;
+    RT_STATS_MAP(RT_STATS_FIELD_)
+#undef RT_STATS_FIELD_
 } rt_render_stats;
 
 /*

@@ -3,30 +3,24 @@
  *
  * One implementation (kernel_impl.h and its parts, in this directory) is
  * compiled twice, by kernel_double.c and kernel_float.c, so both precisions
- * run exactly the same algorithm:
- * the watertight intersection test, the error-bounded offset of secondary
- * ray origins, and the shading of docs/rendering-model.md.  A kernel is
- * built from a scene's facet records and holds, in its own precision, only
- * what the renderer reads: the facets that can be hit and their precomputed data.
- * A kernel is immutable once built: any number of threads may trace with it.
- * Its octree (octree_impl.h) is built on first request, once, under a lock
- * (rt__kernel_*_octree_prepare, thread-safe), and only read afterwards;
+ * run exactly the same algorithm: the watertight intersection test, the
+ * error-bounded offset of secondary ray origins, and the shading of
+ * docs/rendering-model.md.  Each precision is reached through its table of
+ * operations, rt__kernel_double_ops or rt__kernel_float_ops (SQLite's
+ * sqlite3_io_methods is the model): a caller picks a table once, to create
+ * a kernel, and afterwards holds an rt_kernel without knowing its
+ * precision; the rt__kernel_* functions below call through the table.
+ *
+ * A kernel is built from a scene's facet records and holds, in its own
+ * precision, only what the renderer reads: the facets that can be hit and
+ * their precomputed data.  It is immutable once built: any number of
+ * threads may trace with it.  Its octree is built on first request, once,
+ * under a lock (prepare_octree, thread-safe), and only read afterwards;
  * once it exists, nearest_hit and occluded go through it (same answers).
- * octree_prepare returns RT_OK (built now or before; *info filled when not
- * NULL), RT_ERR_NOMEM, or RT_ERR_CANCELLED when `cancel` (may be NULL) is
- * raised before the build completes: the build then stops within about a
- * millisecond and nothing is kept, so a later call builds it again.
  *
- * trace_span traces `count` camera rays from `origin` (the camera rays of
- * neighbouring pixels), the colour of ray j into colors[j], each exactly
- * as trace would give it; with the eye of `origin` in settings, a scene of
- * few facets and the fast loops it shares work among them
- * (packet_impl.h).
- *
- * An eye is what one render adds to a kernel: the facets' vertices minus
- * the camera's observer, computed once, so that the fast loops save those
- * subtractions for every camera ray (rays from elsewhere ignore it).  It is
- * immutable too, and must not outlive its kernel.
+ * Nothing here calls up into the scene, the render or the formats: what a
+ * trace reports besides its colour (the counters, a recorder's callbacks)
+ * is handed in by the caller.
  */
 #ifndef RAYTRACE_KERNEL_H
 #define RAYTRACE_KERNEL_H
@@ -54,62 +48,79 @@ typedef struct rt_kernel_source {
 #define RT_KERNEL_POLL 65536
 
 /*
- * A recorder (explain.c) is told every ray a trace casts, in order, with
- * what it hits and what each term adds to the colour, the values exactly as
- * the trace computes them; the trace's own arithmetic does not change.
- * Node indices are the recorder's; -1 (a full recorder) makes the calls
- * about that ray and its descendants no-ops.
+ * A recorder is told every ray a trace casts, in order, with what it hits
+ * and what each term adds to the colour, the values exactly as the trace
+ * computes them; the trace's own arithmetic does not change.  The kernel
+ * calls the callbacks with `state`; node indices are the recorder's, and
+ * -1 (a full recorder) makes the calls about that ray and its descendants
+ * no-ops.  rt_explain_pixel's recorder is in src/render/explain.c.
  */
-typedef struct rt_trace_recorder rt_trace_recorder;
-int rt__record_ray(rt_trace_recorder *recorder, int kind, int parent,
-                   int depth, rt_vec3 origin, rt_vec3 direction,
-                   double weight);
-void rt__record_hit(rt_trace_recorder *recorder, int node, int facet,
-                    double t, rt_vec3 point, rt_vec3 normal);
-void rt__record_miss(rt_trace_recorder *recorder, int node, rt_color own);
-void rt__record_shadow(rt_trace_recorder *recorder, int parent, int light,
-                       rt_vec3 origin, rt_vec3 direction, double n_dot_s,
-                       int cast, int blocked, int blocker, rt_color own);
+typedef struct rt_trace_recorder {
+    void *state;
+    /* A ray of `kind` (rt_ray_kind) from node `parent` (-1: a camera ray):
+     * its node, or -1 when it is not recorded. */
+    int (*on_ray)(void *state, int kind, int parent, int depth,
+                  rt_vec3 origin, rt_vec3 direction, double weight);
+    /* Ray `node` met facet record `facet` at distance t. */
+    void (*on_hit)(void *state, int node, int facet, double t,
+                   rt_vec3 point, rt_vec3 normal);
+    /* Ray `node` met nothing: the background's term `own`. */
+    void (*on_miss)(void *state, int node, rt_color own);
+    /* The shadow ray from the hit of `parent` to light `light`: cast or
+     * not (N.S <= 0, d = 0), blocked (by facet record `blocker`) or not,
+     * and the term `own` it adds. */
+    void (*on_shadow)(void *state, int parent, int light, rt_vec3 origin,
+                      rt_vec3 direction, double n_dot_s, int cast,
+                      int blocked, int blocker, rt_color own);
+} rt_trace_recorder;
+
+/*
+ * An eye is what one camera adds to a kernel: the facets' vertices minus
+ * the camera's observer, computed once, so that the fast loops save those
+ * subtractions for every camera ray (rays from elsewhere ignore it).  It
+ * has its kernel's precision, is immutable, and must not outlive its
+ * kernel.
+ */
+typedef struct rt_kernel_eye rt_kernel_eye;
 
 /* Settings of one trace. */
 typedef struct rt_trace_settings {
     int max_depth;
     int fast_inv_sqrt;      /* normalise with the handout's fastInvSqrt */
     rt_kernel_choice kernel;    /* RT_KERNEL_SCALAR: the plain loops */
-    const void *eye;        /* NULL, or the rt_kernel_eye_d/_f (matching
-                               the kernel) of the camera rays' origin */
+    const rt_kernel_eye *eye;   /* NULL, or the eye (of the same kernel) of
+                                   the camera rays' origin */
     int octree;             /* non-zero: queries go through the kernel's
-                               octree (rt__kernel_*_octree_prepare first) */
-    rt_trace_recorder *recorder;    /* NULL (renders), or what records the
-                                       rays for rt_explain_pixel */
+                               octree (rt__kernel_prepare_octree first) */
+    const rt_trace_recorder *recorder;  /* NULL (renders), or what records
+                                           the rays for rt_explain_pixel */
 } rt_trace_settings;
 
-/* Work counters of one thread; summed into rt_render_stats at the end. */
+/* Work counters of one thread: the THREAD counters of RT_STATS_MAP
+ * (raytrace/render.h), by the same names, summed into rt_render_stats at
+ * the end, and what the kernel counts for the render's own use. */
+#define RT_COUNTER_FIELD_(type, name, origin, merge, group, key, title)     \
+    RT_COUNTER_##origin##_(type, name)
+#define RT_COUNTER_THREAD_(type, name) type name;
+#define RT_COUNTER_RENDER_(type, name)
+#define RT_COUNTER_OCTREE_(type, name)
 typedef struct rt_counters {
-    uint64_t shadow_rays;
-    uint64_t reflection_rays;
-    uint64_t tests;
-    uint64_t shadow_rays_skipped;
-    uint64_t reflection_rays_skipped;
-    uint64_t refraction_rays;
-    uint64_t refraction_rays_skipped;   /* t > 0 but the depth limit, or
-                                           a total internal reflection */
+    RT_STATS_MAP(RT_COUNTER_FIELD_)
     uint64_t early_exit_saved;  /* facets a shadow ray did not test after
                                    its first hit */
-    uint64_t accel_queries;     /* queries through the octree */
-    uint64_t accel_leaves;      /* leaves they visited */
-    uint64_t accel_tests;       /* facets they tested */
-    uint64_t accel_fallbacks;   /* of them, done by brute force after all
-                                   (origin too far, too many hits) */
     int out_of_memory;          /* a ray tree outgrew the memory */
 } rt_counters;
+#undef RT_COUNTER_FIELD_
+#undef RT_COUNTER_THREAD_
+#undef RT_COUNTER_RENDER_
+#undef RT_COUNTER_OCTREE_
 
 /* An octree lists at most this many facet references per facet (plus
  * RT_OCTREE_REFERENCE_EXTRA) in all its leaves together. */
 #define RT_OCTREE_REFERENCE_BUDGET 16
 #define RT_OCTREE_REFERENCE_EXTRA 4096
 
-/* What an octree holds (kernel_impl.h builds it on first use). */
+/* What an octree holds (octree_build_impl.h builds it on first use). */
 typedef struct rt_octree_info {
     double build_seconds;
     uint64_t nodes;
@@ -132,35 +143,121 @@ typedef struct rt_kernel_hit {
     rt_vec3 normal;         /* unit, facing the ray's origin */
 } rt_kernel_hit;
 
-#define RT_KERNEL_DECLARE(suffix)                                            \
-    typedef struct rt_kernel_##suffix rt_kernel_##suffix;                    \
-    rt_kernel_##suffix *rt__kernel_##suffix##_create(                        \
-        const rt_kernel_source *source);                                     \
-    void rt__kernel_##suffix##_free(rt_kernel_##suffix *kernel);             \
-    typedef struct rt_kernel_eye_##suffix rt_kernel_eye_##suffix;            \
-    rt_kernel_eye_##suffix *rt__kernel_##suffix##_eye_create(                \
-        const rt_kernel_##suffix *kernel, rt_vec3 eye);                      \
-    void rt__kernel_##suffix##_eye_free(rt_kernel_eye_##suffix *eye);        \
-    rt_color rt__kernel_##suffix##_trace(                                    \
-        const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \
-        rt_vec3 direction, const rt_trace_settings *settings,                \
-        rt_counters *counters);                                              \
-    void rt__kernel_##suffix##_trace_span(                                  \
-        const rt_kernel_##suffix *kernel, rt_vec3 origin,                    \
-        const rt_vec3 *directions, int count,                                \
-        const rt_trace_settings *settings, rt_counters *counters,            \
-        rt_color *colors);                                                   \
-    int rt__kernel_##suffix##_nearest_hit(const rt_kernel_##suffix *kernel,  \
-                                          rt_ray ray, double t_max,          \
-                                          rt_kernel_hit *hit);               \
-    int rt__kernel_##suffix##_occluded(const rt_kernel_##suffix *kernel,     \
-                                       rt_vec3 from, rt_vec3 to,             \
-                                       int skip_facet);                      \
-    rt_status rt__kernel_##suffix##_octree_prepare(                          \
-        const rt_kernel_##suffix *kernel, const rt_cancel *cancel,           \
-        rt_octree_info *info);
+typedef struct rt_kernel_ops rt_kernel_ops;
 
-RT_KERNEL_DECLARE(d)
-RT_KERNEL_DECLARE(f)
+/* A kernel of either precision.  Each precision's kernel (kernel_impl.h)
+ * begins with this header, as SQLite's files begin with their methods. */
+typedef struct rt_kernel {
+    const rt_kernel_ops *ops;
+} rt_kernel;
+
+/*
+ * The operations of one precision.  Every function but create takes a
+ * kernel this table created (and eye_destroy an eye of such a kernel).
+ */
+struct rt_kernel_ops {
+    rt_precision precision;
+    /* A kernel of source's facets and lights; NULL when out of memory or
+     * when source->cancel was raised during the construction. */
+    rt_kernel *(*create)(const rt_kernel_source *source);
+    void (*destroy)(rt_kernel *kernel);
+    /* The eye of `origin`; NULL when out of memory. */
+    rt_kernel_eye *(*eye_create)(const rt_kernel *kernel, rt_vec3 origin);
+    void (*eye_destroy)(rt_kernel_eye *eye);     /* NULL: no-op */
+    /*
+     * Builds the kernel's octree unless it exists (thread-safe): RT_OK
+     * (built now or before; *info filled when not NULL), RT_ERR_NOMEM, or
+     * RT_ERR_CANCELLED when `cancel` (may be NULL) is raised before the
+     * build completes: it then stops within about a millisecond and
+     * nothing is kept, so a later call builds it again.
+     */
+    rt_status (*prepare_octree)(const rt_kernel *kernel,
+                                const rt_cancel *cancel,
+                                rt_octree_info *info);
+    /* The colour the ray carries (docs/rendering-model.md), its work added
+     * to *counters. */
+    rt_color (*trace)(const rt_kernel *kernel, rt_vec3 origin,
+                      rt_vec3 direction, const rt_trace_settings *settings,
+                      rt_counters *counters);
+    /* Traces `count` rays from `origin` (the camera rays of neighbouring
+     * pixels), the colour of ray j into colors[j], each exactly as trace
+     * gives it; with the eye of `origin` in settings, a scene of few
+     * facets and the fast loops it shares work among them (packets). */
+    void (*trace_span)(const rt_kernel *kernel, rt_vec3 origin,
+                       const rt_vec3 *directions, int count,
+                       const rt_trace_settings *settings,
+                       rt_counters *counters, rt_color *colors);
+    /* The nearest hit within (0, t_max) of the ray (any direction length;
+     * 0 for a zero or non-finite one): non-zero and *hit filled, or 0. */
+    int (*nearest_hit)(const rt_kernel *kernel, rt_ray ray, double t_max,
+                       rt_kernel_hit *hit);
+    /* Non-zero when a facet (other than facet record skip_facet, -1: none)
+     * blocks the open segment from `from` to `to`. */
+    int (*occluded)(const rt_kernel *kernel, rt_vec3 from, rt_vec3 to,
+                    int skip_facet);
+};
+
+/* The tables, in kernel_double.c and kernel_float.c. */
+extern const rt_kernel_ops rt__kernel_double_ops;
+extern const rt_kernel_ops rt__kernel_float_ops;
+
+/* The calls through a kernel's table (NULL kernel or eye: destroy is a
+ * no-op; every other call needs a kernel). */
+static inline void rt__kernel_destroy(rt_kernel *kernel)
+{
+    if (kernel != NULL)
+        kernel->ops->destroy(kernel);
+}
+
+static inline rt_kernel_eye *rt__kernel_eye_create(const rt_kernel *kernel,
+                                                   rt_vec3 origin)
+{
+    return kernel->ops->eye_create(kernel, origin);
+}
+
+static inline void rt__kernel_eye_destroy(const rt_kernel *kernel,
+                                          rt_kernel_eye *eye)
+{
+    kernel->ops->eye_destroy(eye);
+}
+
+static inline rt_status rt__kernel_prepare_octree(const rt_kernel *kernel,
+                                                  const rt_cancel *cancel,
+                                                  rt_octree_info *info)
+{
+    return kernel->ops->prepare_octree(kernel, cancel, info);
+}
+
+static inline rt_color rt__kernel_trace(const rt_kernel *kernel,
+                                        rt_vec3 origin, rt_vec3 direction,
+                                        const rt_trace_settings *settings,
+                                        rt_counters *counters)
+{
+    return kernel->ops->trace(kernel, origin, direction, settings, counters);
+}
+
+static inline void rt__kernel_trace_span(const rt_kernel *kernel,
+                                         rt_vec3 origin,
+                                         const rt_vec3 *directions,
+                                         int count,
+                                         const rt_trace_settings *settings,
+                                         rt_counters *counters,
+                                         rt_color *colors)
+{
+    kernel->ops->trace_span(kernel, origin, directions, count, settings,
+                            counters, colors);
+}
+
+static inline int rt__kernel_nearest_hit(const rt_kernel *kernel, rt_ray ray,
+                                         double t_max, rt_kernel_hit *hit)
+{
+    return kernel->ops->nearest_hit(kernel, ray, t_max, hit);
+}
+
+static inline int rt__kernel_occluded(const rt_kernel *kernel, rt_vec3 from,
+                                      rt_vec3 to, int skip_facet)
+{
+    return kernel->ops->occluded(kernel, from, to, skip_facet);
+}
 
 #endif /* RAYTRACE_KERNEL_H */

@@ -1,24 +1,34 @@
 /*
  * kernel_impl.h - the ray-tracing kernel, written once for any precision:
- * the kernel object (its data, its construction) and the order in which
- * its parts are compiled.
+ * the kernel object (its data, its construction), the trace context, the
+ * order in which its parts are compiled, and the operations the table of
+ * kernel.h points at.
  *
  * Included by kernel_double.c and kernel_float.c with
  *     REAL       the floating-point type (double or float)
+ *     REAL_IS_FLOAT  1 for float
  *     REAL_EPS   its machine epsilon (DBL_EPSILON or FLT_EPSILON)
  *     REAL_MIN, REAL_TRUE_MIN  its smallest normal and subnormal numbers
- *     KERNEL(x)  the name of an exported symbol (rt__kernel_d_##x ...)
- *     KERNEL_T   the kernel's type (rt_kernel_d ...)
- * Everything else here is static.  The parts, each using only those before
- * it:
- *     real_impl.h       vector arithmetic and error bounds
- *     intersect_impl.h  the watertight test and the tie rule
- *     simd_impl.h       the exact AVX2 filter over blocks of eight facets
- *     octree_impl.h     the octree: construction and the walk of a ray
- *     query_impl.h      nearest hit and any hit: brute force or octree
- *     shade_impl.h      hit points, offsets, light and reflections
- *     packet_impl.h     camera rays in packets: a tile cull, SIMD across
- *                       rays
+ *     KERNEL_T, KERNEL_EYE_T   the names of its kernel and eye structs
+ *     KERNEL_OPS the name of its table (rt__kernel_double_ops ...)
+ * Everything here is static; each .c file then fills its table with the
+ * operations at the end of this file.  The parts, each using only
+ * those before it:
+ *     real_impl.h          vector arithmetic and error bounds
+ *     intersect_impl.h     the watertight test and the tie rule
+ *     simd_impl.h          the exact AVX2 filter over blocks of eight
+ *                          facets
+ *     octree_impl.h        the octree's nodes (octree_build_impl.h builds
+ *                          them, octree_walk_impl.h walks a ray through
+ *                          them)
+ *     query_brute_impl.h   nearest hit and any hit over every facet
+ *     query_octree_impl.h  the same through the octree
+ *     query_impl.h         the queries a trace makes: the only chooser
+ *     shade_impl.h         what happens at a hit: the point, its offsets,
+ *                          the direct light (shade_hit)
+ *     trace_impl.h         the two trace loops (opaque, transparent)
+ *     packet_impl.h        camera rays in packets: a tile cull, SIMD
+ *                          across rays
  */
 #include <pthread.h>
 #include <stdlib.h>
@@ -27,10 +37,10 @@
 
 #include <stdatomic.h>
 #include <stdint.h>
-#include <time.h>
 
 #include "kernel.h"
 
+#include "base/clock.h"
 #include "base/fast_inv_sqrt.h"
 #include "kernel/plane_crossing.h"
 #include "real_impl.h"
@@ -53,15 +63,16 @@ typedef struct octree octree;   /* octree_impl.h */
 
 /* The vertices minus one ray origin, for the rays that start there, and
  * for a scene of few facets their edge functions for the packets. */
-struct KERNEL_EYE_T {
+typedef struct KERNEL_EYE_T {
     vec origin;
     block *blocks;
     int count;                  /* the kernel's facets */
     double *edges;          /* NULL, or the facets' edge functions by
                                frame (packet_impl.h) */
-};
+} KERNEL_EYE_T;
 
-struct KERNEL_T {
+typedef struct KERNEL_T {
+    rt_kernel base;         /* first: the table of operations */
     tri *tris;
     int count;
     block *blocks;          /* the same facets, eight by eight */
@@ -81,44 +92,124 @@ struct KERNEL_T {
                                light */
     _Atomic(octree *) tree;     /* built on first use, then only read */
     pthread_mutex_t tree_lock;  /* serialises that construction */
-};
+} KERNEL_T;
+
+/* The precision's kernel behind the interface's handle (its first
+ * member), and the same for an eye. */
+static inline const KERNEL_T *kernel_of(const rt_kernel *kernel)
+{
+    return (const KERNEL_T *)kernel;
+}
+
+static inline const KERNEL_EYE_T *eye_of(const rt_kernel_eye *eye)
+{
+    return (const KERNEL_EYE_T *)eye;
+}
+
+/*
+ * What the queries and the shading of one trace read besides the rays,
+ * set once per trace (trace_context()) and passed by pointer: the kernel,
+ * how to query it, and where to report.  The loops that inline the
+ * shading build it as a local constant, so its fields stay in registers.
+ */
+typedef struct trace_ctx {
+    const KERNEL_T *k;
+    const octree *tree;         /* NULL: brute force */
+    const KERNEL_EYE_T *eye;    /* NULL, or the eye of the camera rays'
+                                   origin (nearest() reads it for them) */
+    int simd;                   /* the AVX2 loops */
+    int fast;                   /* normalise with fastInvSqrt */
+    int max_depth;
+    rt_counters *counters;
+    const rt_trace_recorder *rec;   /* NULL in renders */
+} trace_ctx;
 
 #include "intersect_impl.h"
 #include "simd_impl.h"
 #include "octree_impl.h"
+#include "octree_build_impl.h"
+#include "octree_walk_impl.h"
 
-/* k's octree, once KERNEL(octree_prepare) has built it; else NULL. */
+/* k's octree, once prepare_octree() has built it; else NULL. */
 static const octree *octree_of(const KERNEL_T *k)
 {
     return atomic_load_explicit((_Atomic(octree *) *)&k->tree,
                                 memory_order_acquire);
 }
 
+/* The context of a trace with `settings`, recording into `rec` (the
+ * settings' recorder, or NULL given as a constant for the renders' copy
+ * of the loops). */
+static inline trace_ctx trace_context(const KERNEL_T *k,
+                                      const rt_trace_settings *settings,
+                                      rt_counters *counters,
+                                      const rt_trace_recorder *rec)
+{
+    return (trace_ctx){
+        k, settings->octree ? octree_of(k) : NULL, eye_of(settings->eye),
+        k->avx2 && settings->kernel != RT_KERNEL_SCALAR,
+        settings->fast_inv_sqrt, settings->max_depth, counters, rec};
+}
+
+/* The context of the queries nearest_hit and occluded: the fast loops,
+ * the octree once built, nothing recorded. */
+static inline trace_ctx query_context(const KERNEL_T *k,
+                                      rt_counters *counters)
+{
+    return (trace_ctx){k, octree_of(k), NULL, k->avx2, 0, 0, counters, NULL};
+}
+
+#include "query_brute_impl.h"
+#include "query_octree_impl.h"
 #include "query_impl.h"
 #include "shade_impl.h"
+#include "trace_impl.h"
 #include "packet_impl.h"
 
-KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
+static void kernel_destroy(rt_kernel *kernel);
+
+/* Appends facet record i of source `s` to the kernel under construction,
+ * with its diffuse terms for every light. */
+static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
 {
-    KERNEL_T *k = calloc(1, sizeof *k);
-    if (k == NULL)
-        return NULL;
-    atomic_init(&k->tree, NULL);
-    pthread_mutex_init(&k->tree_lock, NULL);
+    const rt_facet_info *info = &s->facets[i];
+    tri *f = &k->tris[k->count++];
+    int more = s->light_count - 1;
+    f->a = from_rt(s->vertices[info->vertex[0]]);
+    f->b = from_rt(s->vertices[info->vertex[1]]);
+    f->c = from_rt(s->vertices[info->vertex[2]]);
+    f->normal = from_rt(info->normal);
+    f->k = (REAL)info->k;
+    f->t = (REAL)info->t;
+    f->n = (REAL)info->n;
+    /* The file's rule d = 1 - k - t in this precision (so a handout
+     * facet gets exactly the (1 - k) of section 3); else the given d. */
+    REAL d = info->d == 1.0 - info->k - info->t ? 1 - f->k - f->t
+                                                 : (REAL)info->d;
+    f->d = d;
+    k->transparent |= f->t > 0;
+    REAL color[3] = {info->color.r, info->color.g, info->color.b};
+    for (int l = 0; l < s->light_count; l++) {
+        const rt_rgb8 *c8 = &s->lights[l].color;
+        REAL light[3] = {c8->r, c8->g, c8->b};
+        REAL *out = l == 0 ? f->diffuse
+                           : &k->more_diffuse[((size_t)(k->count - 1) *
+                                                   (size_t)more +
+                                               (size_t)(l - 1)) * 3];
+        for (int c = 0; c < 3; c++)
+            out[c] = d * light[c] * color[c] / 255;
+    }
+    f->facet = i;
+}
+
+/* The kernel's arrays, sized for source `s`; 0 when out of memory. */
+static int allocate(KERNEL_T *k, const rt_kernel_source *s)
+{
     k->tris = malloc((size_t)(s->facet_count > 0 ? s->facet_count : 1) *
                      sizeof *k->tris);
-    if (k->tris == NULL) {
-        free(k);
-        return NULL;
-    }
     int block_count = (s->facet_count + BLOCK_LANES - 1) / BLOCK_LANES;
     k->blocks = aligned_alloc(32, (size_t)(block_count > 0 ? block_count : 1) *
                                       sizeof *k->blocks);
-    if (k->blocks == NULL) {
-        free(k->tris);
-        free(k);
-        return NULL;
-    }
     int more = s->light_count - 1;
     k->light_count = s->light_count;
     k->lights = malloc((size_t)s->light_count * sizeof *k->lights);
@@ -127,8 +218,20 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
                            ? (size_t)more * (size_t)s->facet_count * 3
                            : 1;
     k->more_diffuse = malloc(more_size * sizeof *k->more_diffuse);
-    if (k->lights == NULL || k->more_diffuse == NULL) {
-        KERNEL(free)(k);
+    return k->tris != NULL && k->blocks != NULL && k->lights != NULL &&
+           k->more_diffuse != NULL;
+}
+
+static rt_kernel *kernel_create(const rt_kernel_source *s)
+{
+    KERNEL_T *k = calloc(1, sizeof *k);
+    if (k == NULL)
+        return NULL;
+    k->base.ops = &KERNEL_OPS;
+    atomic_init(&k->tree, NULL);
+    pthread_mutex_init(&k->tree_lock, NULL);
+    if (!allocate(k, s)) {
+        kernel_destroy(&k->base);
         return NULL;
     }
     for (int l = 0; l < s->light_count; l++)
@@ -140,54 +243,28 @@ KERNEL_T *KERNEL(create)(const rt_kernel_source *s)
     for (int i = 0; i < s->facet_count; i++) {
         if (i % RT_KERNEL_POLL == RT_KERNEL_POLL - 1 &&
             rt_cancel_requested(s->cancel)) {
-            KERNEL(free)(k);
+            kernel_destroy(&k->base);
             return NULL;
         }
-        const rt_facet_info *info = &s->facets[i];
-        if (info->degenerate)
-            continue;       /* never hit: not even stored */
-        tri *f = &k->tris[k->count++];
-        f->a = from_rt(s->vertices[info->vertex[0]]);
-        f->b = from_rt(s->vertices[info->vertex[1]]);
-        f->c = from_rt(s->vertices[info->vertex[2]]);
-        f->normal = from_rt(info->normal);
-        f->k = (REAL)info->k;
-        f->t = (REAL)info->t;
-        f->n = (REAL)info->n;
-        /* The file's rule d = 1 - k - t in this precision (so a handout
-         * facet gets exactly the (1 - k) of section 3); else the given d. */
-        REAL d = info->d == 1.0 - info->k - info->t ? 1 - f->k - f->t
-                                                     : (REAL)info->d;
-        f->d = d;
-        k->transparent |= f->t > 0;
-        REAL color[3] = {info->color.r, info->color.g, info->color.b};
-        for (int l = 0; l < s->light_count; l++) {
-            const rt_rgb8 *c8 = &s->lights[l].color;
-            REAL light[3] = {c8->r, c8->g, c8->b};
-            REAL *out = l == 0 ? f->diffuse
-                               : &k->more_diffuse[((size_t)(k->count - 1) *
-                                                       (size_t)more +
-                                                   (size_t)(l - 1)) * 3];
-            for (int c = 0; c < 3; c++)
-                out[c] = d * light[c] * color[c] / 255;
-        }
-        f->facet = i;
+        if (!s->facets[i].degenerate)   /* never hit: not even stored */
+            add_facet(k, s, i);
     }
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
     fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
     if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS &&
-        k->light_count <= PACKET_MAX_LIGHTS && !packet_prepare_kernel(k)) {
+        k->light_count <= KNOWN_LIGHTS && !packet_prepare_kernel(k)) {
         free(k->planes);        /* out of memory: no shadow packets */
         free(k->light_side);
         k->planes = NULL;
         k->light_side = NULL;
     }
-    return k;
+    return &k->base;
 }
 
-void KERNEL(free)(KERNEL_T *k)
+static void kernel_destroy(rt_kernel *kernel)
 {
+    KERNEL_T *k = (KERNEL_T *)kernel;
     if (k != NULL) {
         free(k->tris);
         free(k->blocks);
@@ -201,9 +278,11 @@ void KERNEL(free)(KERNEL_T *k)
     free(k);
 }
 
-rt_status KERNEL(octree_prepare)(const KERNEL_T *k, const rt_cancel *cancel,
-                                 rt_octree_info *info)
+static rt_status kernel_prepare_octree(const rt_kernel *kernel,
+                                       const rt_cancel *cancel,
+                                       rt_octree_info *info)
 {
+    const KERNEL_T *k = kernel_of(kernel);
     KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy octree changes */
     const octree *t = octree_of(k);
     rt_status status = RT_OK;
@@ -235,8 +314,20 @@ rt_status KERNEL(octree_prepare)(const KERNEL_T *k, const rt_cancel *cancel,
     return RT_OK;
 }
 
-KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
+static void kernel_eye_destroy(rt_kernel_eye *eye)
 {
+    KERNEL_EYE_T *e = (KERNEL_EYE_T *)eye;
+    if (e != NULL) {
+        free(e->blocks);
+        free(e->edges);
+    }
+    free(e);
+}
+
+static rt_kernel_eye *kernel_eye_create(const rt_kernel *kernel,
+                                        rt_vec3 origin)
+{
+    const KERNEL_T *k = kernel_of(kernel);
     KERNEL_EYE_T *eye = calloc(1, sizeof *eye);
     if (eye == NULL)
         return NULL;
@@ -254,26 +345,18 @@ KERNEL_EYE_T *KERNEL(eye_create)(const KERNEL_T *k, rt_vec3 origin)
     if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS) {
         eye->edges = malloc(edges_size(k->count) * sizeof *eye->edges);
         if (eye->edges == NULL) {
-            KERNEL(eye_free)(eye);
+            kernel_eye_destroy((rt_kernel_eye *)eye);
             return NULL;
         }
         packet_prepare_eye(eye, k->count);
     }
-    return eye;
+    return (rt_kernel_eye *)eye;
 }
 
-void KERNEL(eye_free)(KERNEL_EYE_T *eye)
+static int kernel_nearest_hit(const rt_kernel *kernel, rt_ray query,
+                              double t_max, rt_kernel_hit *out)
 {
-    if (eye != NULL) {
-        free(eye->blocks);
-        free(eye->edges);
-    }
-    free(eye);
-}
-
-int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
-                        rt_kernel_hit *out)
-{
+    const KERNEL_T *k = kernel_of(kernel);
     vec direction = from_rt(query.direction);
     REAL length = max3(direction.x, direction.y, direction.z);
     if (!isfinite(length) || length == 0)
@@ -281,8 +364,8 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
     ray r = prepare(from_rt(query.origin), direction);
     hit h;
     rt_counters counters = {0};
-    if (!nearest(k, k->avx2, octree_of(k), NULL, &r, (REAL)t_max, -1, &h,
-                 &counters))
+    trace_ctx c = query_context(k, &counters);
+    if (!nearest(&c, NULL, &r, (REAL)t_max, -1, &h))
         return 0;
     const tri *f = &k->tris[h.index];
     vec error_bound;
@@ -294,9 +377,10 @@ int KERNEL(nearest_hit)(const KERNEL_T *k, rt_ray query, double t_max,
     return 1;
 }
 
-int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
-                     int skip_facet)
+static int kernel_occluded(const rt_kernel *kernel, rt_vec3 from, rt_vec3 to,
+                           int skip_facet)
 {
+    const KERNEL_T *k = kernel_of(kernel);
     vec o = from_rt(from);
     vec d = sub(from_rt(to), o);
     REAL length = max3(d.x, d.y, d.z);
@@ -308,6 +392,6 @@ int KERNEL(occluded)(const KERNEL_T *k, rt_vec3 from, rt_vec3 to,
             skip = i;
     ray r = prepare(o, d);
     rt_counters counters = {0};
-    return any_hit(k, k->avx2, octree_of(k), &r, 1, skip, &counters);
+    trace_ctx c = query_context(k, &counters);
+    return any_hit(&c, &r, 1, skip);
 }
-

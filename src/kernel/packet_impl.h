@@ -1,6 +1,7 @@
 /*
- * packet_impl.h - camera rays in packets (part of kernel_impl.h, compiled
- * once per precision; everything here but KERNEL(trace_span) is static).
+ * packet_impl.h - camera rays in packets: kernel_trace_span(), the
+ * table's trace_span (part of kernel_impl.h, compiled once per precision;
+ * everything here is static).
  *
  * The camera rays of a few neighbouring pixels - a span of one row, cut
  * into chunks of at most CHUNK_RAYS rays - leave one point, the eye, in
@@ -13,7 +14,7 @@
  *        e(sx, sy) = e0 + sx ex + sy ey,
  *    where (ex, ey, e0) is the cross product of the edge's two vertices
  *    (minus the eye) in that frame (expand (px - sx pz)(qy - sy qz) -
- *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as trace()
+ *    (py - sy pz)(qx - sx qz)).  The chunk's rays are prepared as a trace
  *    prepares them, and the box of the shears of those of one frame is
  *    taken from the shears themselves: each edge function stays in an
  *    interval over it.  Where one edge's interval is below -slack and
@@ -35,12 +36,13 @@
  *    hit nearest_scalar() gives it.
  *
  * A ray whose frame is not the chunk's (its first ray's; they differ near
- * the diagonals where the dominant axis changes) is traced alone, as KERNEL(trace) traces it.  The
- * rest of each ray's path (shading, shadow rays, reflections) is the one
- * trace_opaque() of shade_impl.h.  Only renders of scenes with at most
- * PACKET_MAX_FACETS facets, brute force, the fast loops and no
- * transparency take this path; the work it saves is the filter's, which
- * dominates there.
+ * the diagonals where the dominant axis changes) is traced alone, as
+ * kernel_trace() traces it.  The rest of each ray's path (shading, shadow
+ * rays, reflections) is the one trace_opaque() of trace_impl.h, told what
+ * the packet found of the first hit (a known_hit, shade_impl.h).  Only
+ * renders of scenes with at most PACKET_MAX_FACETS facets, brute force,
+ * the fast loops and no transparency take this path; the work it saves is
+ * the filter's, which dominates there.
  */
 
 #if HAVE_AVX2_KERNEL
@@ -408,13 +410,14 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
         int skipped = skip[l];
         blocked[l] = blocker[l] >= 0;
         if (blocker[l] < 0) {
-            counters->tests += (uint64_t)k->count - (skipped >= 0);
+            counters->ray_facet_tests += (uint64_t)k->count - (skipped >= 0);
             continue;
         }
         int made = (blocker[l] / BLOCK_LANES + 1) * BLOCK_LANES;
         if (made > k->count)
             made = k->count;
-        counters->tests += (uint64_t)made - (skipped >= 0 && skipped < made);
+        counters->ray_facet_tests +=
+            (uint64_t)made - (skipped >= 0 && skipped < made);
         counters->early_exit_saved +=
             (uint64_t)(k->count - made) - (skipped >= made);
     }
@@ -422,17 +425,17 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
 
 /*
  * The first bounce of the n <= VW camera rays whose nearest hits (found[l],
- * h[l]) a packet found: hit points and normals as trace_opaque() computes
+ * h[l]) a packet found: hit points and normals as shade_hit() computes
  * them, and the shadow rays to each light cast in packets of one frame
  * (the rays of another frame are left to the trace).
  */
 static void packet_first_bounce(const KERNEL_T *k, vec origin,
                                 const vec *incoming, const int *found,
-                                const hit *h, int n, first_bounce *out,
+                                const hit *h, int n, known_hit *out,
                                 rt_counters *counters)
 {
     for (int l = 0; l < n; l++) {
-        first_bounce *b = &out[l];
+        known_hit *b = &out[l];
         b->found = found[l];
         memset(b->blocked, -1, sizeof b->blocked);
         if (!found[l])
@@ -449,7 +452,7 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
         ray shadow[VW];
         int skip[VW], lane[VW], m = 0, frame = -1;
         for (int l = 0; l < n; l++) {
-            const first_bounce *b = &out[l];
+            const known_hit *b = &out[l];
             if (!b->found || k->tris[b->h->index].d == 0)
                 continue;
             vec to_light = sub(k->lights[light], b->point);
@@ -475,14 +478,18 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
     }
 }
 
-/* One camera ray traced alone, as KERNEL(trace) traces it. */
-static rt_color trace_alone(const KERNEL_T *k, vec origin, vec incoming,
-                            const rt_trace_settings *settings, int simd,
-                            rt_counters *counters, const first_bounce *first)
+/* One camera ray traced alone, as kernel_trace() traces it, `known` (may
+ * be NULL) its first hit. */
+static rt_color trace_alone(const trace_ctx *c, vec origin, vec incoming,
+                            const known_hit *known)
 {
+    /* Packets run by brute force with the AVX2 loops, unrecorded: a
+     * context that says so in constants, so that the loop's octree,
+     * scalar and recording code is compiled away. */
+    const trace_ctx plain = {c->k, NULL,    c->eye,       1,
+                             c->fast, c->max_depth, c->counters, NULL};
     REAL color[3] = {0, 0, 0};
-    trace_opaque(k, origin, incoming, settings, NULL, simd, color, counters,
-                 NULL, first);
+    trace_opaque(&plain, origin, incoming, known, color);
     return (rt_color){color[0], color[1], color[2]};
 }
 #else /* no AVX2 kernel: no packets, and nothing prepared for them */
@@ -499,16 +506,17 @@ static int packet_prepare_kernel(KERNEL_T *k) { (void)k; return 1; }
 /* Rays of a span that share one tile cull at most. */
 #define CHUNK_RAYS 64
 
-void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
-                        const rt_vec3 *directions, int count,
-                        const rt_trace_settings *settings,
-                        rt_counters *counters, rt_color *colors)
+static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
+                              const rt_vec3 *directions, int count,
+                              const rt_trace_settings *settings,
+                              rt_counters *counters, rt_color *colors)
 {
 #if HAVE_AVX2_KERNEL
-    const KERNEL_EYE_T *eye = settings->eye;
-    int simd = k->avx2 && settings->kernel != RT_KERNEL_SCALAR;
+    const KERNEL_T *k = kernel_of(kernel);
+    const trace_ctx c = trace_context(k, settings, counters, NULL);
+    const KERNEL_EYE_T *eye = c.eye;
     vec origin = from_rt(origin_d);
-    int packets = simd && eye != NULL && eye->edges != NULL &&
+    int packets = c.simd && eye != NULL && eye->edges != NULL &&
                   !k->transparent && !settings->octree &&
                   settings->recorder == NULL &&
                   memcmp(&eye->origin, &origin, sizeof origin) == 0;
@@ -517,15 +525,15 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
 #endif
     if (!packets) {
         for (int j = 0; j < count; j++)
-            colors[j] = KERNEL(trace)(k, origin_d, directions[j], settings,
-                                      counters);
+            colors[j] = kernel_trace(kernel, origin_d, directions[j],
+                                     settings, counters);
         return;
     }
 #if HAVE_AVX2_KERNEL
-    int fast = settings->fast_inv_sqrt;
+    int fast = c.fast;
     for (int begin = 0; begin < count; begin += CHUNK_RAYS) {
         int end = begin + CHUNK_RAYS < count ? begin + CHUNK_RAYS : count;
-        /* The chunk's rays as trace() prepares them; the tile's frame is
+        /* The chunk's rays as a trace prepares them; the tile's frame is
          * the first ray's, its box of shears the hull of the shears of the
          * rays of that frame - so every ray packed below lies in it. */
         ray q[CHUNK_RAYS];
@@ -559,8 +567,7 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
             if (j < end) {
                 const ray *p = &q[j - begin];
                 if (ray_frame(p) != t.frame) {
-                    colors[j] = trace_alone(k, origin, in[j - begin],
-                                            settings, simd, counters, NULL);
+                    colors[j] = trace_alone(&c, origin, in[j - begin], NULL);
                     continue;
                 }
                 r[n] = p;
@@ -573,13 +580,13 @@ void KERNEL(trace_span)(const KERNEL_T *k, rt_vec3 origin_d,
                 continue;
             hit h[VW];
             int found[VW];
-            packet_nearest(k, eye, &t, r, n, h, found, &counters->tests);
-            first_bounce first[VW];
+            packet_nearest(k, eye, &t, r, n, h, found,
+                           &counters->ray_facet_tests);
+            known_hit first[VW];
             packet_first_bounce(k, origin, incoming, found, h, n, first,
                                 counters);
             for (int l = 0; l < n; l++)
-                colors[slot[l]] = trace_alone(k, origin, incoming[l],
-                                              settings, simd, counters,
+                colors[slot[l]] = trace_alone(&c, origin, incoming[l],
                                               &first[l]);
             n = 0;
         }

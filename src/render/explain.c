@@ -1,15 +1,15 @@
 /*
  * explain.c - the ray tree of a pixel and the debug views (raytrace/explain.h).
  *
- * Nothing here computes a colour: a recorder is attached to the kernel's own
- * trace (kernel.h), which tells it every ray it casts and every term it adds,
- * and the pixel is traced by the render's own code (render_internal.h).  So
- * the explained value is the rendered one by construction; this file only
- * stores what it is told, sums the subtrees for reading, and maps the camera
- * ray's hit to the colours of the debug views.
+ * Nothing here computes a colour: a recorder (callbacks and their state,
+ * kernel.h) is handed to the kernel's own trace, which tells it every ray
+ * it casts and every term it adds, and the pixel is traced by the render's
+ * own pixel loops (render_internal.h).  So the explained value is the
+ * rendered one by construction; this file only stores what it is told,
+ * sums the subtrees for reading, and maps the camera ray's hit to the
+ * colours of the debug views.
  */
 #include <math.h>
-#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,14 +18,15 @@
 #include "render_internal.h"
 #include "scene/scene_internal.h"
 
-struct rt_trace_recorder {
+/* What the recorder's callbacks fill: the nodes of one pixel's rays. */
+typedef struct tree_builder {
     const rt_scene *scene;
     rt_ray_node *nodes;
     size_t count, capacity;
     size_t truncated;       /* rays not recorded: the tree was full */
     int next_sample;        /* the sample of the next camera ray */
     int out_of_memory;
-};
+} tree_builder;
 
 struct rt_ray_tree {
     rt_ray_node *nodes;
@@ -35,7 +36,7 @@ struct rt_ray_tree {
 };
 
 /* A new node of `kind`, or NULL when the tree is full or memory short. */
-static rt_ray_node *new_node(rt_trace_recorder *r)
+static rt_ray_node *new_node(tree_builder *r)
 {
     if (r->count == r->capacity) {
         if (r->capacity >= RT_RAY_TREE_MAX_NODES) {
@@ -60,9 +61,10 @@ static rt_ray_node *new_node(rt_trace_recorder *r)
     return n;
 }
 
-int rt__record_ray(rt_trace_recorder *r, int kind, int parent, int depth,
-                   rt_vec3 origin, rt_vec3 direction, double weight)
+static int record_ray(void *state, int kind, int parent, int depth,
+                      rt_vec3 origin, rt_vec3 direction, double weight)
 {
+    tree_builder *r = state;
     if (kind != RT_RAY_CAMERA && parent < 0) {
         r->truncated++;     /* its parent was not recorded */
         return -1;
@@ -82,9 +84,10 @@ int rt__record_ray(rt_trace_recorder *r, int kind, int parent, int depth,
     return (int)(r->count - 1);
 }
 
-void rt__record_hit(rt_trace_recorder *r, int node, int facet, double t,
-                    rt_vec3 point, rt_vec3 normal)
+static void record_hit(void *state, int node, int facet, double t,
+                       rt_vec3 point, rt_vec3 normal)
 {
+    tree_builder *r = state;
     if (node < 0)
         return;
     rt_ray_node *n = &r->nodes[node];
@@ -100,16 +103,18 @@ void rt__record_hit(rt_trace_recorder *r, int node, int facet, double t,
     n->d = f->d;
 }
 
-void rt__record_miss(rt_trace_recorder *r, int node, rt_color own)
+static void record_miss(void *state, int node, rt_color own)
 {
+    tree_builder *r = state;
     if (node >= 0)
         r->nodes[node].own = own;
 }
 
-void rt__record_shadow(rt_trace_recorder *r, int parent, int light,
-                       rt_vec3 origin, rt_vec3 direction, double n_dot_s,
-                       int cast, int blocked, int blocker, rt_color own)
+static void record_shadow(void *state, int parent, int light,
+                          rt_vec3 origin, rt_vec3 direction, double n_dot_s,
+                          int cast, int blocked, int blocker, rt_color own)
 {
+    tree_builder *r = state;
     if (parent < 0) {
         r->truncated++;
         return;
@@ -152,35 +157,26 @@ static void sum_subtrees(rt_ray_node *nodes, size_t count)
     }
 }
 
-/* Traces pixel (x, y) (or one sample) into r, emptied first. */
-static rt_status record_pixel(rt_pixel_tracer *tracer, rt_trace_recorder *r,
-                              int x, int y, int sample, rt_color *value,
+/* Traces pixel (x, y) (or one sample) of `frame` into r, emptied first,
+ * through the kernel's recorder callbacks. */
+static rt_status record_pixel(const rt_frame *frame, tree_builder *r, int x,
+                              int y, int sample, rt_color *value,
                               rt_error *error)
 {
-    int out_of_memory = 0;
     r->count = 0;
     r->truncated = 0;
     r->out_of_memory = 0;
     r->next_sample = sample < 0 ? 0 : sample;
-    *value = rt__pixel_tracer_trace(tracer, x, y, sample, r, &out_of_memory);
-    if (out_of_memory || r->out_of_memory)
+    const rt_trace_recorder recorder = {r, record_ray, record_hit,
+                                        record_miss, record_shadow};
+    rt_frame recording = *frame;
+    recording.settings.recorder = &recorder;
+    rt_counters counters = {0};
+    *value = rt__frame_pixel(&recording, x, y, sample, &counters);
+    if (counters.out_of_memory || r->out_of_memory)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory for the ray tree of pixel "
                              "%d,%d", x, y);
-    return RT_OK;
-}
-
-/* The tracer for `options` and a check that (x, y) is in its image. */
-static rt_status checked_tracer(const rt_scene *scene,
-                                const rt_render_options *options,
-                                rt_pixel_tracer **tracer, int *width,
-                                int *height, int *samples, rt_error *error)
-{
-    rt_status status = rt__pixel_tracer_create(scene, options, tracer,
-                                               error);
-    if (status != RT_OK)
-        return status;
-    rt__pixel_tracer_size(*tracer, width, height, samples);
     return RT_OK;
 }
 
@@ -192,10 +188,10 @@ rt_status rt_explain_pixel(const rt_scene *scene,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a pointer to fill");
     *tree = NULL;
-    rt_pixel_tracer *tracer;
+    rt_frame frame;
     int width, height, samples;
-    rt_status status = checked_tracer(scene, options, &tracer, &width,
-                                      &height, &samples, error);
+    rt_status status = rt__frame_setup(scene, options, &frame, &width,
+                                       &height, &samples, error);
     if (status != RT_OK)
         return status;
     if (x < 0 || x >= width || y < 0 || y >= height)
@@ -207,11 +203,10 @@ rt_status rt_explain_pixel(const rt_scene *scene,
                                "sample %d of a pixel of %d samples: "
                                "expected -1 (all) or 0..%d", sample,
                                samples, samples - 1);
-    rt_trace_recorder r = {.scene = scene};
+    tree_builder r = {.scene = scene};
     rt_color value = {0, 0, 0};
     if (status == RT_OK)
-        status = record_pixel(tracer, &r, x, y, sample, &value, error);
-    rt__pixel_tracer_destroy(tracer);
+        status = record_pixel(&frame, &r, x, y, sample, &value, error);
     rt_ray_tree *t = NULL;
     if (status == RT_OK && (t = malloc(sizeof *t)) == NULL)
         status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
@@ -268,8 +263,7 @@ rt_rgb8 rt_debug_facet_color(int index)
 }
 
 /* The shadow ray to light `light` of the camera ray's hit, or NULL. */
-static const rt_ray_node *camera_shadow(const rt_trace_recorder *r,
-                                        int light)
+static const rt_ray_node *camera_shadow(const tree_builder *r, int light)
 {
     for (size_t i = 1; i < r->count; i++)
         if (r->nodes[i].kind == RT_RAY_SHADOW && r->nodes[i].parent == 0 &&
@@ -287,7 +281,7 @@ static void put(unsigned char *p, double r, double g, double b)
 
 /* The colour of one pixel in `view` (all but RT_VIEW_DEPTH) from its
  * recorded first sample. */
-static void view_pixel(const rt_trace_recorder *r, rt_debug_view view,
+static void view_pixel(const tree_builder *r, rt_debug_view view,
                        int light, int max_depth, unsigned char *p)
 {
     const rt_ray_node *camera = &r->nodes[0];
@@ -375,38 +369,30 @@ rt_status rt_render_view(const rt_scene *scene,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "light %d: the scene has lights 0..%d", light,
                              scene->light_count - 1);
-    rt_pixel_tracer *tracer;
+    rt_frame frame;
     int width, height, samples;
-    rt_status status = checked_tracer(scene, options, &tracer, &width,
-                                      &height, &samples, error);
+    rt_status status = rt__frame_setup(scene, options, &frame, &width,
+                                       &height, &samples, error);
     if (status != RT_OK)
         return status;
-    if (image->width != width || image->height != height) {
-        rt__pixel_tracer_destroy(tracer);
+    if (image->width != width || image->height != height)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "the image is %d x %d but the render writes "
                              "%d x %d", image->width, image->height, width,
                              height);
-    }
-    /* (the tracer took the options: their size is valid) */
-    int max_depth = options != NULL &&
-                            options->size >= offsetof(rt_render_options,
-                                                      max_depth) +
-                                                 sizeof options->max_depth
-                        ? options->max_depth
-                        : RT_DEFAULT_DEPTH;
+    int max_depth = frame.settings.max_depth;
     double *depth = NULL;
     if (view == RT_VIEW_DEPTH &&
         (depth = malloc((size_t)width * (size_t)height * sizeof *depth)) ==
             NULL)
         status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                                "out of memory for a depth view");
-    rt_trace_recorder r = {.scene = scene};
+    tree_builder r = {.scene = scene};
     for (int y = 0; status == RT_OK && y < height; y++) {
         unsigned char *row = rt_image_pixel(image, 0, y);
         for (int x = 0; status == RT_OK && x < width; x++) {
             rt_color value;
-            status = record_pixel(tracer, &r, x, y, 0, &value, error);
+            status = record_pixel(&frame, &r, x, y, 0, &value, error);
             if (status != RT_OK || r.count == 0)
                 break;
             if (depth != NULL)
@@ -419,6 +405,5 @@ rt_status rt_render_view(const rt_scene *scene,
         depth_view(depth, image, width, height);
     free(depth);
     free(r.nodes);
-    rt__pixel_tracer_destroy(tracer);
     return status;
 }

@@ -248,8 +248,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt_scene *s = calloc(1, sizeof *s);
     if (s == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
-    atomic_init(&s->kernel_f, NULL);
-    pthread_mutex_init(&s->kernel_lock, NULL);
+    rt__scene_prepared_init(s);
     const char *reason = rt__camera_make(d->observer, d->screen_center,
                                          d->screen_right, d->width, d->height,
                                          &s->camera);
@@ -310,7 +309,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
     source.cancel = cancel;
-    s->kernel = rt__kernel_d_create(&source);
+    s->kernel = rt__kernel_double_ops.create(&source);
     if (s->kernel == NULL) {
         rt_scene_destroy(s);
         if (rt_cancel_requested(cancel))
@@ -352,9 +351,7 @@ void rt_scene_destroy(rt_scene *scene)
     free(scene->vertices);
     free(scene->facets);
     free(scene->lights);
-    rt__kernel_d_free(scene->kernel);
-    rt__kernel_f_free(atomic_load(&scene->kernel_f));
-    pthread_mutex_destroy(&scene->kernel_lock);
+    rt__scene_prepared_free(scene);
     free(scene->warnings);
     for (int i = 0; i < scene->source_count; i++)
         free((char *)scene->sources[i].name);
@@ -447,43 +444,12 @@ const rt_warning *rt_scene_warning(const rt_scene *scene, int i)
     return &scene->warnings[i];
 }
 
-void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
-{
-    source->cancel = NULL;
-    source->vertices = s->vertices;
-    source->facets = s->facets;
-    source->facet_count = s->facet_count;
-    source->lights = s->lights;
-    source->light_count = s->light_count;
-    source->background = s->background;
-}
-
-const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene,
-                                      const rt_cancel *cancel)
-{
-    rt_scene *s = (rt_scene *)scene;   /* only the lazy kernel changes */
-    rt_kernel_f *k = atomic_load_explicit(&s->kernel_f, memory_order_acquire);
-    if (k != NULL)
-        return k;
-    pthread_mutex_lock(&s->kernel_lock);
-    k = atomic_load_explicit(&s->kernel_f, memory_order_relaxed);
-    if (k == NULL) {
-        rt_kernel_source source;
-        rt__scene_kernel_source(scene, &source);
-        source.cancel = cancel;
-        k = rt__kernel_f_create(&source);   /* NULL: not stored */
-        atomic_store_explicit(&s->kernel_f, k, memory_order_release);
-    }
-    pthread_mutex_unlock(&s->kernel_lock);
-    return k;
-}
-
 int rt_scene_nearest_hit(const rt_scene *scene, rt_ray ray, double t_max,
                          rt_hit *hit)
 {
     rt_kernel_hit h;
     if (!RT__EXPECT(scene != NULL && hit != NULL) ||
-        !rt__kernel_d_nearest_hit(scene->kernel, ray, t_max, &h))
+        !rt__kernel_nearest_hit(scene->kernel, ray, t_max, &h))
         return 0;
     hit->t = h.t;
     hit->facet = h.facet;
@@ -497,5 +463,5 @@ int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
 {
     if (!RT__EXPECT(scene != NULL))
         return 0;
-    return rt__kernel_d_occluded(scene->kernel, from, to, skip_facet);
+    return rt__kernel_occluded(scene->kernel, from, to, skip_facet);
 }

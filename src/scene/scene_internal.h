@@ -2,8 +2,8 @@
  * scene_internal.h - what an rt_scene holds (internal).
  *
  * A scene keeps two views of its facets: the records as the file gave them
- * (for accessors and the course's API), and the double-precision kernel
- * (kernel.h), which holds only the facets that can be hit, with what the
+ * (for accessors and the course's API), and its kernels (kernel.h), one
+ * per precision, which hold only the facets that can be hit, with what the
  * renderer needs precomputed.  Zero-area facets and exact repeats of the
  * facet before them (rt_facet_info.degenerate) are absent from the kernel:
  * the renderer never spends a test on them.
@@ -29,10 +29,17 @@ struct rt_scene {
     rt_rgb8 background;
     rt_light *lights;       /* light_count >= 1; the first is the file's */
     int light_count;
-    rt_kernel_d *kernel;    /* what the double-precision renderer reads */
-    _Atomic(rt_kernel_f *) kernel_f;    /* the float renderer's, built by
-                                           the first float render */
-    pthread_mutex_t kernel_lock;        /* serialises that construction */
+    rt_kernel *kernel;      /* the double-precision kernel, built with the
+                               scene: what rt_trace and the queries read */
+    _Atomic(rt_kernel *) kernel_f;      /* the float kernel, built by the
+                                           first float render */
+    _Atomic(rt_kernel_eye *) eyes[2];   /* per rt_precision, the eye of the
+                                           camera's observer, built by the
+                                           first render that reads it */
+    _Atomic(struct rt_workers *) workers;  /* the render threads, started
+                                              by the first render on
+                                              several */
+    pthread_mutex_t kernel_lock;        /* serialises those constructions */
     int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
     int transparent_count;  /* live facets with t > 0 */
@@ -68,15 +75,44 @@ const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
  * memory besides the renderer's data.  For tests of the budgets. */
 size_t rt__scene_bytes(const rt_scene *scene);
 
+/*
+ * What the scene prepares once for its renders (prepared.c): its kernels,
+ * their eyes and its render threads.  Each is made on first use, under
+ * the scene's lock, and only read afterwards: any number of renders share
+ * them.
+ */
+
+/* Sets up the fields of a new scene that hold them (none made yet). */
+void rt__scene_prepared_init(rt_scene *scene);
+/* Ends the render threads and frees the kernels and eyes. */
+void rt__scene_prepared_free(rt_scene *scene);
+
 /* What a kernel of any precision is built from: the scene's own arrays. */
 void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
 
-/* The scene's float kernel, built on the first call (thread-safe) and kept
- * until the scene is freed; NULL when out of memory, or when `cancel` (may
- * be NULL) was raised during that first build (nothing is kept: the next
- * call builds again). */
-const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene,
-                                      const rt_cancel *cancel);
+/* The scene's kernel in `precision` (double: the one built with the
+ * scene; float: built on the first call, thread-safe, and kept until the
+ * scene is freed); NULL when out of memory, or when `cancel` (may be NULL)
+ * was raised during that first build (nothing is kept: the next call
+ * builds again). */
+const rt_kernel *rt__scene_kernel(const rt_scene *scene,
+                                  rt_precision precision,
+                                  const rt_cancel *cancel);
+
+/* The eye of the camera's observer for the scene's kernel in `precision`
+ * (which rt__scene_kernel must have returned), built on the first call
+ * (thread-safe) and kept with the scene; NULL when out of memory. */
+const rt_kernel_eye *rt__scene_eye(const rt_scene *scene,
+                                   rt_precision precision);
+
+/* The scene's team of render threads (base/workers.h), made on the first
+ * call (thread-safe); NULL when out of memory (renders then start threads
+ * of their own). */
+struct rt_workers *rt__scene_workers(const rt_scene *scene);
+
+/* RT_OK for a precision rt_precision names, else RT_ERR_ARGUMENT with the
+ * reason in *error (may be NULL). */
+rt_status rt__precision_check(rt_precision precision, rt_error *error);
 
 /* Gives `scene` the files its load read: `sources` (an array of `count`,
  * from malloc, each name from malloc), which the scene frees; a list it

@@ -27,8 +27,7 @@ struct rb_engine {
     rt_precision precision;
     rt_vec3 *vertices;          /* ours: what the kernel was built from */
     rt_facet_info *facets;
-    rt_kernel_d *kd;
-    rt_kernel_f *kf;
+    rt_kernel *kernel;
     naive_d_scene *nd;
     naive_f_scene *nf;
 };
@@ -83,18 +82,16 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
     source.lights = lights;
     source.light_count = lights != NULL ? info.light_count : 0;
     source.background = info.background;
-    if (lights != NULL && precision == RT_PRECISION_FLOAT)
-        e->kf = rt__kernel_f_create(&source);
-    else if (lights != NULL)
-        e->kd = rt__kernel_d_create(&source);
+    if (lights != NULL)
+        e->kernel = (precision == RT_PRECISION_FLOAT ? &rt__kernel_float_ops
+                                                     : &rt__kernel_double_ops)
+                        ->create(&source);
     free(lights);       /* the kernel keeps its own copy */
     /* With the octree forced on, every query of the kernel goes through it
      * (a kernel that has one uses it for nearest_hit and occluded too). */
     if (rb_accel() == RT_ACCEL_OCTREE) {
-        if (e->kf != NULL)
-            rt__kernel_f_octree_prepare(e->kf, NULL, NULL);
-        if (e->kd != NULL)
-            rt__kernel_d_octree_prepare(e->kd, NULL, NULL);
+        if (e->kernel != NULL)
+            rt__kernel_prepare_octree(e->kernel, NULL, NULL);
     }
     return e;
 }
@@ -113,8 +110,7 @@ void rb_engine_free(rb_engine *e)
 {
     if (e == NULL)
         return;
-    rt__kernel_d_free(e->kd);
-    rt__kernel_f_free(e->kf);
+    rt__kernel_destroy(e->kernel);
     naive_d_free_scene(e->nd);
     naive_f_free_scene(e->nf);
     free(e->vertices);
@@ -129,9 +125,7 @@ int rb_engine_hit(const rb_engine *e, rt_ray ray, rb_hit *hit)
     if (e->nf != NULL)
         return naive_f_hit(e->nf, ray, hit);
     rt_kernel_hit h;
-    int found = e->kd != NULL
-                    ? rt__kernel_d_nearest_hit(e->kd, ray, INFINITY, &h)
-                    : rt__kernel_f_nearest_hit(e->kf, ray, INFINITY, &h);
+    int found = rt__kernel_nearest_hit(e->kernel, ray, INFINITY, &h);
     if (found) {
         hit->t = h.t;
         hit->facet = h.facet;
@@ -153,11 +147,8 @@ rt_color rb_engine_trace(const rb_engine *e, rt_ray ray, int depth)
     settings.octree = rb_accel() == RT_ACCEL_OCTREE;
     rt_counters counters;
     memset(&counters, 0, sizeof counters);
-    if (e->kd != NULL)
-        return rt__kernel_d_trace(e->kd, ray.origin, ray.direction, &settings,
-                                  &counters);
-    return rt__kernel_f_trace(e->kf, ray.origin, ray.direction, &settings,
-                              &counters);
+    return rt__kernel_trace(e->kernel, ray.origin, ray.direction, &settings,
+                            &counters);
 }
 
 long rb_engine_render(const rb_engine *e, int depth, int threads,

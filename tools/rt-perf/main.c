@@ -223,9 +223,17 @@ static int measure_once(const rt_scene *scene, const setting *s,
     return 1;
 }
 
+/* The rays a render cast, refracted ones included: the sum of
+ * RT_STATS_MAP's group `rays` (raytrace/render.h). */
 static uint64_t rays(const rt_render_stats *s)
 {
-    return s->camera_rays + s->shadow_rays + s->reflection_rays;
+    uint64_t all = 0;
+#define RAYS_(type, name, origin, merge, group, key, title)                  \
+    if (strcmp(#group, "rays") == 0)                                         \
+        all += (uint64_t)s->name;
+    RT_STATS_MAP(RAYS_)
+#undef RAYS_
+    return all;
 }
 
 static int same_pixels(const rt_image *a, const rt_image *b)
