@@ -19,7 +19,7 @@
 #include "formats/resolve.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
-#include "scene/scene_internal.h"
+#include "scene/scene_build.h"
 #include "base/vecmath.h"
 
 void rt_load_options_init(rt_load_options *options)

@@ -16,9 +16,7 @@
  * cancellation flag is polled every RT_LOAD_POLL entities, vertices and
  * primitives.
  */
-#include <ctype.h>
 #include <limits.h>
-#include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,13 +24,13 @@
 
 #include "base/error.h"
 #include "formats/formats.h"
+#include "formats/lexer.h"
 #include "formats/reader.h"
 #include "formats/tessellate.h"
-#include "scene/scene_internal.h"
+#include "scene/scene_build.h"
 #include "base/vecmath.h"
 
 #define PI 3.14159265358979323846
-#define MAX_NUMBER_LENGTH 256
 /* Ear clipping is quadratic or worse: non-convex polygons are limited. */
 #define MAX_NONCONVEX_VERTICES 1024
 /* The default tolerance keeps a silhouette within DEFAULT_PIXELS of the
@@ -46,11 +44,7 @@
 #define COARSEST_BANDS 2
 #define COARSEST_SEGMENTS 3
 
-typedef struct token {
-    const char *text;
-    size_t length;
-    int line, column;
-} token;
+typedef rt_token token;
 
 /* One warning of each kind per file. */
 enum {
@@ -76,19 +70,14 @@ typedef struct nff_light {
 } nff_light;
 
 typedef struct parser {
-    const char *text, *at, *end;
+    rt_lexer lex;           /* NFF is a stream of tokens */
     const char *name;
     const rt_load_options *options;
     long polls;             /* items handled, for the cancellation poll */
-    int line;               /* of `at` */
-    const char *line_start;
-    long tokens_left;       /* tokens from `at` on */
-    locale_t c_locale;
+    long token_count;       /* the tokens of the file */
     rt_error *error;
     rt_notes notes;
     int once[ONCE_COUNT];
-    token peeked;
-    int has_peeked;
     /* what the file says */
     int has_view;
     rt_vec3 from, at_point, up;
@@ -106,56 +95,6 @@ typedef struct parser {
     rt_tess_mesh mesh;
 } parser;
 
-static int is_space(int c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' ||
-           c == '\n';
-}
-
-/* Moves to the next token (skipping space and comments); 0 at the end. */
-static int scan(const char **at, const char *end, int *line,
-                const char **line_start)
-{
-    const char *c = *at;
-    for (;;) {
-        while (c < end && is_space((unsigned char)*c)) {
-            if (*c == '\n') {
-                if (line)
-                    (*line)++, *line_start = c + 1;
-            }
-            c++;
-        }
-        if (c < end && *c == '#') {
-            while (c < end && *c != '\n')
-                c++;
-            continue;
-        }
-        break;
-    }
-    *at = c;
-    return c < end;
-}
-
-static const char *token_end(const char *c, const char *end)
-{
-    while (c < end && !is_space((unsigned char)*c) && *c != '#')
-        c++;
-    return c;
-}
-
-/* The tokens of the input; -1 when the load is cancelled meanwhile. */
-static long count_tokens(const char *at, const char *end,
-                         const rt_load_options *options)
-{
-    long count = 0;
-    while (scan(&at, end, NULL, NULL)) {
-        at = token_end(at, end);
-        if (count++ % (16 * RT_LOAD_POLL) == 0 && rt__load_cancelled(options))
-            return -1;
-    }
-    return count;
-}
-
 /* Non-zero when the load is cancelled, looked at on the first item and
  * every RT_LOAD_POLL items after it. */
 static int poll_cancel(parser *p)
@@ -166,77 +105,31 @@ static int poll_cancel(parser *p)
 /* The next token; 0 at the end of the input. */
 static int next_token(parser *p, token *t)
 {
-    if (p->has_peeked) {
-        *t = p->peeked;
-        p->has_peeked = 0;
-        return 1;
-    }
-    if (!scan(&p->at, p->end, &p->line, &p->line_start))
-        return 0;
-    const char *e = token_end(p->at, p->end);
-    t->text = p->at;
-    t->length = (size_t)(e - p->at);
-    t->line = p->line;
-    t->column = (int)(p->at - p->line_start) + 1;
-    p->at = e;
-    p->tokens_left--;
-    return 1;
+    return rt__lex_next(&p->lex, t);
 }
 
-static int peek_token(parser *p, token *t)
+/* The tokens of the file not read yet. */
+static long tokens_left(const parser *p)
 {
-    if (!p->has_peeked) {
-        if (!next_token(p, &p->peeked))
-            return 0;
-        p->has_peeked = 1;
-    }
-    *t = p->peeked;
-    return 1;
-}
-
-/* Prints a token for a message: at most 40 bytes, non-printables as '?'. */
-static const char *show(const token *t, char *buffer, size_t size)
-{
-    size_t n = t->length < 40 ? t->length : 40;
-    if (n > size - 4)
-        n = size - 4;
-    for (size_t i = 0; i < n; i++) {
-        unsigned char c = (unsigned char)t->text[i];
-        buffer[i] = isprint(c) ? (char)c : '?';
-    }
-    strcpy(buffer + n, t->length > n ? "..." : "");
-    return buffer;
+    return p->token_count - p->lex.tokens;
 }
 
 static rt_status fail(parser *p, rt_status status, const token *t,
                       const char *expected)
 {
-    char shown[48];
-    return rt__error_set(p->error, status, p->name, t->line, t->column,
-                         "expected %s, found `%s`", expected,
-                         show(t, shown, sizeof shown));
+    return rt__token_refuse(p->error, status, p->name, t, "%s", expected);
 }
 
-/* The position just past the last byte of the input. */
-static void end_position(const parser *p, int *line, int *column)
+/* The size of the file in bytes. */
+static size_t file_bytes(const parser *p)
 {
-    const char *last = p->end;
-    while (last > p->text && last[-1] != '\n')
-        last--;
-    if (last == p->text && p->end - p->text >= 3 &&
-        memcmp(p->text, "\xEF\xBB\xBF", 3) == 0)
-        last += 3;
-    int newlines = 0;
-    for (const char *c = p->text; c < p->end; c++)
-        newlines += *c == '\n';
-    *line = newlines + 1;
-    *column = (int)(p->end - last) + 1;
+    return (size_t)(p->lex.end - p->lex.start);
 }
 
 static rt_status unexpected_end(parser *p, const char *expected)
 {
     int line, column;
-    end_position(p, &line, &column);
+    rt__lex_end(&p->lex, &line, &column);
     return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, line, column,
                          "unexpected end of file: expected %s", expected);
 }
@@ -250,66 +143,22 @@ static rt_status expect_token(parser *p, token *t, const char *expected)
 
 static int is_word(const token *t, const char *word)
 {
-    return t->length == strlen(word) && memcmp(t->text, word, t->length) == 0;
-}
-
-/* Whether a token is a number of the .scn syntax:
- * [+-] digits [. digits] [(e|E) [+-] digits], at least one digit. */
-static int number_syntax(const token *t)
-{
-    const char *c = t->text, *e = t->text + t->length;
-    if (c < e && (*c == '+' || *c == '-'))
-        c++;
-    int digits = 0;
-    while (c < e && isdigit((unsigned char)*c))
-        c++, digits++;
-    if (c < e && *c == '.')
-        for (c++; c < e && isdigit((unsigned char)*c); c++)
-            digits++;
-    if (digits > 0 && c < e && (*c == 'e' || *c == 'E')) {
-        c++;
-        if (c < e && (*c == '+' || *c == '-'))
-            c++;
-        int exponent_digits = 0;
-        while (c < e && isdigit((unsigned char)*c))
-            c++, exponent_digits++;
-        if (exponent_digits == 0)
-            digits = 0;
-    }
-    return digits > 0 && c == e;
+    return rt__token_is(t, word);
 }
 
 /* A token as a finite number; `what` names it ("the sphere's radius"). */
 static rt_status to_number(parser *p, const token *t, const char *what,
                            double *value)
 {
+    rt_status status = rt__lex_number(&p->lex, t, value);
+    if (status == RT_OK || status == RT_ERR_LIMIT)
+        return status == RT_OK ? RT_OK
+                               : fail(p, status, t,
+                                      rt__number_expected(status));
     char expected[160];
-    if (!number_syntax(t)) {
-        char lower[8] = "";
-        for (size_t k = 0; k < t->length && k < 7; k++)
-            lower[k] = (char)tolower((unsigned char)t->text[k]);
-        const char *word = lower[0] == '+' || lower[0] == '-' ? lower + 1
-                                                             : lower;
-        int special = strncmp(word, "nan", 3) == 0 ||
-                      strncmp(word, "inf", 3) == 0;
-        snprintf(expected, sizeof expected, "%s for %s",
-                 special ? "a finite number" : "a number", what);
-        return fail(p, special ? RT_ERR_RANGE : RT_ERR_SYNTAX, t, expected);
-    }
-    if (t->length > MAX_NUMBER_LENGTH)
-        return fail(p, RT_ERR_LIMIT, t, "a number of at most 256 characters");
-    char copy[MAX_NUMBER_LENGTH + 1];
-    memcpy(copy, t->text, t->length);
-    copy[t->length] = '\0';
-    locale_t previous = uselocale(p->c_locale);
-    double v = strtod(copy, NULL);
-    uselocale(previous);
-    if (!isfinite(v)) {
-        snprintf(expected, sizeof expected, "a finite number for %s", what);
-        return fail(p, RT_ERR_RANGE, t, expected);
-    }
-    *value = v;
-    return RT_OK;
+    snprintf(expected, sizeof expected, "%s for %s",
+             rt__number_expected(status), what);
+    return fail(p, status, t, expected);
 }
 
 static rt_status number(parser *p, const char *what, double *value,
@@ -319,11 +168,11 @@ static rt_status number(parser *p, const char *what, double *value,
     char expected[160];
     snprintf(expected, sizeof expected, "a number for %s", what);
     rt_status status = expect_token(p, &t, expected);
-    if (status == RT_OK)
-        status = to_number(p, &t, what, value);
+    if (status != RT_OK)
+        return status;
     if (where != NULL)
         *where = t;
-    return status;
+    return to_number(p, &t, what, value);
 }
 
 static rt_status integer(parser *p, const char *what, long min, long max,
@@ -512,10 +361,10 @@ static rt_status light(parser *p, const token *l)
                               NULL);
     if (status != RT_OK)
         return status;
+    /* (a token on the line of `l` follows the position on that line) */
     token t;
-    int line = p->line;
-    if (peek_token(p, &t) && t.line == line && number_syntax(&t) &&
-        t.line == l->line) {
+    if (rt__lex_peek(&p->lex, &t) && t.line == l->line &&
+        rt__number_syntax(t.text, t.length)) {
         if ((status = color(p, "the light's colour", &light->color)) != RT_OK)
             return status;
         light->colored = 1;
@@ -723,11 +572,11 @@ static rt_status polygon(parser *p, const token *entity, int patch)
     if (status != RT_OK)
         return status;
     long per_vertex = patch ? 6 : 3;
-    if (n > p->tokens_left / per_vertex) {
+    if (n > tokens_left(p) / per_vertex) {
         char expected[160];
         snprintf(expected, sizeof expected,
                  "a vertex count of at most %ld (the values left in the "
-                 "file)", p->tokens_left / per_vertex);
+                 "file)", tokens_left(p) / per_vertex);
         return fail(p, RT_ERR_LIMIT, &count_t, expected);
     }
     if (n > p->point_capacity) {
@@ -899,7 +748,7 @@ static rt_status too_many(parser *p, const primitive *prim, double facets,
                          "%zu bytes (%d + %d a byte, at most %d), found that "
                          "this %s brings them to %s: give a larger "
                          "tessellation tolerance (--tessellate)%s",
-                         budget, (size_t)(p->end - p->text),
+                         budget, file_bytes(p),
                          RT_TESS_BUDGET_BASE, RT_TESS_BUDGET_PER_BYTE,
                          RT_TESS_MAX_FACETS, prim->cone ? "cone" : "sphere",
                          total, tol);
@@ -934,7 +783,7 @@ static rt_status cut_primitive(parser *p, const primitive *prim,
 
 static rt_status tessellate(parser *p, double option)
 {
-    double budget = rt__tess_budget((size_t)(p->end - p->text));
+    double budget = rt__tess_budget(file_bytes(p));
     double last_tol = -1;
     int last_bands = 0, last_segments = 0;
     const primitive *first_dropped = NULL;
@@ -1003,7 +852,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
         return status;
     if (!p->has_view) {
         int line, column;
-        end_position(p, &line, &column);
+        rt__lex_end(&p->lex, &line, &column);
         return rt__error_set(p->error, RT_ERR_CAMERA, p->name, line, column,
                              "expected a viewpoint `v` (from, at, up, angle, "
                              "hither, resolution), found none in the file");
@@ -1080,8 +929,6 @@ rt_status rt__nff_parse(const char *text, size_t length, const char *name,
     if (text == NULL && length > 0)
         return rt__error_set(error, RT_ERR_ARGUMENT, shown, 0, 0,
                              "expected scene text");
-    if (text == NULL)
-        text = "";
     rt_load_options defaults;
     if (options == NULL) {
         rt_load_options_init(&defaults);
@@ -1092,30 +939,21 @@ rt_status rt__nff_parse(const char *text, size_t length, const char *name,
         return rt__error_set(error, RT_ERR_ARGUMENT, shown, 0, 0,
                              "expected a tessellation tolerance in (0, 1), "
                              "found %g", options->tessellation);
-    rt_status status = rt__text_check(text, length, shown, error);
-    if (status != RT_OK)
-        return status;
     parser p;
     memset(&p, 0, sizeof p);
-    p.text = text;
-    p.at = text;
-    p.end = text + length;
     p.name = shown;
-    p.line = 1;
     p.error = error;
-    if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
-        p.at += 3;          /* a UTF-8 byte-order mark: not a column */
-    p.line_start = p.at;
     p.options = options;
-    p.tokens_left = count_tokens(p.at, p.end, options);
-    if (p.tokens_left < 0)
+    rt_status status = rt__lex_open(&p.lex, text, length, shown, 0, error);
+    if (status != RT_OK)
+        return status;
+    p.token_count = rt__lex_count(&p.lex, 0, options->cancel);
+    if (p.token_count < 0) {
+        rt__lex_close(&p.lex);
         return rt__load_cancel(error, shown);
-    p.c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
-    if (p.c_locale == (locale_t)0)
-        return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,
-                             "cannot create the C locale");
+    }
     status = parse(&p, options, scene);
-    freelocale(p.c_locale);
+    rt__lex_close(&p.lex);
     rt__notes_free(&p.notes);
     free(p.lights);
     free(p.materials);

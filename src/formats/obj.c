@@ -42,18 +42,19 @@ static rt_status refuse(reader *r, rt_status status, const token *t,
                         int column_offset, const char *fmt, ...)
     RT_PRINTF_LIKE(5, 6);
 
-/* "name:line:column: expected ..., found `token`". */
+/* "name:line:column: expected ..., found `token`", the column
+ * `column_offset` bytes into the token. */
 static rt_status refuse(reader *r, rt_status status, const token *t,
                         int column_offset, const char *fmt, ...)
 {
-    char expected[200], buffer[MAX_TOKEN_SHOWN + 4];
+    char expected[RT_ERROR_MESSAGE_SIZE];
     va_list args;
     va_start(args, fmt);
     vsnprintf(expected, sizeof expected, fmt, args);
     va_end(args);
-    return rt__error_set(r->error, status, r->name, t->line,
-                         t->column + column_offset, "expected %s, found `%s`",
-                         expected, rt__obj_shown(t, buffer));
+    token at = *t;
+    at.column += column_offset;
+    return rt__token_refuse(r->error, status, r->name, &at, "%s", expected);
 }
 
 /* The position just after token t, for "found the end of ...". */
@@ -67,14 +68,10 @@ static void after(const token *t, int *line, int *column)
 static rt_status number_at(reader *r, int i, double *value)
 {
     const token *t = &r->lex.tokens[i];
-    switch (rt__obj_decimal(r->c_locale, t, value)) {
-    case 0:
-        return RT_OK;
-    case 2:
-        return refuse(r, RT_ERR_RANGE, t, 0, "a finite number");
-    default:
-        return refuse(r, RT_ERR_SYNTAX, t, 0, "a number");
-    }
+    rt_status status = rt__obj_number(&r->lex, t, value);
+    if (status != RT_OK)
+        return refuse(r, status, t, 0, "%s", rt__number_expected(status));
+    return RT_OK;
 }
 
 /* ---------------------------------------------------------------- geometry */
@@ -126,16 +123,16 @@ static rt_status attribute(reader *r, int *count, int least, int most)
     if (rt__obj_rest(x, most + 1) != 0)
         return rt__obj_out_of_memory(r);
     if (x->total - 1 < least || x->total - 1 > most) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         int line, column;
         after(&x->last, &line, &column);
         if (x->total - 1 > most)
             return refuse(r, RT_ERR_SYNTAX, &x->tokens[most + 1], 0,
                           "at most %d values for `%s`", most,
-                          rt__obj_shown(&x->tokens[0], buffer));
+                          rt__token_shown(&x->tokens[0], buffer));
         return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, line, column,
                              "expected %d values for `%s`, found %ld", least,
-                             rt__obj_shown(&x->tokens[0], buffer),
+                             rt__token_shown(&x->tokens[0], buffer),
                              x->total - 1);
     }
     for (int i = 1; i < x->count; i++) {
@@ -177,7 +174,7 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                       "a whole %s index", what);
     long long resolved = negative ? count - value : value - 1;
     if (value == 0 || resolved < 0 || resolved >= count) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         token part = {t->text + *at, i - *at, t->line, t->column + column};
         if (out == NULL && value != 0) {
             /* Texture coordinates and normals are not used: exporters
@@ -187,7 +184,7 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                 rt__obj_warn(r, r->name, part.line, part.column,
                              "`%s` refers to no %s read so far; %s indices "
                              "are not used, this one is ignored (said once)",
-                             rt__obj_shown(&part, buffer), what, what);
+                             rt__token_shown(&part, buffer), what, what);
             *at = i;
             return RT_OK;
         }
@@ -196,13 +193,13 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                                  part.column,
                                  "expected a %s index, found `%s` before any "
                                  "%s is defined", what,
-                                 rt__obj_shown(&part, buffer), what);
+                                 rt__token_shown(&part, buffer), what);
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, part.line,
                              part.column,
                              "expected a %s index in 1..%d or -%d..-1 (%d "
                              "defined so far; 0 names none), found `%s`",
                              what, count, count, count,
-                             rt__obj_shown(&part, buffer));
+                             rt__token_shown(&part, buffer));
     }
     *at = i;
     if (out != NULL)
@@ -471,27 +468,27 @@ static rt_status statement(reader *r)
     rt_status status = rt__obj_poll(r);
     if (status != RT_OK)
         return status;
-    if (rt__obj_token_is(k, "v"))
+    if (rt__token_is(k, "v"))
         return vertex(r);
-    if (rt__obj_token_is(k, "f") || rt__obj_token_is(k, "fo"))
+    if (rt__token_is(k, "f") || rt__token_is(k, "fo"))
         return face(r);
-    if (rt__obj_token_is(k, "vt"))
+    if (rt__token_is(k, "vt"))
         return attribute(r, &r->texture_count, 1, 3);
-    if (rt__obj_token_is(k, "vn")) {
+    if (rt__token_is(k, "vn")) {
         if (r->normal_count == 0)
             rt__obj_warn(r, r->name, k->line, k->column,
                          "vertex normals (`vn`) are ignored: facets are "
                          "shaded flat (said once)");
         return attribute(r, &r->normal_count, 3, 3);
     }
-    if (rt__obj_token_is(k, "o") || rt__obj_token_is(k, "g") ||
-        rt__obj_token_is(k, "s"))
+    if (rt__token_is(k, "o") || rt__token_is(k, "g") ||
+        rt__token_is(k, "s"))
         return RT_OK;
-    if (rt__obj_token_is(k, "mtllib"))
+    if (rt__token_is(k, "mtllib"))
         return rt__obj_read_libraries(r);
-    if (rt__obj_token_is(k, "usemtl"))
+    if (rt__token_is(k, "usemtl"))
         return rt__obj_use_material(r);
-    if (rt__obj_token_is(k, "l") || rt__obj_token_is(k, "p")) {
+    if (rt__token_is(k, "l") || rt__token_is(k, "p")) {
         rt__obj_warn_once(r, r->name, k,
                           "(lines and points) are ignored: only faces are "
                           "drawn");
@@ -554,37 +551,29 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory");
     rt_status status = RT_OK;
+    reader r;
+    memset(&r, 0, sizeof r);
     if (text == NULL && length > 0)
         status = rt__error_set(error, RT_ERR_ARGUMENT, shown_name, 0, 0,
                                "expected scene text");
     if (status == RT_OK)
-        status = rt__text_check(text ? text : "", length, shown_name, error);
-    locale_t c_locale = (locale_t)0;
-    if (status == RT_OK &&
-        (c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0)) == (locale_t)0)
-        status = rt__error_set(error, RT_ERR_NOMEM, shown_name, 0, 0,
-                               "cannot create the C locale");
+        status = rt__obj_lexer_open(&r.lex, text, length, shown_name, error);
     if (status != RT_OK) {
         free(shown_name);
         return status;
     }
-    reader r;
-    memset(&r, 0, sizeof r);
     r.name = shown_name;
     r.error = error;
     r.options = options;
     r.files = files;
-    r.c_locale = c_locale;
     r.current = -1;
     r.open_wait = -1;
-    rt__obj_lexer_start(&r.lex, text ? text : "", length);
     double budget = RT_TRI_WORK_FLOOR + (double)RT_TRI_WORK_PER_BYTE * length;
     rt__tri_init(&r.triangulator, budget, options->cancel);
     status = read_obj(&r, scene);
-    freelocale(c_locale);
     rt__obj_free_materials(&r);
     rt__tri_free(&r.triangulator);
-    free(r.lex.tokens);
+    rt__obj_lexer_close(&r.lex);
     free(r.vertices);
     free(r.facets);
     free(r.facet_lines);

@@ -17,7 +17,6 @@
 #include "base/error.h"
 #include "base/exact.h"
 #include "kernel/plane_crossing.h"
-#include "formats/reader.h"
 #include "scene_internal.h"
 #include "base/vecmath.h"
 

@@ -16,6 +16,7 @@
 
 #include "kernel/kernel.h"
 #include "raytrace/scene.h"
+#include "scene/scene_build.h"
 
 struct rt_scene {
     char *name;
@@ -40,21 +41,6 @@ struct rt_scene {
     int source_count;
 };
 
-struct rt_notes;
-
-/*
- * Builds a scene from a validated description.  `name` (may be NULL) and
- * `facet_lines` (may be NULL) only serve warnings; `notes` (may be NULL)
- * are the reader's own warnings, listed before the builder's; `cancel`
- * (may be NULL) is polled (RT_ERR_CANCELLED).  On failure returns a
- * status with *error filled and *scene NULL.
- */
-rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
-                          const int *facet_lines,
-                          const struct rt_notes *notes,
-                          const rt_cancel *cancel, rt_scene **scene,
-                          rt_error *error);
-
 /*
  * Computes the camera of docs/rendering-model.md (aperture 0, focal distance
  * |AO|: the pinhole camera).  Returns NULL on success, or a
@@ -77,11 +63,5 @@ void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);
  * call builds again). */
 const rt_kernel_f *rt__scene_kernel_f(const rt_scene *scene,
                                       const rt_cancel *cancel);
-
-/* Gives `scene` the files its load read: `sources` (an array of `count`,
- * from malloc, each name from malloc), which the scene frees; a list it
- * held before is freed. */
-void rt__scene_take_sources(rt_scene *scene, rt_scene_source *sources,
-                            int count);
 
 #endif /* RAYTRACE_SCENE_INTERNAL_H */
