@@ -15,6 +15,7 @@
 #include "base/error.h"
 #include "base/file.h"
 #include "formats/formats.h"
+#include "formats/framing.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
 #include "raytrace/render.h"
@@ -186,19 +187,18 @@ static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
     }
     if (o->fov_given)
         fov = o->fov;
-    if (!(fov > 0 && fov < 180))
+    rt_view view = {from, at, up, fov, d->width, 0};
+    switch (rt__frame_view(&view, &d->observer, &d->screen_center,
+                           &d->screen_right)) {
+    case RT_FRAME_OK:
+        return NULL;
+    case RT_FRAME_FOV:
         return "the field of view is not in (0, 180) degrees";
-    rt_vec3 view = v3_sub(at, from);
-    double distance = v3_length(view);
-    if (!(distance > 0) || !isfinite(distance))
+    case RT_FRAME_SAME_POINT:
         return "the look-from point is the look-at point";
-    rt_vec3 right = v3_cross(view, up);
-    if (!(v3_length(right) > 0))
+    case RT_FRAME_UP_ALONG_VIEW:
         return "the up direction is along the view";
-    d->observer = from;
-    d->screen_center = at;
-    d->screen_right = v3_add(at, v3_scale(v3_normalize(right),
-                                          distance * tan(fov * PI / 360)));
+    }
     return NULL;
 }
 

@@ -24,13 +24,13 @@
 
 #include "base/error.h"
 #include "formats/formats.h"
+#include "formats/framing.h"
 #include "formats/lexer.h"
 #include "formats/reader.h"
 #include "formats/tessellate.h"
 #include "scene/scene_build.h"
 #include "base/vecmath.h"
 
-#define PI 3.14159265358979323846
 /* Ear clipping is quadratic or worse: non-convex polygons are limited. */
 #define MAX_NONCONVEX_VERTICES 1024
 /* The default tolerance keeps a silhouette within DEFAULT_PIXELS of the
@@ -82,6 +82,7 @@ typedef struct parser {
     int has_view;
     rt_vec3 from, at_point, up;
     double angle;
+    rt_vec3 observer, screen_center, screen_right;  /* its frame */
     int width, height;
     rt_rgb8 background;
     nff_light *lights;
@@ -304,9 +305,6 @@ static rt_status view(parser *p, const token *v)
         (status = keyword(p, "angle")) != RT_OK ||
         (status = number(p, "`angle`", &p->angle, &angle_t)) != RT_OK)
         return status;
-    if (!(p->angle > 0 && p->angle < 180))
-        return fail(p, RT_ERR_RANGE, &angle_t,
-                    "an angle in (0, 180) degrees");
     /* hither came with NFF 2.7: older files go on with the resolution */
     if ((status = expect_token(p, &t, "`hither` or `resolution`")) != RT_OK)
         return status;
@@ -331,14 +329,23 @@ static rt_status view(parser *p, const token *v)
                   "the resolution is not square: the angle is taken "
                   "horizontally (pixels stay square, so the vertical angle "
                   "is smaller or larger than NFF's)");
-    rt_vec3 view_dir = v3_sub(p->at_point, p->from);
-    if (!(v3_length(view_dir) > 0) || !isfinite(v3_length(view_dir)))
+    /* NFF's angle spans the centres of the first and last columns. */
+    rt_view frame = {p->from, p->at_point, p->up, p->angle, p->width, 1};
+    switch (rt__frame_view(&frame, &p->observer, &p->screen_center,
+                           &p->screen_right)) {
+    case RT_FRAME_FOV:
+        return fail(p, RT_ERR_RANGE, &angle_t,
+                    "an angle in (0, 180) degrees");
+    case RT_FRAME_SAME_POINT:
         return fail(p, RT_ERR_CAMERA, &at_t,
                     "`at` apart from `from` (a direction to look in)");
-    if (!(v3_length(v3_cross(view_dir, p->up)) > 0))
+    case RT_FRAME_UP_ALONG_VIEW:
         return fail(p, RT_ERR_CAMERA, &up_t,
                     "an `up` vector not along the view (from `from` to "
                     "`at`)");
+    case RT_FRAME_OK:
+        break;
+    }
     p->has_view = 1;
     return RT_OK;
 }
@@ -680,7 +687,7 @@ static cut default_cut(const parser *p, const primitive *prim)
     if (depth > 0) {
         if (!(depth > 0.1 * r))
             depth = 0.1 * r;
-        double half_width = depth * tan(p->angle * PI / 360.0);
+        double half_width = depth * rt__frame_tan_half(p->angle);
         double pixels_per_unit = 0.5 * p->width / half_width;
         double rho = pixels_per_unit * r;  /* the radius in pixels */
         if (2.0 * rho >= 1.0)
@@ -695,7 +702,7 @@ static cut default_cut(const parser *p, const primitive *prim)
     if (!(along + reach > 0))
         return c;
     double farthest = v3_length(v3_sub(center, p->from)) + reach;
-    double focal = 0.5 * p->width / tan(p->angle * PI / 360.0);
+    double focal = 0.5 * p->width / rt__frame_tan_half(p->angle);
     c.tolerance = smooth_tolerance(focal * r / farthest);
     c.most_facets = (double)p->width * (double)p->height;
     return c;
@@ -862,16 +869,9 @@ static rt_status parse(parser *p, const rt_load_options *options,
 
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
-    rt_vec3 view_dir = v3_sub(p->at_point, p->from);
-    double distance = v3_length(view_dir);
-    /* NFF's angle spans the centres of the first and last columns. */
-    double half = distance * tan(p->angle * PI / 360.0);
-    if (p->width > 1)
-        half /= 1.0 - 1.0 / p->width;
-    rt_vec3 right = v3_normalize(v3_cross(view_dir, p->up));
-    d.observer = p->from;
-    d.screen_center = p->at_point;
-    d.screen_right = v3_add(p->at_point, v3_scale(right, half));
+    d.observer = p->observer;
+    d.screen_center = p->screen_center;
+    d.screen_right = p->screen_right;
     d.width = p->width;
     d.height = p->height;
     d.background = p->background;

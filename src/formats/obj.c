@@ -26,6 +26,7 @@
 
 #include "base/exact.h"
 #include "formats/formats.h"
+#include "formats/framing.h"
 #include "formats/obj.h"
 #include "base/vecmath.h"
 
@@ -366,8 +367,6 @@ static rt_status face(reader *r)
 
 /* ---------------------------------------------------------------- the view */
 
-#define PI 3.14159265358979323846
-
 /* The i-th vertex the camera frames: those of the facets, or all vertices
  * when there is no facet. */
 static rt_vec3 framed(const reader *r, int i)
@@ -413,8 +412,8 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
      * D the camera's distance from the point it looks at.  The first fit
      * looks at the box's centre; the second at the point that centres the
      * first picture, and its fit is again exact. */
-    double half = VIEW_FOV_DEGREES * PI / 360.0;
-    double tan_x = tan(half), tan_y = tan_x * d->height / d->width;
+    double tan_x = rt__frame_tan_half(VIEW_FOV_DEGREES);
+    double tan_y = tan_x * d->height / d->width;
     double distance = 0.0;
     for (int pass = 0; pass < 2; pass++) {
         double low_x = 0, high_x = 0, low_y = 0, high_y = 0;
@@ -441,7 +440,8 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
     }
     d->observer = v3_add(center, v3_scale(view, distance));
     d->screen_center = center;
-    d->screen_right = v3_add(center, v3_scale(right, distance * tan_x));
+    d->screen_right = rt__frame_right(center, v3_neg(view), v3(0, 1, 0),
+                                      distance * tan_x);
     if (!(v3_max_abs(d->observer) <= RT_MAX_COORDINATE) ||
         !(v3_max_abs(d->screen_right) <= RT_MAX_COORDINATE))
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
