@@ -97,7 +97,8 @@ static rt_camera framed_camera(const rt_view *view, int width, int height)
     rt_vec3 o, a, b;
     ck_assert_int_eq(rt__frame_view(view, &o, &a, &b), RT_FRAME_OK);
     rt_camera camera;
-    ck_assert_ptr_null(rt__camera_make(o, a, b, width, height, &camera));
+    ck_assert_ptr_null(
+        rt__camera_make(o, a, b, width, height, &camera, NULL));
     return camera;
 }
 

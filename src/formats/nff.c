@@ -23,7 +23,6 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "formats/formats.h"
 #include "formats/framing.h"
 #include "formats/lexer.h"
 #include "formats/reader.h"
@@ -67,6 +66,7 @@ typedef struct nff_light {
     rt_vec3 position;
     rt_rgb8 color;
     int colored;
+    token at;               /* its `l`, for the builder's refusals */
 } nff_light;
 
 typedef struct parser {
@@ -353,17 +353,12 @@ static rt_status view(parser *p, const token *v)
 /* l x y z [r g b]: the colour only on the same line. */
 static rt_status light(parser *p, const token *l)
 {
-    if (p->light_count == RT_MAX_LIGHTS)
-        return rt__error_set(p->error, RT_ERR_LIMIT, p->name, l->line,
-                             l->column,
-                             "expected at most %d lights (each one costs "
-                             "every hit a shadow ray), found light %d",
-                             RT_MAX_LIGHTS, RT_MAX_LIGHTS + 1);
     if (grow((void **)&p->lights, &p->light_capacity, p->light_count,
              sizeof *p->lights) != 0)
         return out_of_memory(p);
     nff_light *light = &p->lights[p->light_count];
     memset(light, 0, sizeof *light);
+    light->at = *l;
     rt_status status = triple(p, "the light's position", 0, &light->position,
                               NULL);
     if (status != RT_OK)
@@ -827,6 +822,18 @@ static rt_status tessellate(parser *p, double option)
     return RT_OK;
 }
 
+/* The token a refusal of the builder names (rt_locate_func): NFF's
+ * lights are its own; the points it computes with (the view, polygons,
+ * centres) it checks itself. */
+static int locate(void *user, const rt_refusal *r, token *at)
+{
+    const parser *p = user;
+    if (r->item != RT_ITEM_LIGHT || r->index >= p->light_count)
+        return 0;
+    *at = p->lights[r->index].at;
+    return 1;
+}
+
 static rt_status parse(parser *p, const rt_load_options *options,
                        rt_scene **scene)
 {
@@ -911,9 +918,11 @@ static rt_status parse(parser *p, const rt_load_options *options,
         status = out_of_memory(p);
     else if (rt__load_cancelled(options))
         status = rt__load_cancel(p->error, p->name);
-    else
-        status = rt__reader_finish(&d, p->name, p->mesh.facet_lines,
-                                   &p->notes, options, scene, p->error);
+    else {
+        rt_reading reading = {p->name, p->mesh.facet_lines, &p->notes,
+                              options, locate, p};
+        status = rt__reader_finish(&d, &reading, scene, p->error);
+    }
     free(lights);
     return status;
 }

@@ -25,7 +25,6 @@
 #include <string.h>
 
 #include "base/exact.h"
-#include "formats/formats.h"
 #include "formats/framing.h"
 #include "formats/obj.h"
 #include "base/vecmath.h"
@@ -388,11 +387,6 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
     d->width = o->width > 0 ? o->width : o->height > 0 ? o->height
                                                        : DEFAULT_SIDE;
     d->height = o->height > 0 ? o->height : d->width;
-    if (d->width > RT_MAX_IMAGE_SIDE || d->height > RT_MAX_IMAGE_SIDE ||
-        o->width < 0 || o->height < 0)
-        return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
-                             "expected an image size in 1..%d, found %dx%d",
-                             RT_MAX_IMAGE_SIDE, o->width, o->height);
     int n = r->facet_count > 0 ? 3 * r->facet_count : r->vertex_count;
     rt_vec3 lo = n > 0 ? framed(r, 0) : v3(0, 0, 0), hi = lo;
     for (int i = 1; i < n; i++) {
@@ -531,8 +525,9 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     d.vertex_count = r->vertex_count;
     d.facets = r->facets;
     d.facet_count = r->facet_count;
-    return rt__reader_finish(&d, r->name, r->facet_lines, &r->notes,
-                             r->options, scene, r->error);
+    rt_reading reading = {r->name, r->facet_lines, &r->notes, r->options,
+                          NULL, NULL};
+    return rt__reader_finish(&d, &reading, scene, r->error);
 }
 
 rt_status rt__obj_parse(const char *text, size_t length, const char *name,

@@ -1,8 +1,11 @@
 /*
- * reader.h - what every scene reader shares (internal): the poll of a
- * load's cancellation flag.  The bytes are read through the lexer
- * (lexer.h); the scene is reached through the builder's header
- * (scene/scene_build.h), with the warnings a reader collects.
+ * reader.h - what every scene reader shares (internal): the readers' entry
+ * points (scn.c, nff.c, obj.c), the end of every read (rt__reader_finish:
+ * the options' view and lights, the build, a refusal mapped to the token
+ * the reader kept), and the poll of a load's cancellation flag.  The bytes
+ * are read through the lexer (lexer.h); the scene is reached through the
+ * builder's header (scene/scene_build.h), with the warnings a reader
+ * collects.
  */
 #ifndef RAYTRACE_READER_H
 #define RAYTRACE_READER_H
@@ -10,8 +13,53 @@
 #include <stddef.h>
 
 #include "base/error.h"
+#include "formats/lexer.h"
 #include "raytrace/scene.h"
 #include "scene/scene_build.h"
+
+/*
+ * Finds the token a reader kept for what `refusal` names (its item, index,
+ * field and part): 1 with *token set, or 0 when the reader kept none (the
+ * builder's words then stand without a position).
+ */
+typedef int (*rt_locate_func)(void *user, const rt_refusal *refusal,
+                              rt_token *token);
+
+/* What a reader hands over at its end (rt__reader_finish). */
+typedef struct rt_reading {
+    const char *name;               /* the file, for messages */
+    const int *facet_lines;         /* each facet's line; may be NULL */
+    const rt_notes *notes;          /* the reader's warnings; may be NULL */
+    const rt_load_options *options; /* may be NULL */
+    rt_locate_func locate;          /* may be NULL */
+    void *user;                     /* for locate */
+} rt_reading;
+
+/*
+ * What every reader ends with: applies the view and the lights of
+ * reading->options to `desc`, then builds the scene (scene_build.h).  A
+ * refusal of the builder that names an item of the file (not one the
+ * options replaced) is reported at the token reading->locate finds for
+ * it, "name:line:column: expected RULE, found `TOKEN`"; other failures
+ * keep the builder's words.
+ */
+rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
+                            rt_scene **scene, rt_error *error);
+
+/* The readers: the contract of rt_scene_parse_with for one format; each
+ * ends with rt__reader_finish. */
+rt_status rt__scn_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options, rt_scene **scene,
+                        rt_error *error);
+rt_status rt__nff_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options, rt_scene **scene,
+                        rt_error *error);
+struct rt_files;
+/* OBJ also reads the files it names through `files` (resolve.h). */
+rt_status rt__obj_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options,
+                        struct rt_files *files, rt_scene **scene,
+                        rt_error *error);
 
 /* Non-zero when `options` (may be NULL) carries a cancellation flag that
  * is raised.  Cheap (one atomic load), but readers poll it every

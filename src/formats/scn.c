@@ -3,12 +3,16 @@
  * memory into an rt_scene_desc and handed to the scene builder.
  *
  * The reader goes record by record over the lines that hold something
- * (comments and blank lines are skipped), knows the line and column of
- * every token, and stops at the first broken rule with a message
- * "name:line:column: expected ..., found ...".  Before allocating for a
- * count it checks that the file has that many lines left, so a hostile count
- * cannot make it allocate more than the input's size justifies.  The load's
- * cancellation flag is polled every RT_LOAD_POLL records.
+ * (comments and blank lines are skipped; lexer.h), knows the line and
+ * column of every token, and stops at the first broken rule of the format
+ * with a message "name:line:column: expected ..., found ...".  The values
+ * themselves (coordinates, k, t, n, the lens, the camera, the number of
+ * lights) are the builder's to judge: it reports a refusal as data, and
+ * locate() finds the token of the record and value it names.  Before
+ * allocating for a count the reader checks that the file has that many
+ * lines left, so a hostile count cannot make it allocate more than the
+ * input's size justifies.  The load's cancellation flag is polled every
+ * RT_LOAD_POLL records.
  */
 #include <limits.h>
 #include <math.h>
@@ -17,11 +21,9 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "formats/formats.h"
+#include "base/vecmath.h"
 #include "formats/lexer.h"
 #include "formats/reader.h"
-#include "scene/scene_internal.h"
-#include "base/vecmath.h"
 
 #define MAX_VALUES 10       /* the longest record: the screen with a lens */
 
@@ -31,6 +33,8 @@
 
 typedef struct parser {
     rt_lexer lex;
+    rt_lexer start;         /* the lexer as opened, to find a record again */
+    int vertex_count, facet_count;  /* as read, to number the records */
     const char *name;
     const rt_load_options *options;
     long records;           /* records read, for the cancellation poll */
@@ -158,28 +162,17 @@ static rt_status integer(parser *p, int i, long min, long max,
     return RT_OK;
 }
 
-/* A point; `bounded`: a vertex or a camera point, whose coordinates must
- * stay within RT_MAX_COORDINATE (a light's need not). */
-static rt_status point_within(parser *p, int first, int bounded,
-                              rt_vec3 *out)
+/* A point: values first..first+2 (the builder judges their range). */
+static rt_status point(parser *p, int first, rt_vec3 *out)
 {
     double c[3];
     for (int i = 0; i < 3; i++) {
         rt_status status = number(p, first + i, &c[i]);
         if (status != RT_OK)
             return status;
-        if (bounded && fabs(c[i]) > RT_MAX_COORDINATE)
-            return fail_at(p, RT_ERR_RANGE, "a coordinate of magnitude at most 1e152 (the "
-                           "renderer's arithmetic overflows beyond)",
-                           &p->values[first + i]);
     }
     *out = v3(c[0], c[1], c[2]);
     return RT_OK;
-}
-
-static rt_status point(parser *p, int first, rt_vec3 *out)
-{
-    return point_within(p, first, 1, out);
 }
 
 static rt_status color(parser *p, int first, rt_rgb8 *out)
@@ -217,8 +210,12 @@ static rt_status count(parser *p, const char *what, int *out)
     return RT_OK;
 }
 
-/* The optional `a, f` of the screen record (values 8 and 9): both or
- * neither, a >= 0, f > 0. */
+/*
+ * The optional `a, f` of the screen record (values 8 and 9): both or
+ * neither.  The builder judges the lens, but for f = 0: a description's 0
+ * stands for |AO|, which a file says by leaving `a, f` out, so the format
+ * refuses a written 0 (with the builder's words).
+ */
 static rt_status lens_values(parser *p, double *aperture, double *focal)
 {
     if (p->value_count == 8)
@@ -231,32 +228,88 @@ static rt_status lens_values(parser *p, double *aperture, double *focal)
                              "aperture `a`, found the end of the line");
     }
     rt_status status = number(p, 8, aperture);
-    if (status == RT_OK && !(*aperture >= 0.0))
-        status = fail_at(p, RT_ERR_RANGE, "an aperture a >= 0", &p->values[8]);
     if (status == RT_OK)
         status = number(p, 9, focal);
-    if (status == RT_OK && !(*focal > 0.0))
-        status = fail_at(p, RT_ERR_RANGE, "a focal distance f > 0", &p->values[9]);
+    if (status == RT_OK && *focal == 0.0)
+        status = fail_at(p, RT_ERR_RANGE, RT_RULE_FOCAL, &p->values[9]);
     return status;
 }
 
-/* The optional `t [, n]` of a facet record (values 7 and 8). */
+/* The optional `t [, n]` of a facet record (values 7 and 8), judged by
+ * the builder but for n = 0: a description's 0 stands for 1, which a file
+ * says by leaving n out. */
 static rt_status transparency(parser *p, rt_facet_desc *f)
 {
     rt_status status = RT_OK;
-    if (p->value_count > 7) {
+    if (p->value_count > 7)
         status = number(p, 7, &f->t);
-        if (status == RT_OK && !(f->t >= 0.0 && f->t <= 1.0 - f->k))
-            status = fail_at(p, RT_ERR_RANGE, f->t >= 0.0 ? "a transparency t with k + t <= 1"
-                                         : "a transparency t >= 0",
-                             &p->values[7]);
-    }
     if (status == RT_OK && p->value_count > 8) {
         status = number(p, 8, &f->n);
-        if (status == RT_OK && !(f->n > 0.0))
-            status = fail_at(p, RT_ERR_RANGE, "a refractive index n > 0", &p->values[8]);
+        if (status == RT_OK && f->n == 0.0)
+            status = fail_at(p, RT_ERR_RANGE, RT_RULE_N, &p->values[8]);
     }
     return status;
+}
+
+/* The token of value `value` (from 0, commas not counted) of the record
+ * numbered `record` (from 0: the observer), read again from the start. */
+static int record_value(const parser *p, long record, int value,
+                        rt_token *token)
+{
+    rt_lexer lx = p->start;
+    rt_token t;
+    for (long r = 0; r <= record; r++)
+        if (!rt__lex_statement(&lx, &t))
+            return 0;
+    for (int v = 0;;) {
+        if (!is_comma(&t) && v++ == value) {
+            *token = t;
+            return 1;
+        }
+        if (!rt__lex_next(&lx, &t))
+            return 0;
+    }
+}
+
+/*
+ * The token a refusal of the builder names (rt_locate_func).  The records
+ * are numbered from 0: the observer, the screen, the vertex count, the
+ * vertices, the facet count, the facets, the background, the light, the
+ * further lights.
+ */
+static int locate(void *user, const rt_refusal *r, rt_token *token)
+{
+    const parser *p = user;
+    long vertices = 3, facets = 4 + (long)p->vertex_count;
+    long lights = 5 + (long)p->vertex_count + p->facet_count;
+    switch (r->item) {
+    case RT_ITEM_CAMERA:
+        if (r->field == RT_FIELD_OBSERVER)
+            return record_value(p, 0, r->part, token);
+        return record_value(p, 1,
+                            (r->field == RT_FIELD_SCREEN_RIGHT ? 3 : 0) +
+                                r->part,
+                            token);
+    case RT_ITEM_LENS:
+        return record_value(p, 1, r->field == RT_FIELD_APERTURE ? 8 : 9,
+                            token);
+    case RT_ITEM_VERTEX:
+        return record_value(p, vertices + r->index, r->part, token);
+    case RT_ITEM_FACET: {
+        int value = r->field == RT_FIELD_CORNER ? r->part
+                    : r->field == RT_FIELD_K    ? 3
+                    : r->field == RT_FIELD_T    ? 7
+                    : r->field == RT_FIELD_N    ? 8
+                                                : -1;
+        return value >= 0 && record_value(p, facets + r->index, value, token);
+    }
+    case RT_ITEM_LIGHT:
+        return record_value(p, lights + r->index,
+                            r->field == RT_FIELD_POSITION ? r->part : 0,
+                            token);
+    default:
+        return 0;
+    }
 }
 
 #define TRY(call)                                                            \
@@ -285,20 +338,8 @@ static rt_status parse(parser *p, const rt_load_options *options,
     TRY(integer(p, 6, 1, RT_MAX_IMAGE_SIDE, "an image width", &d.width));
     TRY(integer(p, 7, 1, RT_MAX_IMAGE_SIDE, "an image height", &d.height));
     TRY(lens_values(p, &d.aperture, &d.focal_distance));
-    rt_camera camera;
-    const char *reason = rt__camera_make(d.observer, d.screen_center,
-                                         d.screen_right, d.width, d.height,
-                                         &camera);
-    if (reason != NULL) {
-        int column = strstr(reason, "observer") ? p->values[0].column
-                                                : p->values[3].column;
-        status = rt__error_set(p->error, RT_ERR_CAMERA, p->name,
-                               p->record_line, column,
-                               "expected a camera that sees something, "
-                               "found that %s", reason);
-        goto done;
-    }
     TRY(count(p, "vertex", &d.vertex_count));
+    p->vertex_count = d.vertex_count;
     vertices = malloc((size_t)(d.vertex_count ? d.vertex_count : 1) *
                       sizeof *vertices);
     if (vertices == NULL)
@@ -310,6 +351,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
     d.vertices = vertices;
 
     TRY(count(p, "facet", &d.facet_count));
+    p->facet_count = d.facet_count;
     size_t m = (size_t)(d.facet_count ? d.facet_count : 1);
     facets = calloc(m, sizeof *facets);
     facet_lines = malloc(m * sizeof *facet_lines);
@@ -325,11 +367,6 @@ static rt_status parse(parser *p, const rt_load_options *options,
             f->vertex[j] = vertex - 1;
         }
         TRY(number(p, 3, &f->k));
-        if (!(f->k >= 0.0 && f->k <= 1.0)) {
-            status = fail_at(p, RT_ERR_RANGE, "a reflection coefficient k in [0, 1]",
-                             &p->values[3]);
-            goto done;
-        }
         TRY(color(p, 4, &f->color));
         TRY(transparency(p, f));
         facet_lines[i] = p->record_line;
@@ -339,7 +376,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
     TRY(expect_record(p, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
     TRY(expect_record(p, 6, "the light source `x, y, z, R, G, B`"));
-    TRY(point_within(p, 0, 0, &d.light_position));
+    TRY(point(p, 0, &d.light_position));
     TRY(color(p, 3, &d.light_color));
 
     /* Further lights, one a line, to the end of the file. */
@@ -352,15 +389,6 @@ static rt_status parse(parser *p, const rt_load_options *options,
         rt_light *light = &lights[d.more_light_count];
         static const char what[] = "a further light `x, y, z, R, G, B`";
         TRY(expect_values(p, 1, 6, what));
-        if (d.more_light_count == RT_MAX_LIGHTS - 1) {
-            status = rt__error_set(p->error, RT_ERR_LIMIT, p->name,
-                                   p->record_line, p->values[0].column,
-                                   "expected at most %d lights (each one "
-                                   "costs every hit a shadow ray), found "
-                                   "light %d", RT_MAX_LIGHTS,
-                                   RT_MAX_LIGHTS + 1);
-            goto done;
-        }
         /* Something that is not a number is named before any count. */
         for (int i = 0; i < p->value_count; i++) {
             double ignored;
@@ -375,7 +403,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
                                    what, p->value_count);
             goto done;
         }
-        TRY(point_within(p, 0, 0, &light->position));
+        TRY(point(p, 0, &light->position));
         TRY(color(p, 3, &light->color));
         d.more_light_count++;
     }
@@ -384,8 +412,8 @@ static rt_status parse(parser *p, const rt_load_options *options,
         status = rt__load_cancel(p->error, p->name);
         goto done;
     }
-    status = rt__reader_finish(&d, p->name, facet_lines, NULL, options, scene,
-                               p->error);
+    rt_reading reading = {p->name, facet_lines, NULL, options, locate, p};
+    status = rt__reader_finish(&d, &reading, scene, p->error);
     goto done;
 nomem:
     status = rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
@@ -418,6 +446,7 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                                     error);
     if (status != RT_OK)
         return status;
+    p.start = p.lex;
     /* (a record costs at least two bytes: fewer than INT_MAX of them) */
     long records = rt__lex_count(&p.lex, 1, options ? options->cancel : NULL);
     if (records < 0)

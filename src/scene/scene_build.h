@@ -1,8 +1,10 @@
 /*
  * scene_build.h - all a reader needs of the scene layer (internal): the
- * build of a scene from an rt_scene_desc, the warnings a load collects
- * (the reader's, then the builder's), the files a load read, and how often
- * a load polls its cancellation flag.  The readers (src/formats/) reach
+ * build of a scene from an rt_scene_desc, the one validator of its rules,
+ * which reports what it refuses as data (item, index, field: a reader maps
+ * that to the token it kept, as SQLite's sqlite3_error_offset does); the
+ * warnings a load collects (the reader's, then the builder's); the files a
+ * load read; and how often a load polls its cancellation flag.  The readers (src/formats/) reach
  * the scene through this header only, never through scene_internal.h and
  * the kernel behind it.
  */
@@ -89,6 +91,71 @@ void rt__notes_append(rt_notes *notes, const rt_notes *from);
 
 void rt__notes_free(rt_notes *notes);
 
+/* ------------------------------------------------------------- refusals */
+
+/* The rules the builder checks, as "expected %s" words them: readers that
+ * check a rule of their own on the same value (a format's 0, a value a
+ * reader computes with before the build) use the same words. */
+#define RT_RULE_COORDINATE                                                   \
+    "a coordinate of magnitude at most 1e152 (the renderer's arithmetic "   \
+    "overflows beyond)"
+#define RT_RULE_K "a reflection coefficient k in [0, 1]"
+#define RT_RULE_T "a transparency t with k + t <= 1"
+#define RT_RULE_T_SIGN "a transparency t >= 0"
+#define RT_RULE_N "a refractive index n > 0"
+#define RT_RULE_D "a diffuse weight d >= 0"
+#define RT_RULE_APERTURE "an aperture a >= 0"
+#define RT_RULE_FOCAL "a focal distance f > 0"
+#define RT_RULE_CAMERA "a camera that sees something"
+#define RT_RULE_LIGHTS                                                       \
+    "at most 64 lights (each one costs every hit a shadow ray)"
+
+/* What part of a description a refusal names. */
+typedef enum rt_item {
+    RT_ITEM_NONE,           /* the description as a whole (its arrays) */
+    RT_ITEM_IMAGE,          /* width, height */
+    RT_ITEM_CAMERA,         /* observer, screen_center, screen_right */
+    RT_ITEM_LENS,           /* aperture, focal_distance */
+    RT_ITEM_VERTEX,         /* vertices[index] */
+    RT_ITEM_FACET,          /* facets[index] */
+    RT_ITEM_LIGHT           /* light `index`: 0 the first (light_position),
+                               i > 0 more_lights[i - 1] */
+} rt_item;
+
+/* Which field of the item. */
+typedef enum rt_field {
+    RT_FIELD_NONE,          /* the item itself (a light past the limit) */
+    RT_FIELD_WIDTH,
+    RT_FIELD_HEIGHT,
+    RT_FIELD_OBSERVER,
+    RT_FIELD_SCREEN_CENTER,
+    RT_FIELD_SCREEN_RIGHT,
+    RT_FIELD_APERTURE,
+    RT_FIELD_FOCAL_DISTANCE,
+    RT_FIELD_POSITION,      /* a vertex's or a light's */
+    RT_FIELD_CORNER,        /* a facet's vertex index (part: which) */
+    RT_FIELD_K,
+    RT_FIELD_T,
+    RT_FIELD_N,
+    RT_FIELD_D
+} rt_field;
+
+/* What the builder refused, as data (rt__scene_build); its words are also
+ * in the rt_error, without a position. */
+typedef struct rt_refusal {
+    rt_status status;       /* RT_OK: nothing refused (or not the
+                               description: memory, cancellation) */
+    rt_item item;
+    int index;              /* the vertex, facet or light; 0 otherwise */
+    rt_field field;
+    int part;               /* the coordinate (0 x, 1 y, 2 z) or the corner
+                               (0..2); 0 otherwise */
+    const char *expected;   /* the rule broken, an RT_RULE_ phrase */
+    char found[96];         /* what stands instead when no token of a file
+                               says it ("that the observer O is the screen
+                               centre A", "light 65"); "": the token */
+} rt_refusal;
+
 /* ---------------------------------------------------------------- build */
 
 /*
@@ -97,12 +164,22 @@ void rt__notes_free(rt_notes *notes);
  * NULL) and `facet_lines` (may be NULL) only serve warnings; `notes` (may
  * be NULL) are the reader's own warnings, listed before the builder's;
  * `cancel` (may be NULL) is polled (RT_ERR_CANCELLED).  On failure returns
- * a status with *error filled and *scene NULL.
+ * a status with *error filled ("name: " before its words when `name` is
+ * given) and *scene NULL; when the description broke a rule, *refusal
+ * (may be NULL) says which, else its status is RT_OK.  The rules are
+ * checked in the order a file states them (the camera's points, the lens,
+ * the camera, the vertices, the facets, the lights), so that the first
+ * refused is the first a reader met.
  */
 rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
                           const int *facet_lines, const rt_notes *notes,
                           const rt_cancel *cancel, rt_scene **scene,
-                          rt_error *error);
+                          rt_error *error, rt_refusal *refusal);
+
+/* The checks of rt__scene_build alone: RT_OK, or the refusal as
+ * rt__scene_build reports it (nothing is built). */
+rt_status rt__scene_check(const rt_scene_desc *desc, const char *name,
+                          rt_error *error, rt_refusal *refusal);
 
 /* Gives `scene` the files its load read: `sources` (an array of `count`,
  * from malloc, each name from malloc), which the scene frees; a list it

@@ -43,11 +43,14 @@ struct rt_scene {
 
 /*
  * Computes the camera of docs/rendering-model.md (aperture 0, focal distance
- * |AO|: the pinhole camera).  Returns NULL on success, or a
- * phrase saying what is degenerate ("the observer O is the screen centre A").
+ * |AO|: the pinhole camera).  Returns NULL on success, or a phrase saying
+ * what is degenerate ("the observer O is the screen centre A"), with
+ * *field (may be NULL) the point to blame: the screen centre A when O is
+ * A, else the screen point B.
  */
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
-                            int width, int height, rt_camera *camera);
+                            int width, int height, rt_camera *camera,
+                            rt_field *field);
 
 /* The bytes of a scene's own records (itself, its name, vertices, facet
  * records, warnings and lights; not its kernels): what a load leaves in
