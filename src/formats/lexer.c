@@ -222,7 +222,8 @@ static int line_next(rt_lexer *lx, rt_token *t)
             const char *c = lx->at;
             while (c < lx->eol && is_blank((unsigned char)*c))
                 c++;
-            if ((c == lx->eol || *c == '#') && t->text[t->length - 1] == '\\') {
+            if ((c == lx->eol || *c == '#') &&
+                t->text[t->length - 1] == '\\') {
                 lx->continues = 1;  /* the last token of a continued line */
                 if (--t->length == 0)
                     continue;

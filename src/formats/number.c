@@ -116,7 +116,8 @@ rt_status rt_scene_read_number(const char *text, size_t length,
                                  rt__number_syntax(text, length)
                              ? " (beyond a double's range)"
                              : "";
-    return rt__error_set(error, status, NULL, 0, 0, "expected %s, found `%s`%s",
+    return rt__error_set(error, status, NULL, 0, 0,
+                         "expected %s, found `%s`%s",
                          rt__number_expected(status),
                          rt__show_token(text, length, shown), beyond);
 }

@@ -96,10 +96,10 @@ static rt_status vertex(reader *r)
         rt_status status = number_at(r, i, &c[i - 1]);
         if (status != RT_OK)
             return status;
+        /* the triangulator computes with the vertices before the build */
         if (i <= 3 && fabs(c[i - 1]) > RT_MAX_COORDINATE)
-            return refuse(r, RT_ERR_RANGE, &x->tokens[i], 0,
-                          "a coordinate of magnitude at most 1e152 (the "
-                          "renderer's arithmetic overflows beyond)");
+            return refuse(r, RT_ERR_RANGE, &x->tokens[i], 0, "%s",
+                          RT_RULE_COORDINATE);
     }
     if (x->count >= 7)
         rt__obj_warn_once(r, r->name, &x->tokens[0],

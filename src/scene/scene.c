@@ -94,7 +94,8 @@ static rt_status check_finite(const check *c, const rt_scene_desc *d)
                           "the camera and the light");
     }
     for (int i = 0; i <= d->more_light_count; i++) {
-        rt_vec3 p = i == 0 ? d->light_position : d->more_lights[i - 1].position;
+        rt_vec3 p = i == 0 ? d->light_position
+                           : d->more_lights[i - 1].position;
         int part = bad_coordinate(p, 1);
         if (part >= 0)
             return refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, i,

@@ -4,9 +4,9 @@
  * which reports what it refuses as data (item, index, field: a reader maps
  * that to the token it kept, as SQLite's sqlite3_error_offset does); the
  * warnings a load collects (the reader's, then the builder's); the files a
- * load read; and how often a load polls its cancellation flag.  The readers (src/formats/) reach
- * the scene through this header only, never through scene_internal.h and
- * the kernel behind it.
+ * load read; and how often a load polls its cancellation flag.  The
+ * readers (src/formats/) reach the scene through this header only, never
+ * through scene_internal.h and the kernel behind it.
  */
 #ifndef RAYTRACE_SCENE_BUILD_H
 #define RAYTRACE_SCENE_BUILD_H
