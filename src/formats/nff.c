@@ -429,16 +429,6 @@ rt_status rt__nff_parse(const char *text, size_t length, const char *name,
     if (text == NULL && length > 0)
         return rt__error_set(error, RT_ERR_ARGUMENT, shown, 0, 0,
                              "expected scene text");
-    rt_load_options defaults;
-    if (options == NULL) {
-        rt_load_options_init(&defaults);
-        options = &defaults;
-    }
-    if (options->tessellation != 0 &&
-        !(options->tessellation > 0 && options->tessellation < 1))
-        return rt__error_set(error, RT_ERR_ARGUMENT, shown, 0, 0,
-                             "expected a tessellation tolerance in (0, 1), "
-                             "found %g", options->tessellation);
     parser p;
     memset(&p, 0, sizeof p);
     p.name = shown;

@@ -46,8 +46,9 @@ typedef struct rt_reading {
 rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
                             rt_scene **scene, rt_error *error);
 
-/* The readers: the contract of rt_scene_parse_with for one format; each
- * ends with rt__reader_finish. */
+/* The readers: the contract of rt_scene_parse_with for one format, with
+ * `options` as the loader took and checked them (loader.c; NULL only for
+ * .scn, from rt_scene_parse); each ends with rt__reader_finish. */
 rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error);
