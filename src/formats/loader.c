@@ -122,10 +122,8 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
     if (path == NULL || format == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a path and a format to fill");
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    if (dot == NULL || dot == base || strlen(dot) != 4)
+    const char *dot = rt__path_extension(path);
+    if (dot == NULL || strlen(dot) != 4)
         return refuse_scene_extension(path, error);
     char extension[4];
     for (int i = 0; i < 3; i++)
@@ -199,15 +197,11 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
                               const rt_load_options *options,
                               rt_scene **scene, rt_error *error)
 {
-    if (scene == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected a pointer to fill with the scene");
-    *scene = NULL;
-    if (text == NULL && length > 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected scene text");
+    rt_status status = rt__parse_arguments(text, length, name, scene, error);
+    if (status != RT_OK)
+        return status;
     rt_load_options taken;
-    rt_status status = take_options(options, &taken, name, error);
+    status = take_options(options, &taken, name, error);
     if (status != RT_OK)
         return status;
     return parse_taken(text, length, name, &taken, NULL, NULL, scene, error);

@@ -422,13 +422,7 @@ rt_status rt__nff_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error)
 {
-    if (scene == NULL)
-        return RT_ERR_ARGUMENT;
-    *scene = NULL;
     const char *shown = name ? name : "<memory>";
-    if (text == NULL && length > 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, shown, 0, 0,
-                             "expected scene text");
     parser p;
     memset(&p, 0, sizeof p);
     p.name = shown;

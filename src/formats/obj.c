@@ -534,9 +534,6 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_files *files,
                         rt_scene **scene, rt_error *error)
 {
-    if (scene == NULL)
-        return RT_ERR_ARGUMENT;
-    *scene = NULL;
     /* The name as given: messages escape it (rt__error_set, notes). */
     const char *raw = name ? name : "<memory>";
     char *shown_name = malloc(strlen(raw) + 1);
@@ -545,14 +542,10 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
     if (shown_name == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory");
-    rt_status status = RT_OK;
     reader r;
     memset(&r, 0, sizeof r);
-    if (text == NULL && length > 0)
-        status = rt__error_set(error, RT_ERR_ARGUMENT, shown_name, 0, 0,
-                               "expected scene text");
-    if (status == RT_OK)
-        status = rt__obj_lexer_open(&r.lex, text, length, shown_name, error);
+    rt_status status = rt__obj_lexer_open(&r.lex, text, length, shown_name,
+                                          error);
     if (status != RT_OK) {
         free(shown_name);
         return status;

@@ -13,6 +13,20 @@
 #include "formats/framing.h"
 #include "raytrace/render.h"
 
+rt_status rt__parse_arguments(const char *text, size_t length,
+                              const char *name, rt_scene **scene,
+                              rt_error *error)
+{
+    if (scene == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected a pointer to fill with the scene");
+    *scene = NULL;
+    if (text == NULL && length > 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected scene text");
+    return RT_OK;
+}
+
 int rt__load_cancelled(const rt_load_options *options)
 {
     return options != NULL && options->cancel != NULL &&

@@ -430,13 +430,6 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error)
 {
-    if (scene == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected a pointer to fill with the scene");
-    *scene = NULL;
-    if (text == NULL && length > 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected scene text");
     parser p;
     memset(&p, 0, sizeof p);
     p.name = name ? name : "<memory>";
@@ -462,5 +455,8 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
 rt_status rt_scene_parse(const char *text, size_t length, const char *name,
                          rt_scene **scene, rt_error *error)
 {
+    rt_status status = rt__parse_arguments(text, length, name, scene, error);
+    if (status != RT_OK)
+        return status;
     return rt__scn_parse(text, length, name, NULL, scene, error);
 }
