@@ -79,13 +79,13 @@ START_TEST(a_raised_flag_stops_the_builder_and_keeps_no_scene)
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     ck_assert_int_eq(rt__scene_build(&g.desc, "grid", NULL, NULL, cancel,
-                                     &scene, &error),
+                                     &scene, &error, NULL),
                      RT_ERR_CANCELLED);
     ck_assert_ptr_null(scene);
     ck_assert_ptr_nonnull(strstr(error.message, "cancelled"));
     rt_cancel_reset(cancel);
     ck_assert_int_eq(rt__scene_build(&g.desc, "grid", NULL, NULL, cancel,
-                                     &scene, &error),
+                                     &scene, &error, NULL),
                      RT_OK);
     rt_scene_destroy(scene);
     rt_cancel_destroy(cancel);

@@ -522,7 +522,7 @@ START_TEST(malformed_face_vertices_and_numbers_are_refused_with_the_token)
     refused("v 0 0 0\nv 1 0x1 0\n", RT_ERR_SYNTAX, 2, 5,
             "expected a number, found `0x1`");
     refused("v 0 0 0\nv 1 1,5 0\n", RT_ERR_SYNTAX, 2, 5, "found `1,5`");
-    refused("v 1 nan 0\n", RT_ERR_SYNTAX, 1, 5, "found `nan`");
+    refused("v 1 nan 0\n", RT_ERR_RANGE, 1, 5, "a finite number, found `nan`");
     refused("v 1 1e999 0\n", RT_ERR_RANGE, 1, 5, "a finite number");
     refused("v 1 2\n", RT_ERR_SYNTAX, 1, 6,
             "expected 3 coordinates for the vertex");

@@ -1,5 +1,6 @@
 /*
- * error.h - filling an rt_error, and showing names in messages (internal).
+ * error.h - filling an rt_error, and showing names and tokens in messages
+ * (internal).
  */
 #ifndef RAYTRACE_ERROR_H
 #define RAYTRACE_ERROR_H
@@ -46,5 +47,22 @@ rt_status rt__error_set(rt_error *error, rt_status status, const char *name,
  * Returns the length written.  Thread-safe.
  */
 size_t rt__escape_name(const char *name, char *out, size_t size);
+
+/* The most bytes of a token that a message quotes: a longer token is cut
+ * (before a character that would straddle the limit) and "..." follows. */
+#define RT_TOKEN_SHOWN_BYTES 40
+
+/* Room for a token as shown: each byte may become four characters, then
+ * "..." and the NUL. */
+#define RT_TOKEN_SHOWN_SIZE (4 * RT_TOKEN_SHOWN_BYTES + 4)
+
+/*
+ * Writes text[0..length) (any bytes, no NUL needed) into `out` as every
+ * message quotes a token of a file: its first RT_TOKEN_SHOWN_BYTES bytes
+ * escaped by rt__escape_name's rule, then "..." when the token is longer.
+ * Returns out.  Thread-safe.
+ */
+const char *rt__show_token(const char *text, size_t length,
+                           char out[RT_TOKEN_SHOWN_SIZE]);
 
 #endif /* RAYTRACE_ERROR_H */

@@ -1,5 +1,5 @@
 /*
- * file.c - reading a whole file into memory.
+ * file.c - reading a whole file into memory, and the extension of a path.
  */
 #include "file.h"
 
@@ -105,4 +105,12 @@ rt_status rt__read_text_file_identified(const char *path, char **data,
                                         rt_error *error)
 {
     return read_all(path, 1, data, length, identity, error);
+}
+
+const char *rt__path_extension(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    return dot != NULL && dot != base ? dot : NULL;
 }

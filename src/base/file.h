@@ -1,5 +1,6 @@
 /*
- * file.h - reading a whole file into memory (internal).
+ * file.h - reading a whole file into memory, and the extension of a path
+ * (internal).
  */
 #ifndef RAYTRACE_FILE_H
 #define RAYTRACE_FILE_H
@@ -24,8 +25,8 @@ rt_status rt__read_file(const char *path, char **data, size_t *length,
 
 /* The same for a text file (a scene): reading stops early at a chunk
  * holding a NUL byte or past RT_MAX_SCENE_BYTES, so that /dev/zero or a
- * huge binary file costs a chunk, not the memory; rt__text_check then
- * names the reason.  FIFOs and terminals are read to their end (a user
+ * huge binary file costs a chunk, not the memory; the lexer's checks
+ * (formats/lexer.h) then name the reason.  FIFOs and terminals are read to their end (a user
  * may name `<(cat x.scn)`).  *identity (may be NULL) receives what the
  * descriptor read was. */
 rt_status rt__read_text_file(const char *path, char **data, size_t *length,
@@ -34,5 +35,10 @@ rt_status rt__read_text_file_identified(const char *path, char **data,
                                         size_t *length,
                                         rt_file_identity *identity,
                                         rt_error *error);
+
+/* The extension of the last component of `path`, its dot included
+ * (".scn"), or NULL when it has none (no dot, or only a leading one, as in
+ * ".profile"). */
+const char *rt__path_extension(const char *path);
 
 #endif /* RAYTRACE_FILE_H */

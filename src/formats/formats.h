@@ -11,8 +11,6 @@
  * or a value that names no format) and returns RT_ERR_FORMAT. */
 rt_status rt__image_format_refusal(rt_image_format format, rt_error *error);
 
-struct rt_notes;
-
 /* Bytes to save: `produce` writes `what` to the sink and returns a status
  * (filling *error on failure). */
 typedef struct rt_producer {
@@ -27,33 +25,6 @@ typedef struct rt_producer {
  * followed, signals handled).  Errors name `path`. */
 rt_status rt__save(const char *path, const rt_producer *producer,
                    rt_error *error);
-
-/*
- * What every scene reader ends with: applies the view and lights of
- * `options` (may be NULL) to `desc`, then builds the scene with the
- * reader's warnings.  `facet_lines` (may be NULL) gives each facet's line
- * for the builder's warnings.
- */
-rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
-                            const int *facet_lines,
-                            const struct rt_notes *notes,
-                            const rt_load_options *options, rt_scene **scene,
-                            rt_error *error);
-
-/* The readers (scn.c, nff.c, obj.c): the contract of rt_scene_parse_with
- * for one format; each ends with rt__reader_finish. */
-rt_status rt__scn_parse(const char *text, size_t length, const char *name,
-                        const rt_load_options *options, rt_scene **scene,
-                        rt_error *error);
-rt_status rt__nff_parse(const char *text, size_t length, const char *name,
-                        const rt_load_options *options, rt_scene **scene,
-                        rt_error *error);
-struct rt_files;
-/* OBJ also reads the files it names through `files` (resolve.h). */
-rt_status rt__obj_parse(const char *text, size_t length, const char *name,
-                        const rt_load_options *options,
-                        struct rt_files *files, rt_scene **scene,
-                        rt_error *error);
 
 /* Encodes `image` as PPM to the sink: RT_OK or the bare status (the
  * callers write the message). */

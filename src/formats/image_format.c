@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/file.h"
 #include "formats/formats.h"
 
 int rt_image_format_supported(rt_image_format format)
@@ -51,12 +52,10 @@ rt_status rt_image_format_from_path(const char *path, rt_image_format *format,
     if (path == NULL || format == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a path and a format to fill");
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    if (dot != NULL && dot != base && extension_is(dot, ".png"))
+    const char *dot = rt__path_extension(path);
+    if (dot != NULL && extension_is(dot, ".png"))
         *format = RT_IMAGE_PNG;
-    else if (dot != NULL && dot != base &&
+    else if (dot != NULL &&
              (extension_is(dot, ".ppm") || extension_is(dot, ".pnm")))
         *format = RT_IMAGE_P6;
     else

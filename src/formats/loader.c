@@ -4,7 +4,8 @@
  * reader shares, the list of files the load reads (resolve.h: the scene
  * file, then those it names, through the options' resolver), and the
  * dispatch to the format's own module (scn.c, nff.c, obj.c).  Each reader
- * is a client of the scene builder.
+ * is a client of the scene builder, and ends with rt__reader_finish
+ * (reader.c).
  */
 #include <ctype.h>
 #include <math.h>
@@ -14,12 +15,10 @@
 
 #include "base/error.h"
 #include "base/file.h"
-#include "formats/formats.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
-#include "scene/scene_internal.h"
 #include "base/vecmath.h"
 
 void rt_load_options_init(rt_load_options *options)
@@ -123,10 +122,8 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
     if (path == NULL || format == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a path and a format to fill");
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    if (dot == NULL || dot == base || strlen(dot) != 4)
+    const char *dot = rt__path_extension(path);
+    if (dot == NULL || strlen(dot) != 4)
         return refuse_scene_extension(path, error);
     char extension[4];
     for (int i = 0; i < 3; i++)
@@ -144,89 +141,6 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
             return RT_OK;
         }
     return refuse_scene_extension(path, error);
-}
-
-#define PI 3.14159265358979323846
-
-/*
- * The view of `options` applied to the camera of `d`: what is not given
- * keeps the file's value (observer O, look-at A, horizontal field of view
- * 2 atan(|AB| / |AO|); up: the file's AC, or, when the direction of view
- * changes, the coordinate axis nearest to it).  Returns NULL, or what is
- * wrong.
- */
-static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
-{
-    rt_vec3 from = d->observer, at = d->screen_center;
-    rt_vec3 ao = v3_sub(d->observer, d->screen_center);
-    rt_vec3 ab = v3_sub(d->screen_right, d->screen_center);
-    rt_vec3 up = v3_cross(ao, ab);
-    double fov = 2 * atan(v3_length(ab) / v3_length(ao)) * 180 / PI;
-    if (o->look_from_given)
-        from = o->look_from;
-    if (o->look_at_given)
-        at = o->look_at;
-    if (o->up_given) {
-        up = o->up;
-    } else if (o->look_from_given || o->look_at_given) {
-        /* A new direction of view: the file's up leans with the file's
-         * view, so take the axis nearest to it (the scene's vertical,
-         * for a camera that looked down at it). */
-        rt_vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        rt_vec3 unit = v3_normalize(up), best = axes[2];
-        double best_dot = 0;
-        for (int i = 0; i < 3; i++) {
-            double along = v3_dot(unit, axes[i]);
-            if (fabs(along) > fabs(best_dot)) {
-                best_dot = along;
-                best = axes[i];
-            }
-        }
-        up = best_dot < 0 ? v3_scale(best, -1) : best;
-    }
-    if (o->fov_given)
-        fov = o->fov;
-    if (!(fov > 0 && fov < 180))
-        return "the field of view is not in (0, 180) degrees";
-    rt_vec3 view = v3_sub(at, from);
-    double distance = v3_length(view);
-    if (!(distance > 0) || !isfinite(distance))
-        return "the look-from point is the look-at point";
-    rt_vec3 right = v3_cross(view, up);
-    if (!(v3_length(right) > 0))
-        return "the up direction is along the view";
-    d->observer = from;
-    d->screen_center = at;
-    d->screen_right = v3_add(at, v3_scale(v3_normalize(right),
-                                          distance * tan(fov * PI / 360)));
-    return NULL;
-}
-
-rt_status rt__reader_finish(rt_scene_desc *desc, const char *name,
-                            const int *facet_lines, const rt_notes *notes,
-                            const rt_load_options *options, rt_scene **scene,
-                            rt_error *error)
-{
-    if (options != NULL && (options->look_from_given ||
-                            options->look_at_given || options->up_given ||
-                            options->fov_given)) {
-        const char *wrong = apply_view(desc, options);
-        if (wrong != NULL)
-            return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
-                                 "expected a view, found that %s", wrong);
-    }
-    if (options != NULL && options->light_count > 0) {
-        if (options->lights == NULL)
-            return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                                 "expected an array of lights");
-        desc->light_position = options->lights[0].position;
-        desc->light_color = options->lights[0].color;
-        desc->more_lights = options->lights + 1;
-        desc->more_light_count = options->light_count - 1;
-    }
-    return rt__scene_build(desc, name, facet_lines, notes,
-                           options != NULL ? options->cancel : NULL, scene,
-                           error);
 }
 
 /* The load of `text` with the options taken: `scene_file` (may be NULL)
@@ -283,15 +197,11 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
                               const rt_load_options *options,
                               rt_scene **scene, rt_error *error)
 {
-    if (scene == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected a pointer to fill with the scene");
-    *scene = NULL;
-    if (text == NULL && length > 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected scene text");
+    rt_status status = rt__parse_arguments(text, length, name, scene, error);
+    if (status != RT_OK)
+        return status;
     rt_load_options taken;
-    rt_status status = take_options(options, &taken, name, error);
+    status = take_options(options, &taken, name, error);
     if (status != RT_OK)
         return status;
     return parse_taken(text, length, name, &taken, NULL, NULL, scene, error);

@@ -77,11 +77,11 @@ static void finish_block(reader *r, const char *library, mtl_state *m)
     f->t = m->has_d ? 1.0 - clamp01(m->dissolve)
                     : m->has_tr ? clamp01(m->tr) : 0.0;
     if (f->k + f->t > 1.0) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         rt__obj_count(&r->lowered, library, m->line, 1,
                       "material `%s`: mirror reflection %g and transparency "
                       "%g add up to more than 1; the reflection is lowered "
-                      "to %g", rt__obj_shown(&m->name, buffer), f->k, f->t,
+                      "to %g", rt__token_shown(&m->name, buffer), f->k, f->t,
                       1.0 - f->t);
         f->k = 1.0 - f->t;
     }
@@ -127,22 +127,22 @@ static int material_add(reader *r, const char *name, size_t length)
 static int mtl_color(reader *r, const lexer *x, const char *library,
                      double out[3])
 {
-    char buffer[MAX_TOKEN_SHOWN + 4];
+    char buffer[RT_TOKEN_SHOWN_SIZE];
     const token *k = &x->tokens[0];
     if (x->total != 2 && x->total != 4) {
         rt__obj_count(&r->bad_values, library, k->line, k->column,
                       "`%s` with %ld values ignored: only `r g b` or one "
-                      "grey value are read", rt__obj_shown(k, buffer),
+                      "grey value are read", rt__token_shown(k, buffer),
                       x->total - 1);
         return 0;
     }
     double v[3];
     for (int i = 1; i < x->count; i++)
-        if (rt__obj_decimal(r->c_locale, &x->tokens[i], &v[i - 1]) != 0) {
+        if (rt__obj_number(x, &x->tokens[i], &v[i - 1]) != RT_OK) {
             rt__obj_count(&r->bad_values, library, x->tokens[i].line,
                           x->tokens[i].column,
                           "expected a number, found `%s`; the statement is "
-                          "ignored", rt__obj_shown(&x->tokens[i], buffer));
+                          "ignored", rt__token_shown(&x->tokens[i], buffer));
             return 0;
         }
     for (int i = 0; i < 3; i++)
@@ -154,19 +154,19 @@ static int mtl_color(reader *r, const lexer *x, const char *library,
 static int mtl_value(reader *r, const lexer *x, const char *library,
                      double *out)
 {
-    char keyword[MAX_TOKEN_SHOWN + 4], found[MAX_TOKEN_SHOWN + 4];
+    char keyword[RT_TOKEN_SHOWN_SIZE], found[RT_TOKEN_SHOWN_SIZE];
     const token *k = &x->tokens[0], *t = &x->last;
     if (x->total < 2) {
         rt__obj_count(&r->bad_values, library, k->line, k->column,
                       "expected a number after `%s`; the statement is "
-                      "ignored", rt__obj_shown(k, keyword));
+                      "ignored", rt__token_shown(k, keyword));
         return 0;
     }
-    if (rt__obj_decimal(r->c_locale, t, out) != 0) {
+    if (rt__obj_number(x, t, out) != RT_OK) {
         rt__obj_count(&r->bad_values, library, t->line, t->column,
                       "expected a number after `%s`, found `%s`; the "
-                      "statement is ignored", rt__obj_shown(k, keyword),
-                      rt__obj_shown(t, found));
+                      "statement is ignored", rt__token_shown(k, keyword),
+                      rt__token_shown(t, found));
         return 0;
     }
     return 1;
@@ -179,7 +179,7 @@ static int mtl_ignored(const token *k)
         "Ka", "Ke", "Ns", "Tf", "sharpness", "bump", "disp", "decal",
         "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor"};
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
-        if (rt__obj_token_is(k, words[i]))
+        if (rt__token_is(k, words[i]))
             return 1;
     return k->length > 4 && memcmp(k->text, "map_", 4) == 0;
 }
@@ -190,34 +190,34 @@ static rt_status mtl_statement(reader *r, lexer *x, const char *library,
 {
     const token *k = &x->tokens[0];
     double v[3];
-    int colour = rt__obj_token_is(k, "Kd") || rt__obj_token_is(k, "Ks");
-    if (colour || rt__obj_token_is(k, "illum") || rt__obj_token_is(k, "d") ||
-        rt__obj_token_is(k, "Tr") || rt__obj_token_is(k, "Ni")) {
+    int colour = rt__token_is(k, "Kd") || rt__token_is(k, "Ks");
+    if (colour || rt__token_is(k, "illum") || rt__token_is(k, "d") ||
+        rt__token_is(k, "Tr") || rt__token_is(k, "Ni")) {
         if (rt__obj_rest(x, colour ? 4 : 0) != 0)
             return RT_ERR_NOMEM;
         k = &x->tokens[0];
     }
-    if (rt__obj_token_is(k, "Kd")) {
+    if (rt__token_is(k, "Kd")) {
         if (mtl_color(r, x, library, v))
             memcpy(m->kd, v, sizeof v);
-    } else if (rt__obj_token_is(k, "Ks")) {
+    } else if (rt__token_is(k, "Ks")) {
         if (mtl_color(r, x, library, v))
             memcpy(m->ks, v, sizeof v);
-    } else if (rt__obj_token_is(k, "illum")) {
+    } else if (rt__token_is(k, "illum")) {
         if (mtl_value(r, x, library, v) && v[0] == floor(v[0]) &&
             fabs(v[0]) < 100)
             m->illum = (int)v[0];
-    } else if (rt__obj_token_is(k, "d")) {
+    } else if (rt__token_is(k, "d")) {
         if (mtl_value(r, x, library, v)) {
             m->dissolve = v[0];
             m->has_d = 1;
         }
-    } else if (rt__obj_token_is(k, "Tr")) {
+    } else if (rt__token_is(k, "Tr")) {
         if (mtl_value(r, x, library, v)) {
             m->tr = v[0];
             m->has_tr = 1;
         }
-    } else if (rt__obj_token_is(k, "Ni")) {
+    } else if (rt__token_is(k, "Ni")) {
         if (mtl_value(r, x, library, v)) {
             if (v[0] > 0.0)
                 m->ni = v[0];
@@ -227,7 +227,7 @@ static rt_status mtl_statement(reader *r, lexer *x, const char *library,
                               "expected a refractive index Ni > 0, found %g; "
                               "1 is used", v[0]);
         }
-    } else if (rt__obj_token_is(k, "map_Kd")) {
+    } else if (rt__token_is(k, "map_Kd")) {
         rt__obj_warn_once(r, library, k,
                           "are ignored: textures are not drawn, the colour "
                           "is Kd");
@@ -238,13 +238,11 @@ static rt_status mtl_statement(reader *r, lexer *x, const char *library,
     return RT_OK;
 }
 
-/* Parses a material library's text; its problems are warnings.  What
- * comes before its first `newmtl` is counted, never quoted. */
-static rt_status mtl_parse(reader *r, const char *text, size_t length,
-                           const char *library)
+/* Parses a material library's statements (x, opened); its problems are
+ * warnings.  What comes before its first `newmtl` is counted, never
+ * quoted. */
+static rt_status mtl_parse(reader *r, lexer *x, const char *library)
 {
-    lexer x;
-    rt__obj_lexer_start(&x, text, length);
     mtl_state m;
     memset(&m, 0, sizeof m);
     m.material = -1;
@@ -252,25 +250,25 @@ static rt_status mtl_parse(reader *r, const char *text, size_t length,
     token first = {NULL, 0, 0, 0};
     rt_status status = RT_OK;
     int more;
-    while (status == RT_OK && (more = rt__obj_next_statement(&x)) > 0) {
+    while (status == RT_OK && (more = rt__obj_next_statement(x)) > 0) {
         statements++;
         if ((status = rt__obj_poll(r)) != RT_OK)
             break;
-        if (!rt__obj_token_is(&x.tokens[0], "newmtl")) {
+        if (!rt__token_is(&x->tokens[0], "newmtl")) {
             if (m.material < 0 && blocks == 0 && before++ == 0)
-                first = x.tokens[0];
+                first = x->tokens[0];
             if (m.material >= 0)
-                status = mtl_statement(r, &x, library, &m);
+                status = mtl_statement(r, x, library, &m);
             continue;
         }
         finish_block(r, library, &m);
         blocks++;
-        token keyword = x.tokens[0];
-        if (rt__obj_rest(&x, 1) != 0) {
+        token keyword = x->tokens[0];
+        if (rt__obj_rest(x, 1) != 0) {
             status = RT_ERR_NOMEM;
             break;
         }
-        if (x.count < 2) {
+        if (x->count < 2) {
             rt__obj_count(&r->no_name, library, keyword.line, keyword.column,
                           "expected a material name after `newmtl`; the "
                           "block is ignored");
@@ -278,11 +276,11 @@ static rt_status mtl_parse(reader *r, const char *text, size_t length,
         }
         const char *name;
         size_t name_length;
-        rt__obj_statement_name(&x, &name, &name_length);
+        rt__obj_statement_name(x, &name, &name_length);
         mtl_defaults(&m);
         m.line = keyword.line;
-        m.name = (token){name, name_length, x.tokens[1].line,
-                         x.tokens[1].column};
+        m.name = (token){name, name_length, x->tokens[1].line,
+                         x->tokens[1].column};
         if ((m.material = material_add(r, name, name_length)) < 0)
             status = RT_ERR_NOMEM;
     }
@@ -299,7 +297,6 @@ static rt_status mtl_parse(reader *r, const char *text, size_t length,
                          "%ld statements before the first `newmtl` are "
                          "ignored", before);
     }
-    free(x.tokens);
     return status;
 }
 
@@ -339,19 +336,21 @@ static rt_status open_library(reader *r, const char *reference,
     }
     *read = 1;
     if (found == RT_FOUND_SCENE) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         token t = {reference, strlen(reference), where->line, where->column};
         rt__obj_count(&r->self_library, r->name, where->line, where->column,
                       "the material library `%s` is this OBJ file itself: "
                       "its lines are not read as materials",
-                      rt__obj_shown(&t, buffer));
+                      rt__token_shown(&t, buffer));
     }
     if (found != RT_FOUND_NEW)
         return RT_OK;
-    status = rt__text_check(data, length, library, &why);
+    lexer x;
+    status = rt__obj_lexer_open(&x, data, length, library, &why);
     if (status == RT_OK) {
-        status = mtl_parse(r, data, length, library);
-    } else {
+        status = mtl_parse(r, &x, library);
+        rt__obj_lexer_close(&x);
+    } else if (status != RT_ERR_NOMEM) {
         char message[2 * RT_ERROR_MESSAGE_SIZE];
         char *shown = rt__shown_name(reference);
         snprintf(message, sizeof message, "`%s` is not read: %s",
@@ -492,9 +491,9 @@ static void list_names(const reader *r, const int *ids, int count,
     for (int i = 0; i < count && used < size; i++) {
         token t = {rt__names_text(&r->names, ids[i]),
                    rt__names_length(&r->names, ids[i]), 0, 0};
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         int n = snprintf(out + used, size - used, "%s`%s`",
-                         i == 0 ? "" : ", ", rt__obj_shown(&t, buffer));
+                         i == 0 ? "" : ", ", rt__token_shown(&t, buffer));
         used += n > 0 ? (size_t)n : 0;
     }
 }
@@ -523,7 +522,7 @@ rt_status rt__obj_finish_materials(reader *r)
     }
     if (unknown == 0)
         return RT_OK;
-    char names[4 * (MAX_TOKEN_SHOWN + 8)];
+    char names[MAX_NAMES_SHOWN * (RT_TOKEN_SHOWN_SIZE + 4)];
     list_names(r, shown, unknown < MAX_NAMES_SHOWN ? unknown : MAX_NAMES_SHOWN,
                names, sizeof names);
     if (unknown == 1)

@@ -1,9 +1,10 @@
 /*
  * number.c - the one grammar of a number in the scene format
  * (docs/scene-format.md, "Values"): an optional sign, digits with an
- * optional decimal point, an optional exponent, read in the C locale.  The
- * .scn reader checks its tokens with rt__number_syntax; the programs read
- * their command-line numbers with rt_scene_read_number, so that an option
+ * optional decimal point, an optional exponent, read in the C locale (made
+ * here, the one place).  Every reader reads its numbers with
+ * rt__number_read (through the lexer, lexer.h); the programs read their
+ * command-line numbers with rt_scene_read_number, so that an option
  * accepts and refuses exactly what a scene file would.
  */
 #include <ctype.h>
@@ -14,7 +15,11 @@
 #include <strings.h>
 
 #include "base/error.h"
-#include "formats/reader.h"
+#include "formats/lexer.h"
+
+/* The digits of a macro's value, as a string literal. */
+#define TEXT_OF(macro) LITERAL(macro)
+#define LITERAL(text) #text
 
 int rt__number_syntax(const char *text, size_t length)
 {
@@ -50,20 +55,45 @@ static int names_a_special_value(const char *text, size_t length)
                            strncasecmp(text, "inf", 3) == 0);
 }
 
-/* text[0..length) as a message shows it: at most 40 characters, a byte
- * that is not printable ASCII as '?', then "..." when cut. */
-static const char *show(const char *text, size_t length, char *out,
-                        size_t size)
+locale_t rt__c_locale_new(void)
 {
-    size_t n = length < 40 ? length : 40;
-    if (n > size - 4)
-        n = size - 4;
-    for (size_t i = 0; i < n; i++) {
-        unsigned char c = (unsigned char)text[i];
-        out[i] = c >= 0x20 && c < 0x7f ? (char)c : '?';
+    return newlocale(LC_NUMERIC_MASK, "C", (locale_t)0);
+}
+
+rt_status rt__number_read(locale_t c_locale, const char *text, size_t length,
+                          double *value)
+{
+    if (!rt__number_syntax(text, length))
+        return names_a_special_value(text, length) ? RT_ERR_RANGE
+                                                   : RT_ERR_SYNTAX;
+    if (length > RT__MAX_NUMBER_LENGTH)
+        return RT_ERR_LIMIT;
+    char copy[RT__MAX_NUMBER_LENGTH + 1];
+    memcpy(copy, text, length);
+    copy[length] = '\0';
+    /* the C locale's decimal point whatever the caller's locale */
+    locale_t previous = uselocale(c_locale);
+    double v = strtod(copy, NULL);
+    uselocale(previous);
+    /* an underflow is no error: a subnormal (or zero) is the nearest
+     * double */
+    if (!isfinite(v))
+        return RT_ERR_RANGE;
+    *value = v;
+    return RT_OK;
+}
+
+const char *rt__number_expected(rt_status status)
+{
+    switch (status) {
+    case RT_ERR_RANGE:
+        return "a finite number";
+    case RT_ERR_LIMIT:
+        return "a number of at most " TEXT_OF(RT__MAX_NUMBER_LENGTH)
+               " characters";
+    default:
+        return "a number";
     }
-    strcpy(out + n, length > n ? "..." : "");
-    return out;
 }
 
 rt_status rt_scene_read_number(const char *text, size_t length,
@@ -72,38 +102,22 @@ rt_status rt_scene_read_number(const char *text, size_t length,
     if (text == NULL || value == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a text and a place for its value");
-    char shown[48];
-    if (!rt__number_syntax(text, length)) {
-        int special = names_a_special_value(text, length);
-        return rt__error_set(error, special ? RT_ERR_RANGE : RT_ERR_SYNTAX,
-                             NULL, 0, 0, "expected %s, found `%s`",
-                             special ? "a finite number" : "a number",
-                             show(text, length, shown, sizeof shown));
-    }
-    if (length > RT__MAX_NUMBER_LENGTH)
-        return rt__error_set(error, RT_ERR_LIMIT, NULL, 0, 0,
-                             "expected a number of at most %d characters, "
-                             "found `%s`", RT__MAX_NUMBER_LENGTH,
-                             show(text, length, shown, sizeof shown));
-    char copy[RT__MAX_NUMBER_LENGTH + 1];
-    memcpy(copy, text, length);
-    copy[length] = '\0';
-    /* the C locale's decimal point whatever the caller's locale */
-    locale_t c_locale = newlocale(LC_NUMERIC_MASK, "C", (locale_t)0);
+    locale_t c_locale = rt__c_locale_new();
     if (c_locale == (locale_t)0)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
-                             "out of memory for the C locale");
-    locale_t previous = uselocale(c_locale);
-    double v = strtod(copy, NULL);
-    uselocale(previous);
+                             "cannot create the C locale");
+    rt_status status = rt__number_read(c_locale, text, length, value);
     freelocale(c_locale);
-    /* an underflow is no error: a subnormal (or zero) is the nearest
-     * double, as the readers take it */
-    if (!isfinite(v))
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected a finite number, found `%s` (beyond "
-                             "a double's range)",
-                             show(text, length, shown, sizeof shown));
-    *value = v;
-    return RT_OK;
+    if (status == RT_OK)
+        return RT_OK;
+    char shown[RT_TOKEN_SHOWN_SIZE];
+    /* a number of the grammar beyond a double's range */
+    const char *beyond = status == RT_ERR_RANGE &&
+                                 rt__number_syntax(text, length)
+                             ? " (beyond a double's range)"
+                             : "";
+    return rt__error_set(error, status, NULL, 0, 0,
+                         "expected %s, found `%s`%s",
+                         rt__number_expected(status),
+                         rt__show_token(text, length, shown), beyond);
 }

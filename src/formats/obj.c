@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "base/exact.h"
-#include "formats/formats.h"
+#include "formats/framing.h"
 #include "formats/obj.h"
 #include "base/vecmath.h"
 
@@ -42,18 +42,19 @@ static rt_status refuse(reader *r, rt_status status, const token *t,
                         int column_offset, const char *fmt, ...)
     RT_PRINTF_LIKE(5, 6);
 
-/* "name:line:column: expected ..., found `token`". */
+/* "name:line:column: expected ..., found `token`", the column
+ * `column_offset` bytes into the token. */
 static rt_status refuse(reader *r, rt_status status, const token *t,
                         int column_offset, const char *fmt, ...)
 {
-    char expected[200], buffer[MAX_TOKEN_SHOWN + 4];
+    char expected[RT_ERROR_MESSAGE_SIZE];
     va_list args;
     va_start(args, fmt);
     vsnprintf(expected, sizeof expected, fmt, args);
     va_end(args);
-    return rt__error_set(r->error, status, r->name, t->line,
-                         t->column + column_offset, "expected %s, found `%s`",
-                         expected, rt__obj_shown(t, buffer));
+    token at = *t;
+    at.column += column_offset;
+    return rt__token_refuse(r->error, status, r->name, &at, "%s", expected);
 }
 
 /* The position just after token t, for "found the end of ...". */
@@ -67,14 +68,10 @@ static void after(const token *t, int *line, int *column)
 static rt_status number_at(reader *r, int i, double *value)
 {
     const token *t = &r->lex.tokens[i];
-    switch (rt__obj_decimal(r->c_locale, t, value)) {
-    case 0:
-        return RT_OK;
-    case 2:
-        return refuse(r, RT_ERR_RANGE, t, 0, "a finite number");
-    default:
-        return refuse(r, RT_ERR_SYNTAX, t, 0, "a number");
-    }
+    rt_status status = rt__obj_number(&r->lex, t, value);
+    if (status != RT_OK)
+        return refuse(r, status, t, 0, "%s", rt__number_expected(status));
+    return RT_OK;
 }
 
 /* ---------------------------------------------------------------- geometry */
@@ -99,10 +96,10 @@ static rt_status vertex(reader *r)
         rt_status status = number_at(r, i, &c[i - 1]);
         if (status != RT_OK)
             return status;
+        /* the triangulator computes with the vertices before the build */
         if (i <= 3 && fabs(c[i - 1]) > RT_MAX_COORDINATE)
-            return refuse(r, RT_ERR_RANGE, &x->tokens[i], 0,
-                          "a coordinate of magnitude at most 1e152 (the "
-                          "renderer's arithmetic overflows beyond)");
+            return refuse(r, RT_ERR_RANGE, &x->tokens[i], 0, "%s",
+                          RT_RULE_COORDINATE);
     }
     if (x->count >= 7)
         rt__obj_warn_once(r, r->name, &x->tokens[0],
@@ -126,16 +123,16 @@ static rt_status attribute(reader *r, int *count, int least, int most)
     if (rt__obj_rest(x, most + 1) != 0)
         return rt__obj_out_of_memory(r);
     if (x->total - 1 < least || x->total - 1 > most) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         int line, column;
         after(&x->last, &line, &column);
         if (x->total - 1 > most)
             return refuse(r, RT_ERR_SYNTAX, &x->tokens[most + 1], 0,
                           "at most %d values for `%s`", most,
-                          rt__obj_shown(&x->tokens[0], buffer));
+                          rt__token_shown(&x->tokens[0], buffer));
         return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, line, column,
                              "expected %d values for `%s`, found %ld", least,
-                             rt__obj_shown(&x->tokens[0], buffer),
+                             rt__token_shown(&x->tokens[0], buffer),
                              x->total - 1);
     }
     for (int i = 1; i < x->count; i++) {
@@ -177,7 +174,7 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                       "a whole %s index", what);
     long long resolved = negative ? count - value : value - 1;
     if (value == 0 || resolved < 0 || resolved >= count) {
-        char buffer[MAX_TOKEN_SHOWN + 4];
+        char buffer[RT_TOKEN_SHOWN_SIZE];
         token part = {t->text + *at, i - *at, t->line, t->column + column};
         if (out == NULL && value != 0) {
             /* Texture coordinates and normals are not used: exporters
@@ -187,7 +184,7 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                 rt__obj_warn(r, r->name, part.line, part.column,
                              "`%s` refers to no %s read so far; %s indices "
                              "are not used, this one is ignored (said once)",
-                             rt__obj_shown(&part, buffer), what, what);
+                             rt__token_shown(&part, buffer), what, what);
             *at = i;
             return RT_OK;
         }
@@ -196,13 +193,13 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
                                  part.column,
                                  "expected a %s index, found `%s` before any "
                                  "%s is defined", what,
-                                 rt__obj_shown(&part, buffer), what);
+                                 rt__token_shown(&part, buffer), what);
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, part.line,
                              part.column,
                              "expected a %s index in 1..%d or -%d..-1 (%d "
                              "defined so far; 0 names none), found `%s`",
                              what, count, count, count,
-                             rt__obj_shown(&part, buffer));
+                             rt__token_shown(&part, buffer));
     }
     *at = i;
     if (out != NULL)
@@ -369,8 +366,6 @@ static rt_status face(reader *r)
 
 /* ---------------------------------------------------------------- the view */
 
-#define PI 3.14159265358979323846
-
 /* The i-th vertex the camera frames: those of the facets, or all vertices
  * when there is no facet. */
 static rt_vec3 framed(const reader *r, int i)
@@ -392,11 +387,6 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
     d->width = o->width > 0 ? o->width : o->height > 0 ? o->height
                                                        : DEFAULT_SIDE;
     d->height = o->height > 0 ? o->height : d->width;
-    if (d->width > RT_MAX_IMAGE_SIDE || d->height > RT_MAX_IMAGE_SIDE ||
-        o->width < 0 || o->height < 0)
-        return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
-                             "expected an image size in 1..%d, found %dx%d",
-                             RT_MAX_IMAGE_SIDE, o->width, o->height);
     int n = r->facet_count > 0 ? 3 * r->facet_count : r->vertex_count;
     rt_vec3 lo = n > 0 ? framed(r, 0) : v3(0, 0, 0), hi = lo;
     for (int i = 1; i < n; i++) {
@@ -416,8 +406,8 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
      * D the camera's distance from the point it looks at.  The first fit
      * looks at the box's centre; the second at the point that centres the
      * first picture, and its fit is again exact. */
-    double half = VIEW_FOV_DEGREES * PI / 360.0;
-    double tan_x = tan(half), tan_y = tan_x * d->height / d->width;
+    double tan_x = rt__frame_tan_half(VIEW_FOV_DEGREES);
+    double tan_y = tan_x * d->height / d->width;
     double distance = 0.0;
     for (int pass = 0; pass < 2; pass++) {
         double low_x = 0, high_x = 0, low_y = 0, high_y = 0;
@@ -444,7 +434,8 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
     }
     d->observer = v3_add(center, v3_scale(view, distance));
     d->screen_center = center;
-    d->screen_right = v3_add(center, v3_scale(right, distance * tan_x));
+    d->screen_right = rt__frame_right(center, v3_neg(view), v3(0, 1, 0),
+                                      distance * tan_x);
     if (!(v3_max_abs(d->observer) <= RT_MAX_COORDINATE) ||
         !(v3_max_abs(d->screen_right) <= RT_MAX_COORDINATE))
         return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
@@ -471,27 +462,27 @@ static rt_status statement(reader *r)
     rt_status status = rt__obj_poll(r);
     if (status != RT_OK)
         return status;
-    if (rt__obj_token_is(k, "v"))
+    if (rt__token_is(k, "v"))
         return vertex(r);
-    if (rt__obj_token_is(k, "f") || rt__obj_token_is(k, "fo"))
+    if (rt__token_is(k, "f") || rt__token_is(k, "fo"))
         return face(r);
-    if (rt__obj_token_is(k, "vt"))
+    if (rt__token_is(k, "vt"))
         return attribute(r, &r->texture_count, 1, 3);
-    if (rt__obj_token_is(k, "vn")) {
+    if (rt__token_is(k, "vn")) {
         if (r->normal_count == 0)
             rt__obj_warn(r, r->name, k->line, k->column,
                          "vertex normals (`vn`) are ignored: facets are "
                          "shaded flat (said once)");
         return attribute(r, &r->normal_count, 3, 3);
     }
-    if (rt__obj_token_is(k, "o") || rt__obj_token_is(k, "g") ||
-        rt__obj_token_is(k, "s"))
+    if (rt__token_is(k, "o") || rt__token_is(k, "g") ||
+        rt__token_is(k, "s"))
         return RT_OK;
-    if (rt__obj_token_is(k, "mtllib"))
+    if (rt__token_is(k, "mtllib"))
         return rt__obj_read_libraries(r);
-    if (rt__obj_token_is(k, "usemtl"))
+    if (rt__token_is(k, "usemtl"))
         return rt__obj_use_material(r);
-    if (rt__obj_token_is(k, "l") || rt__obj_token_is(k, "p")) {
+    if (rt__token_is(k, "l") || rt__token_is(k, "p")) {
         rt__obj_warn_once(r, r->name, k,
                           "(lines and points) are ignored: only faces are "
                           "drawn");
@@ -534,17 +525,15 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     d.vertex_count = r->vertex_count;
     d.facets = r->facets;
     d.facet_count = r->facet_count;
-    return rt__reader_finish(&d, r->name, r->facet_lines, &r->notes,
-                             r->options, scene, r->error);
+    rt_reading reading = {r->name, r->facet_lines, &r->notes, r->options,
+                          NULL, NULL};
+    return rt__reader_finish(&d, &reading, scene, r->error);
 }
 
 rt_status rt__obj_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_files *files,
                         rt_scene **scene, rt_error *error)
 {
-    if (scene == NULL)
-        return RT_ERR_ARGUMENT;
-    *scene = NULL;
     /* The name as given: messages escape it (rt__error_set, notes). */
     const char *raw = name ? name : "<memory>";
     char *shown_name = malloc(strlen(raw) + 1);
@@ -553,38 +542,26 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
     if (shown_name == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory");
-    rt_status status = RT_OK;
-    if (text == NULL && length > 0)
-        status = rt__error_set(error, RT_ERR_ARGUMENT, shown_name, 0, 0,
-                               "expected scene text");
-    if (status == RT_OK)
-        status = rt__text_check(text ? text : "", length, shown_name, error);
-    locale_t c_locale = (locale_t)0;
-    if (status == RT_OK &&
-        (c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0)) == (locale_t)0)
-        status = rt__error_set(error, RT_ERR_NOMEM, shown_name, 0, 0,
-                               "cannot create the C locale");
+    reader r;
+    memset(&r, 0, sizeof r);
+    rt_status status = rt__obj_lexer_open(&r.lex, text, length, shown_name,
+                                          error);
     if (status != RT_OK) {
         free(shown_name);
         return status;
     }
-    reader r;
-    memset(&r, 0, sizeof r);
     r.name = shown_name;
     r.error = error;
     r.options = options;
     r.files = files;
-    r.c_locale = c_locale;
     r.current = -1;
     r.open_wait = -1;
-    rt__obj_lexer_start(&r.lex, text ? text : "", length);
     double budget = RT_TRI_WORK_FLOOR + (double)RT_TRI_WORK_PER_BYTE * length;
     rt__tri_init(&r.triangulator, budget, options->cancel);
     status = read_obj(&r, scene);
-    freelocale(c_locale);
     rt__obj_free_materials(&r);
     rt__tri_free(&r.triangulator);
-    free(r.lex.tokens);
+    rt__obj_lexer_close(&r.lex);
     free(r.vertices);
     free(r.facets);
     free(r.facet_lines);

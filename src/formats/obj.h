@@ -1,16 +1,16 @@
 /*
  * obj.h - what the Wavefront OBJ reader's files share (internal): the
- * statement lexer and the token helpers (obj_text.c), the reader's state,
- * the geometry (obj.c) and the material libraries (mtl.c).  What is read
+ * statements over the one lexer (obj_text.c), the reader's state, the
+ * geometry (obj.c) and the material libraries (mtl.c).  What is read
  * and why: docs/formats.md, section OBJ.
  */
 #ifndef RAYTRACE_OBJ_H
 #define RAYTRACE_OBJ_H
 
-#include <locale.h>
 #include <stddef.h>
 
 #include "base/error.h"
+#include "formats/lexer.h"
 #include "formats/names.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
@@ -18,7 +18,6 @@
 #include "raytrace/scene.h"
 
 #define DEFAULT_GREY 204        /* 0.8 * 255: Kd of the default material */
-#define MAX_TOKEN_SHOWN 40      /* bytes of a token quoted in a message */
 #define MAX_KEYWORDS_NOTED 32   /* keywords warned about once each */
 #define MAX_NAMES_SHOWN 3       /* names quoted in a summary */
 #define MAX_LIBRARY_WARNINGS 4  /* libraries not read, each with its own
@@ -28,27 +27,18 @@
  * the triangulator). */
 #define POLL_STATEMENTS 4096
 
-typedef struct token {
-    const char *text;
-    size_t length;
-    int line, column;
-} token;
+typedef rt_token token;
 
 /*
- * Splits a text into statements, one token at a time: a statement is the
- * tokens of a line up to a `#`, and of the following lines while the
- * last token of a line ends with a backslash (which is removed).  The
- * keyword is kept; the rest is kept only as far as the statement asks
- * (rt__obj_rest), so that a statement that is ignored costs no memory
- * whatever its length.
+ * The statements of an OBJ or MTL text over the lexer (lexer.h): a
+ * statement is the tokens of a line up to a `#`, and of the following
+ * lines while the last token of a line ends with a backslash (which is
+ * removed).  The keyword is kept; the rest is kept only as far as the
+ * statement asks (rt__obj_rest), so that a statement that is ignored costs
+ * no memory whatever its length.
  */
 typedef struct lexer {
-    const char *at, *end;       /* the next byte to scan, the text's end */
-    const char *line_start;     /* the start of the line of `at` */
-    const char *eol;            /* the end of that line ('\n' or end) */
-    int line;                   /* line of `at` */
-    int open;                   /* `at` is inside a statement */
-    int continues;              /* the line's last token ended with '\' */
+    rt_lexer text;              /* the one lexer, line by line */
     token *tokens;              /* tokens[0]: the keyword */
     int count, capacity;        /* tokens kept */
     long total;                 /* tokens of the statement read so far,
@@ -56,10 +46,16 @@ typedef struct lexer {
     token last;                 /* the last token read */
 } lexer;
 
-void rt__obj_lexer_start(lexer *x, const char *text, size_t length);
+/* Opens the statements of text[0..length), named `name` in messages
+ * (rt__lex_open: the checks of the bytes; RT_ERR_NOMEM for the C
+ * locale).  rt__obj_lexer_close releases them. */
+rt_status rt__obj_lexer_open(lexer *x, const char *text, size_t length,
+                             const char *name, rt_error *error);
+void rt__obj_lexer_close(lexer *x);
 
 /* The next statement's keyword into tokens[0] (count 1), skipping what is
- * left of the current one: 1, 0 at the end of the text. */
+ * left of the current one: 1, 0 at the end of the text, -1 out of
+ * memory. */
 int rt__obj_next_statement(lexer *x);
 
 /* Reads the rest of the statement, keeping at most `most` more tokens
@@ -70,16 +66,8 @@ int rt__obj_rest(lexer *x, int most);
 /* The statement's next token without keeping it: 1, or 0 at its end. */
 int rt__obj_token(lexer *x, token *t);
 
-int rt__obj_token_is(const token *t, const char *word);
-
-/* A token for a message: at most MAX_TOKEN_SHOWN bytes, bytes that are not
- * printable ASCII as '?'. */
-const char *rt__obj_shown(const token *t, char buffer[MAX_TOKEN_SHOWN + 4]);
-
-/* Reads `t` as a decimal number in the C locale (no hexadecimal, inf or
- * nan): 0 with *value set; 1 for something else; 2 for a number that is
- * not finite. */
-int rt__obj_decimal(locale_t c_locale, const token *t, double *value);
+/* Reads `t` as a number by the one rule (rt__number_read). */
+rt_status rt__obj_number(const lexer *x, const token *t, double *value);
 
 /* A remark made once with a count: the first one's place and words. */
 typedef struct counted {
@@ -104,7 +92,6 @@ typedef struct waiting {
 
 typedef struct reader {
     const char *name;           /* the OBJ, for messages */
-    locale_t c_locale;
     rt_error *error;
     const rt_load_options *options;
     rt_files *files;            /* the files the load reads */

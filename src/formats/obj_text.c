@@ -1,18 +1,15 @@
 /*
  * obj_text.c - the text side of the OBJ and MTL readers (obj.h): the
- * statement lexer, tokens and numbers, and the warnings, those said once
- * and those counted.
+ * statements over the one lexer (lexer.h), numbers, and the warnings,
+ * those said once and those counted.
  *
- * The lexer reads a token at a time and keeps only what a statement asks
- * for: the keyword always, the rest up to a count the statement's reader
+ * A statement is read a token at a time, keeping only what it asks for:
+ * the keyword always, the rest up to a count the statement's reader
  * gives.  A statement that is ignored (an unknown keyword, `l`, an MTL
  * line before any `newmtl`) is skipped without keeping a token, so a
  * megabyte line costs no memory; a face reads its corners one by one.
  */
-#include <ctype.h>
-#include <errno.h>
 #include <limits.h>
-#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,72 +17,31 @@
 
 #include "formats/obj.h"
 
-/* ---------------------------------------------------------------- lexing */
+/* ------------------------------------------------------------ statements */
 
-static int is_space(int c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-/* Moves the cursor to the start of line `start`. */
-static void begin_line(lexer *x, const char *start)
-{
-    x->at = x->line_start = start;
-    const char *eol = memchr(start, '\n', (size_t)(x->end - start));
-    x->eol = eol != NULL ? eol : x->end;
-}
-
-void rt__obj_lexer_start(lexer *x, const char *text, size_t length)
+rt_status rt__obj_lexer_open(lexer *x, const char *text, size_t length,
+                             const char *name, rt_error *error)
 {
     memset(x, 0, sizeof *x);
-    x->end = text + length;
-    x->line = 1;
-    if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
-        text += 3;          /* a UTF-8 byte-order mark: not a column */
-    begin_line(x, text);
+    return rt__lex_open(&x->text, text, length, name,
+                        RT_LEX_LINES | RT_LEX_CONTINUATION, error);
 }
 
-/* The next token of the open statement: 1, or 0 at its end (the cursor is
- * then at the start of the next line). */
+void rt__obj_lexer_close(lexer *x)
+{
+    rt__lex_close(&x->text);
+    free(x->tokens);
+    x->tokens = NULL;
+}
+
+/* The next token of the open statement, counted: 1, or 0 at its end. */
 static int next_token(lexer *x, token *t)
 {
-    for (;;) {
-        while (x->at < x->eol && is_space((unsigned char)*x->at))
-            x->at++;
-        if (x->at == x->eol || *x->at == '#') {
-            int more = x->continues;
-            x->continues = 0;
-            if (x->eol == x->end) {
-                x->at = x->end;
-                x->open = 0;
-                return 0;
-            }
-            begin_line(x, x->eol + 1);
-            x->line++;
-            if (!more) {
-                x->open = 0;
-                return 0;
-            }
-            continue;
-        }
-        const char *s = x->at;
-        while (x->at < x->eol && !is_space((unsigned char)*x->at) &&
-               *x->at != '#')
-            x->at++;
-        *t = (token){s, (size_t)(x->at - s), x->line,
-                     (int)(s - x->line_start) + 1};
-        const char *c = x->at;
-        while (c < x->eol && is_space((unsigned char)*c))
-            c++;
-        if ((c == x->eol || *c == '#') && t->text[t->length - 1] == '\\') {
-            x->continues = 1;       /* the last token of a continued line */
-            if (--t->length == 0)
-                continue;
-        }
-        x->total++;
-        x->last = *t;
-        return 1;
-    }
+    if (!rt__lex_next(&x->text, t))
+        return 0;
+    x->total++;
+    x->last = *t;
+    return 1;
 }
 
 static int keep(lexer *x, const token *t)
@@ -100,22 +56,19 @@ static int keep(lexer *x, const token *t)
 int rt__obj_next_statement(lexer *x)
 {
     token t;
-    while (x->open && next_token(x, &t))
-        ;                           /* what the last statement left */
     x->count = 0;
     x->total = 0;
-    while (x->at < x->end || x->open) {
-        x->open = 1;
-        if (next_token(x, &t))
-            return keep(x, &t) ? 1 : -1;
-    }
-    return 0;
+    if (!rt__lex_statement(&x->text, &t))
+        return 0;
+    x->total = 1;
+    x->last = t;
+    return keep(x, &t) ? 1 : -1;
 }
 
 int rt__obj_rest(lexer *x, int most)
 {
     token t;
-    while (x->open && next_token(x, &t))
+    while (next_token(x, &t))
         if ((most < 0 || x->count <= most) && !keep(x, &t))
             return -1;
     return 0;
@@ -123,22 +76,7 @@ int rt__obj_rest(lexer *x, int most)
 
 int rt__obj_token(lexer *x, token *t)
 {
-    return x->open && next_token(x, t);
-}
-
-int rt__obj_token_is(const token *t, const char *word)
-{
-    size_t n = strlen(word);
-    return t->length == n && memcmp(t->text, word, n) == 0;
-}
-
-const char *rt__obj_shown(const token *t, char buffer[MAX_TOKEN_SHOWN + 4])
-{
-    size_t n = t->length < MAX_TOKEN_SHOWN ? t->length : MAX_TOKEN_SHOWN;
-    for (size_t i = 0; i < n; i++)
-        buffer[i] = isprint((unsigned char)t->text[i]) ? t->text[i] : '?';
-    strcpy(buffer + n, t->length > n ? "..." : "");
-    return buffer;
+    return next_token(x, t);
 }
 
 void rt__obj_statement_name(const lexer *x, const char **text, size_t *length)
@@ -149,36 +87,9 @@ void rt__obj_statement_name(const lexer *x, const char **text, size_t *length)
                                  : a->length;
 }
 
-/* ---------------------------------------------------------------- numbers */
-
-int rt__obj_decimal(locale_t c_locale, const token *t, double *value)
+rt_status rt__obj_number(const lexer *x, const token *t, double *value)
 {
-    char copy[128];
-    if (t->length == 0 || t->length >= sizeof copy)
-        return 1;
-    int digits = 0;
-    for (size_t i = 0; i < t->length; i++) {
-        char c = t->text[i];
-        if (isdigit((unsigned char)c))
-            digits++;
-        else if (!strchr("+-.eE", c))
-            return 1;
-        copy[i] = c;
-    }
-    copy[t->length] = '\0';
-    if (digits == 0)
-        return 1;
-    char *stop;
-    locale_t previous = uselocale(c_locale);
-    errno = 0;
-    double v = strtod(copy, &stop);
-    uselocale(previous);
-    if (*stop != '\0' || (copy[0] == '.' && !isdigit((unsigned char)copy[1])))
-        return 1;
-    if (!isfinite(v))
-        return 2;
-    *value = v;
-    return 0;
+    return rt__lex_number(&x->text, t, value);
 }
 
 /* --------------------------------------------------------------- warnings */
@@ -238,12 +149,12 @@ int rt__obj_first_time(reader *r, const char *key, size_t length)
 void rt__obj_warn_once(reader *r, const char *file, const token *keyword,
                        const char *what)
 {
-    char buffer[MAX_TOKEN_SHOWN + 4];
+    char buffer[RT_TOKEN_SHOWN_SIZE];
     int first = rt__obj_first_time(r, keyword->text, keyword->length);
     if (first > 0)
         rt__obj_warn(r, file, keyword->line, keyword->column,
                      "`%s` statements %s (said once)",
-                     rt__obj_shown(keyword, buffer), what);
+                     rt__token_shown(keyword, buffer), what);
     else if (first < 0)
         rt__obj_warn(r, file, keyword->line, keyword->column,
                      "more kinds of statements than are listed are ignored");

@@ -1,277 +1,30 @@
 /*
- * reader.c - the checks every scene reader makes on its raw bytes, the
- * warnings readers collect, and the poll of a load's cancellation flag.
- * The checks exist because each of these inputs once produced a misleading
- * message deep in a parser ("expected 3 values, found 1" for a UTF-16
- * file): the message must name the real cause.  Warnings of a kind that can
- * repeat on every line are summarised past the first few, so that their
- * memory and what a terminal shows stay small whatever the file.
+ * reader.c - what every scene reader shares (reader.h): the end of every
+ * read (the options' view and lights applied, the scene built, a refusal
+ * of the builder mapped to the token the reader kept for it), and the poll
+ * of a load's cancellation flag.
  */
 #include "formats/reader.h"
 
-#include <stdarg.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
+#include <math.h>
 
+#include "base/error.h"
+#include "base/vecmath.h"
+#include "formats/framing.h"
 #include "raytrace/render.h"
 
-/* The encoding a byte-order mark announces, or NULL. */
-static const char *bom_encoding(const unsigned char *b, size_t n)
+rt_status rt__parse_arguments(const char *text, size_t length,
+                              const char *name, rt_scene **scene,
+                              rt_error *error)
 {
-    if (n >= 4 && b[0] == 0xFF && b[1] == 0xFE && b[2] == 0 && b[3] == 0)
-        return "UTF-32 (little-endian)";
-    if (n >= 4 && b[0] == 0 && b[1] == 0 && b[2] == 0xFE && b[3] == 0xFF)
-        return "UTF-32 (big-endian)";
-    if (n >= 2 && b[0] == 0xFF && b[1] == 0xFE)
-        return "UTF-16 (little-endian)";
-    if (n >= 2 && b[0] == 0xFE && b[1] == 0xFF)
-        return "UTF-16 (big-endian)";
-    return NULL;
-}
-
-/* ASCII text in UTF-16 without a byte-order mark: its first characters
- * alternate with NUL bytes (every other byte NUL, the others printable). */
-static int looks_utf16(const unsigned char *b, size_t n)
-{
-    if (n < 8)
-        return 0;
-    for (int zero_at = 0; zero_at < 2; zero_at++) {
-        int fits = 1;
-        for (size_t i = 0; i < 8 && fits; i++) {
-            int want_zero = (int)(i % 2) == zero_at;
-            fits = want_zero ? b[i] == 0
-                             : (b[i] >= 0x20 && b[i] < 0x7f) || b[i] == '\n' ||
-                                   b[i] == '\r' || b[i] == '\t';
-        }
-        if (fits)
-            return 1;
-    }
-    return 0;
-}
-
-rt_status rt__text_check(const char *text, size_t length, const char *name,
-                         rt_error *error)
-{
-    const unsigned char *b = (const unsigned char *)text;
-    if (length > RT_MAX_SCENE_BYTES)
-        return rt__error_set(error, RT_ERR_LIMIT, name, 0, 0,
-                             "expected a scene of at most %zu bytes, found "
-                             "%zu bytes", RT_MAX_SCENE_BYTES, length);
-    const char *encoding = bom_encoding(b, length);
-    if (encoding != NULL)
-        return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,
-                             "the file is encoded in %s (it starts with that "
-                             "byte-order mark): save it as ASCII or UTF-8",
-                             encoding);
-    int line = 1, column = 1;
-    size_t cr_alone = 0, lf = 0;
-    for (size_t i = 0; i < length; i++) {
-        if (b[i] == 0) {
-            int utf16 = looks_utf16(b, length);
-            return rt__error_set(
-                error, RT_ERR_FORMAT, name, line, column,
-                utf16 ? "expected text, found NUL bytes between ASCII "
-                        "characters: the file looks UTF-16 encoded (without "
-                        "a byte-order mark); save it as ASCII or UTF-8"
-                      : "expected text, found a NUL byte: the file is "
-                        "binary, not a scene");
-        }
-        if (b[i] == '\n') {
-            lf++;
-            line++;
-            column = 1;
-        } else {
-            cr_alone += b[i] == '\r' && (i + 1 == length || b[i + 1] != '\n');
-            column++;
-        }
-    }
-    if (cr_alone > 0 && lf == 0)
-        return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,
-                             "the file has old Mac line endings (CR only, "
-                             "%zu of them, no LF): convert them to LF or "
-                             "CRLF", cr_alone);
+    if (scene == NULL)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected a pointer to fill with the scene");
+    *scene = NULL;
+    if (text == NULL && length > 0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "expected scene text");
     return RT_OK;
-}
-
-/* A new item at the end of the list, or NULL (out of memory: failed). */
-static rt_warning *new_item(rt_notes *notes)
-{
-    if (notes->count == notes->capacity) {
-        int bigger = notes->capacity ? 2 * notes->capacity : 8;
-        rt_warning *grown = realloc(notes->items,
-                                    (size_t)bigger * sizeof *grown);
-        if (grown == NULL) {
-            notes->failed = 1;
-            return NULL;
-        }
-        notes->items = grown;
-        notes->capacity = bigger;
-    }
-    return &notes->items[notes->count++];
-}
-
-/* Fills w's position and its "name:line:column: warning: " prefix;
- * returns the prefix's length. */
-static size_t start_item(rt_warning *w, const char *name, int line,
-                         int column)
-{
-    w->line = line;
-    w->column = line > 0 ? column : 0;
-    size_t size = sizeof w->message;
-    size_t used = rt__escape_name(name ? name : "<memory>", w->message, size);
-    int more = line > 0 ? snprintf(w->message + used, size - used,
-                                   ":%d:%d: warning: ", line, column)
-                        : snprintf(w->message + used, size - used,
-                                   ": warning: ");
-    if (more < 0 || (size_t)more >= size - used)
-        return 0;
-    return used + (size_t)more;
-}
-
-static void add_item(rt_notes *notes, const char *name, int line, int column,
-                     const char *fmt, va_list args)
-{
-    rt_warning *w = new_item(notes);
-    if (w == NULL)
-        return;
-    size_t used = start_item(w, name, line, column);
-    vsnprintf(w->message + used, sizeof w->message - used, fmt, args);
-}
-
-void rt__notes_add(rt_notes *notes, const char *name, int line, int column,
-                   const char *fmt, ...)
-{
-    va_list args;
-    va_start(args, fmt);
-    add_item(notes, name, line, column, fmt, args);
-    va_end(args);
-}
-
-/* Appends "a" or "a-b" (with ", " before when not first) if it fits. */
-static void close_range(rt_note_lines *l)
-{
-    if (l->start == 0 || l->full)
-        return;
-    char range[32];
-    int n = l->start == l->end
-                ? snprintf(range, sizeof range, "%s%d",
-                           l->length ? ", " : "", l->start)
-                : snprintf(range, sizeof range, "%s%d-%d",
-                           l->length ? ", " : "", l->start, l->end);
-    if (n < 0 || l->length + (size_t)n > RT_NOTES_LINES_TEXT - 5) {
-        l->full = 1;    /* room kept for ", ..." */
-        return;
-    }
-    memcpy(l->text + l->length, range, (size_t)n + 1);
-    l->length += (size_t)n;
-}
-
-static void add_line(rt_note_lines *l, int line)
-{
-    if (line <= 0)
-        return;
-    if (l->start != 0 && (line == l->end || line == l->end + 1)) {
-        l->end = line;
-        return;
-    }
-    close_range(l);
-    l->start = l->end = line;
-}
-
-/* Writes the text of kind k's summary into w, after its prefix. */
-static void write_summary(rt_warning *w, const rt_note_kind *k)
-{
-    rt_note_lines shown = k->lines;     /* the open range closed */
-    close_range(&shown);
-    char *at = w->message + k->prefix;
-    size_t room = sizeof w->message - k->prefix;
-    if (shown.length == 0 && !shown.full)
-        snprintf(at, room, "... and %d more %s", k->more, k->kind);
-    else
-        snprintf(at, room, "... and %d more %s (line%s %s%s)", k->more,
-                 k->kind, k->more > 1 ? "s" : "", shown.text,
-                 shown.full ? ", ..." : "");
-}
-
-static rt_note_kind *find_kind(rt_notes *notes, const char *kind)
-{
-    for (int i = 0; i < notes->kind_count; i++)
-        if (notes->kinds[i].kind == kind ||
-            strcmp(notes->kinds[i].kind, kind) == 0)
-            return &notes->kinds[i];
-    if (notes->kind_count == notes->kind_capacity) {
-        int bigger = notes->kind_capacity ? 2 * notes->kind_capacity : 4;
-        rt_note_kind *grown = realloc(notes->kinds,
-                                      (size_t)bigger * sizeof *grown);
-        if (grown == NULL) {
-            notes->failed = 1;
-            return NULL;
-        }
-        notes->kinds = grown;
-        notes->kind_capacity = bigger;
-    }
-    rt_note_kind *k = &notes->kinds[notes->kind_count++];
-    memset(k, 0, sizeof *k);
-    k->kind = kind;
-    return k;
-}
-
-void rt__notes_add_kind(rt_notes *notes, const char *kind, const char *name,
-                        int line, int column, const char *fmt, ...)
-{
-    rt_note_kind *k = find_kind(notes, kind);
-    if (k == NULL)
-        return;
-    if (k->kept < RT_NOTES_SHOWN_PER_KIND) {
-        k->kept++;
-        va_list args;
-        va_start(args, fmt);
-        add_item(notes, name, line, column, fmt, args);
-        va_end(args);
-        return;
-    }
-    if (k->more == 0) {
-        rt_warning *w = new_item(notes);
-        if (w == NULL)
-            return;
-        k->summary = notes->count - 1;
-        k->prefix = start_item(w, name, line, column);
-    }
-    k->more++;
-    add_line(&k->lines, line);
-}
-
-void rt__notes_settle(rt_notes *notes)
-{
-    for (int i = 0; i < notes->kind_count; i++)
-        if (notes->kinds[i].more > 0)
-            write_summary(&notes->items[notes->kinds[i].summary],
-                          &notes->kinds[i]);
-}
-
-void rt__notes_append(rt_notes *notes, const rt_notes *from)
-{
-    if (from == NULL)
-        return;
-    int first = notes->count;
-    for (int i = 0; i < from->count; i++) {
-        rt_warning *w = new_item(notes);
-        if (w == NULL)
-            return;
-        *w = from->items[i];
-    }
-    for (int i = 0; i < from->kind_count; i++)
-        if (from->kinds[i].more > 0)
-            write_summary(&notes->items[first + from->kinds[i].summary],
-                          &from->kinds[i]);
-}
-
-void rt__notes_free(rt_notes *notes)
-{
-    free(notes->items);
-    free(notes->kinds);
-    memset(notes, 0, sizeof *notes);
 }
 
 int rt__load_cancelled(const rt_load_options *options)
@@ -284,4 +37,131 @@ rt_status rt__load_cancel(rt_error *error, const char *name)
 {
     return rt__error_set(error, RT_ERR_CANCELLED, name ? name : "<memory>",
                          0, 0, "the load was cancelled");
+}
+
+#define PI 3.14159265358979323846
+
+/*
+ * The view of `options` applied to the camera of `d`: what is not given
+ * keeps the file's value (observer O, look-at A, horizontal field of view
+ * 2 atan(|AB| / |AO|); up: the file's AC, or, when the direction of view
+ * changes, the coordinate axis nearest to it).  Returns NULL, or what is
+ * wrong.
+ */
+static const char *apply_view(rt_scene_desc *d, const rt_load_options *o)
+{
+    rt_vec3 from = d->observer, at = d->screen_center;
+    rt_vec3 ao = v3_sub(d->observer, d->screen_center);
+    rt_vec3 ab = v3_sub(d->screen_right, d->screen_center);
+    rt_vec3 up = v3_cross(ao, ab);
+    double fov = 2 * atan(v3_length(ab) / v3_length(ao)) * 180 / PI;
+    if (o->look_from_given)
+        from = o->look_from;
+    if (o->look_at_given)
+        at = o->look_at;
+    if (o->up_given) {
+        up = o->up;
+    } else if (o->look_from_given || o->look_at_given) {
+        /* A new direction of view: the file's up leans with the file's
+         * view, so take the axis nearest to it (the scene's vertical,
+         * for a camera that looked down at it). */
+        rt_vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        rt_vec3 unit = v3_normalize(up), best = axes[2];
+        double best_dot = 0;
+        for (int i = 0; i < 3; i++) {
+            double along = v3_dot(unit, axes[i]);
+            if (fabs(along) > fabs(best_dot)) {
+                best_dot = along;
+                best = axes[i];
+            }
+        }
+        up = best_dot < 0 ? v3_scale(best, -1) : best;
+    }
+    if (o->fov_given)
+        fov = o->fov;
+    rt_view view = {from, at, up, fov, d->width, 0};
+    switch (rt__frame_view(&view, &d->observer, &d->screen_center,
+                           &d->screen_right)) {
+    case RT_FRAME_OK:
+        return NULL;
+    case RT_FRAME_FOV:
+        return "the field of view is not in (0, 180) degrees";
+    case RT_FRAME_SAME_POINT:
+        return "the look-from point is the look-at point";
+    case RT_FRAME_UP_ALONG_VIEW:
+        return "the up direction is along the view";
+    }
+    return NULL;
+}
+
+/* Whether the options replace the file's camera. */
+static int replaces_view(const rt_load_options *options)
+{
+    return options != NULL &&
+           (options->look_from_given || options->look_at_given ||
+            options->up_given || options->fov_given);
+}
+
+static int replaces_lights(const rt_load_options *options)
+{
+    return options != NULL && options->light_count > 0;
+}
+
+/* Whether the item a refusal names came from `options`, not the file:
+ * the reader kept no token for it. */
+static int from_options(const rt_refusal *refusal,
+                        const rt_load_options *options)
+{
+    return (refusal->item == RT_ITEM_CAMERA && replaces_view(options)) ||
+           (refusal->item == RT_ITEM_LIGHT && replaces_lights(options));
+}
+
+/* A refusal of an item of the file, at the token the reader kept for it
+ * (when it kept one); `status` and *error otherwise stand. */
+static rt_status report(const rt_reading *reading, rt_status status,
+                        const rt_refusal *refusal, rt_error *error)
+{
+    rt_token token;
+    if (refusal->status == RT_OK || reading->locate == NULL ||
+        !reading->locate(reading->user, refusal, &token))
+        return status;
+    if (refusal->found[0] != '\0')
+        return rt__error_set(error, status, reading->name, token.line,
+                             token.column, "expected %s, found %s",
+                             refusal->expected, refusal->found);
+    return rt__token_refuse(error, status, reading->name, &token, "%s",
+                            refusal->expected);
+}
+
+rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
+                            rt_scene **scene, rt_error *error)
+{
+    const char *name = reading->name;
+    const rt_load_options *options = reading->options;
+    rt_refusal refusal;
+    rt_status status;
+    /* The file's own description is judged first, as the options take
+     * its place only once it is read: its errors are named in it. */
+    if ((replaces_view(options) || replaces_lights(options)) &&
+        (status = rt__scene_check(desc, name, error, &refusal)) != RT_OK)
+        return report(reading, status, &refusal, error);
+    if (replaces_view(options)) {
+        const char *wrong = apply_view(desc, options);
+        if (wrong != NULL)
+            return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
+                                 "expected a view, found that %s", wrong);
+    }
+    if (replaces_lights(options)) {
+        desc->light_position = options->lights[0].position;
+        desc->light_color = options->lights[0].color;
+        desc->more_lights = options->lights + 1;
+        desc->more_light_count = options->light_count - 1;
+    }
+    status = rt__scene_build(desc, name, reading->facet_lines,
+                             reading->notes,
+                             options != NULL ? options->cancel : NULL, scene,
+                             error, &refusal);
+    if (status == RT_OK || from_options(&refusal, options))
+        return status;
+    return report(reading, status, &refusal, error);
 }

@@ -3,202 +3,94 @@
  * memory into an rt_scene_desc and handed to the scene builder.
  *
  * The reader goes record by record over the lines that hold something
- * (comments and blank lines are skipped), knows the line and column of
- * every token, and stops at the first broken rule with a message
- * "name:line:column: expected ..., found ...".  Before allocating for a
- * count it checks that the file has that many lines left, so a hostile count
- * cannot make it allocate more than the input's size justifies.  The load's
- * cancellation flag is polled every RT_LOAD_POLL records.
+ * (comments and blank lines are skipped; lexer.h), knows the line and
+ * column of every token, and stops at the first broken rule of the format
+ * with a message "name:line:column: expected ..., found ...".  The values
+ * themselves (coordinates, k, t, n, the lens, the camera, the number of
+ * lights) are the builder's to judge: it reports a refusal as data, and
+ * locate() finds the token of the record and value it names.  Before
+ * allocating for a count the reader checks that the file has that many
+ * lines left, so a hostile count cannot make it allocate more than the
+ * input's size justifies.  The load's cancellation flag is polled every
+ * RT_LOAD_POLL records.
  */
-#include <ctype.h>
-#include <errno.h>
 #include <limits.h>
-#include <locale.h>
-#include <stdio.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
-#include "formats/formats.h"
-#include "formats/reader.h"
-#include "scene/scene_internal.h"
 #include "base/vecmath.h"
+#include "formats/lexer.h"
+#include "formats/reader.h"
 
 #define MAX_VALUES 10       /* the longest record: the screen with a lens */
-#define MAX_NUMBER_LENGTH 256
 
-/* A token of the current line. */
-typedef struct token {
-    const char *text;
-    size_t length;
-    int column;
-} token;
+/* The grammar of .scn over the lexer: a record is a line, its values
+ * separated by blanks and/or one comma. */
+#define SCN_LEXER (RT_LEX_LINES | RT_LEX_COMMAS)
 
 typedef struct parser {
-    const char *at, *end;
+    rt_lexer lex;
+    rt_lexer start;         /* the lexer as opened, to find a record again */
+    int vertex_count, facet_count;  /* as read, to number the records */
     const char *name;
     const rt_load_options *options;
     long records;           /* records read, for the cancellation poll */
-    int line;               /* line of the next line to read */
-    int record_lines_left;  /* lines with content from `at` on */
-    locale_t c_locale;
+    int record_lines_left;  /* lines with content from the cursor on */
     rt_error *error;
     /* the current record */
-    token values[MAX_VALUES];
+    rt_token values[MAX_VALUES];
     int value_count;
     int record_line;
 } parser;
 
-/* Prints a token for a message: at most 40 bytes, non-printables as '?'. */
-static const char *show(const token *t, char *buffer, size_t size)
+static rt_status fail_at(parser *p, rt_status status, const char *expected,
+                         const rt_token *found)
 {
-    size_t n = t->length < 40 ? t->length : 40;
-    if (n > size - 4)
-        n = size - 4;
-    for (size_t i = 0; i < n; i++) {
-        unsigned char c = (unsigned char)t->text[i];
-        buffer[i] = isprint(c) ? (char)c : '?';
-    }
-    strcpy(buffer + n, t->length > n ? "..." : "");
-    return buffer;
+    return rt__token_refuse(p->error, status, p->name, found, "%s", expected);
 }
 
-static rt_status fail_at(parser *p, rt_status status, int column,
-                         const char *expected, const token *found)
+static int is_comma(const rt_token *t)
 {
-    char shown[48];
-    if (found != NULL)
-        return rt__error_set(p->error, status, p->name, p->record_line, column,
-                             "expected %s, found `%s`", expected,
-                             show(found, shown, sizeof shown));
-    return rt__error_set(p->error, status, p->name, p->record_line, column,
-                         "%s", expected);
-}
-
-/* The end of a line's content: before a comment, a CR, or the newline. */
-static const char *content_end(const char *line, const char *end)
-{
-    const char *c = line;
-    while (c < end && *c != '\n' && *c != '#')
-        c++;
-    while (c > line && (c[-1] == '\r' || c[-1] == ' ' || c[-1] == '\t'))
-        c--;
-    return c;
-}
-
-static const char *line_end(const char *line, const char *end)
-{
-    const char *nl = memchr(line, '\n', (size_t)(end - line));
-    return nl ? nl : end;
-}
-
-static int is_blank(int c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-/* The lines with content; -1 when the load is cancelled meanwhile. */
-static int count_record_lines(const char *at, const char *end,
-                              const rt_load_options *options)
-{
-    int count = 0;
-    for (long lines = 0; at < end; lines++) {
-        if (lines % (16 * RT_LOAD_POLL) == 0 && rt__load_cancelled(options))
-            return -1;
-        const char *eol = line_end(at, end);
-        const char *c = at;
-        while (c < eol && is_blank(*c))
-            c++;
-        count += c < eol && *c != '#';
-        at = eol < end ? eol + 1 : end;
-    }
-    return count;
+    return t->length == 1 && t->text[0] == ',';
 }
 
 /*
- * Splits the next line with content into tokens.  Values are separated by
- * white space and/or one comma.  Returns RT_OK, or an error; at the end of
- * the input sets value_count to -1.
+ * Reads the next line with content into values[]: values separated by
+ * blanks and/or one comma.  Returns RT_OK, or an error; at the end of the
+ * input sets value_count to -1.
  */
 static rt_status next_record(parser *p)
 {
-    for (;;) {
-        if (p->at >= p->end) {
-            p->value_count = -1;
-            return RT_OK;
-        }
-        const char *eol = line_end(p->at, p->end);
-        const char *content = content_end(p->at, eol);
-        const char *start = p->at;
-        int line = p->line;
-        p->at = eol < p->end ? eol + 1 : p->end;
-        p->line++;
-        const char *c = start;
-        while (c < content && is_blank(*c))
-            c++;
-        if (c == content)
-            continue;
-        p->record_line = line;
-        p->record_lines_left--;
-        if (p->records++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options))
-            return rt__load_cancel(p->error, p->name);
-        p->value_count = 0;
-        int comma_allowed = 0;
-        c = start;
-        while (c < content) {
-            if (is_blank(*c)) {
-                c++;
-                continue;
-            }
-            int column = (int)(c - start) + 1;
-            if (*c == ',') {
-                if (!comma_allowed) {
-                    token t = {c, 1, column};
-                    return fail_at(p, RT_ERR_SYNTAX, column, "a number", &t);
-                }
-                comma_allowed = 0;
-                c++;
-                continue;
-            }
-            const char *s = c;
-            while (c < content && !is_blank(*c) && *c != ',')
-                c++;
-            token t = {s, (size_t)(c - s), column};
-            if (p->value_count == MAX_VALUES)
-                return fail_at(p, RT_ERR_SYNTAX, column,
-                               "the end of the line", &t);
-            p->values[p->value_count++] = t;
-            comma_allowed = 1;
-        }
-        if (p->value_count > 0 && !comma_allowed) {
-            /* a trailing comma */
-            const char *comma = content - 1;
-            while (*comma != ',')
-                comma--;
-            token t = {comma, 1, (int)(comma - start) + 1};
-            return fail_at(p, RT_ERR_SYNTAX, t.column,
-                           "a number after the comma", &t);
-        }
+    rt_token t, comma;
+    if (!rt__lex_statement(&p->lex, &t)) {
+        p->value_count = -1;
         return RT_OK;
     }
-}
-
-/* Position of the end of the input, for "unexpected end of file". */
-static void end_position(const parser *p, const char *text, int *line,
-                         int *column)
-{
-    const char *last = p->end;
-    while (last > text && last[-1] != '\n')
-        last--;
-    if (last == text && p->end - text >= 3 &&
-        memcmp(text, "\xEF\xBB\xBF", 3) == 0)
-        last += 3;
-    int newlines = 0;
-    for (const char *c = text; c < p->end; c++)
-        newlines += *c == '\n';
-    *line = newlines + 1;
-    *column = (int)(p->end - last) + 1;
+    p->record_line = t.line;
+    p->record_lines_left--;
+    if (p->records++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options))
+        return rt__load_cancel(p->error, p->name);
+    p->value_count = 0;
+    int comma_allowed = 0;
+    do {
+        if (is_comma(&t)) {
+            if (!comma_allowed)
+                return fail_at(p, RT_ERR_SYNTAX, "a number", &t);
+            comma_allowed = 0;
+            comma = t;
+            continue;
+        }
+        if (p->value_count == MAX_VALUES)
+            return fail_at(p, RT_ERR_SYNTAX, "the end of the line", &t);
+        p->values[p->value_count++] = t;
+        comma_allowed = 1;
+    } while (rt__lex_next(&p->lex, &t));
+    if (!comma_allowed)         /* a trailing comma */
+        return fail_at(p, RT_ERR_SYNTAX, "a number after the comma", &comma);
+    return RT_OK;
 }
 
 /*
@@ -206,15 +98,15 @@ static void end_position(const parser *p, const char *text, int *line,
  * (most >= count) for a record with optional values at its end; `what`
  * names it for messages ("the observer `x, y, z`").
  */
-static rt_status expect_values(parser *p, const char *text, int count,
-                               int most, const char *what)
+static rt_status expect_values(parser *p, int count, int most,
+                               const char *what)
 {
     rt_status status = next_record(p);
     if (status != RT_OK)
         return status;
     if (p->value_count < 0) {
         int line, column;
-        end_position(p, text, &line, &column);
+        rt__lex_end(&p->lex, &line, &column);
         return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, line, column,
                              "unexpected end of file: expected %s", what);
     }
@@ -222,11 +114,10 @@ static rt_status expect_values(parser *p, const char *text, int count,
         char expected[160];
         snprintf(expected, sizeof expected, "%d value%s for %s", most,
                  most == 1 ? "" : "s", what);
-        return fail_at(p, RT_ERR_SYNTAX, p->values[most].column, expected,
-                       &p->values[most]);
+        return fail_at(p, RT_ERR_SYNTAX, expected, &p->values[most]);
     }
     if (p->value_count < count) {
-        const token *last = &p->values[p->value_count - 1];
+        const rt_token *last = &p->values[p->value_count - 1];
         int column = last->column + (int)last->length;
         return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, p->record_line,
                              column, "expected %d value%s for %s, found %d",
@@ -236,39 +127,18 @@ static rt_status expect_values(parser *p, const char *text, int count,
     return RT_OK;
 }
 
-static rt_status expect_record(parser *p, const char *text, int count,
-                               const char *what)
+static rt_status expect_record(parser *p, int count, const char *what)
 {
-    return expect_values(p, text, count, count, what);
+    return expect_values(p, count, count, what);
 }
 
 /* The i-th value of the current record as a finite number. */
 static rt_status number(parser *p, int i, double *value)
 {
-    const token *t = &p->values[i];
-    const char *s = t->text;
-    if (!rt__number_syntax(s, t->length)) {
-        char lower[8] = "";
-        for (size_t k = 0; k < t->length && k < 7; k++)
-            lower[k] = (char)tolower((unsigned char)s[k]);
-        const char *word = lower[0] == '+' || lower[0] == '-' ? lower + 1
-                                                             : lower;
-        if (strncmp(word, "nan", 3) == 0 || strncmp(word, "inf", 3) == 0)
-            return fail_at(p, RT_ERR_RANGE, t->column, "a finite number", t);
-        return fail_at(p, RT_ERR_SYNTAX, t->column, "a number", t);
-    }
-    if (t->length > MAX_NUMBER_LENGTH)
-        return fail_at(p, RT_ERR_LIMIT, t->column,
-                       "a number of at most 256 characters", t);
-    char copy[MAX_NUMBER_LENGTH + 1];
-    memcpy(copy, s, t->length);
-    copy[t->length] = '\0';
-    locale_t previous = uselocale(p->c_locale);
-    double v = strtod(copy, NULL);
-    uselocale(previous);
-    if (!isfinite(v))
-        return fail_at(p, RT_ERR_RANGE, t->column, "a finite number", t);
-    *value = v;
+    const rt_token *t = &p->values[i];
+    rt_status status = rt__lex_number(&p->lex, t, value);
+    if (status != RT_OK)
+        return fail_at(p, status, rt__number_expected(status), t);
     return RT_OK;
 }
 
@@ -286,35 +156,23 @@ static rt_status integer(parser *p, int i, long min, long max,
         snprintf(expected, sizeof expected, "%s (a whole number in %ld..%ld)",
                  what, min, max);
         return fail_at(p, v != floor(v) ? RT_ERR_SYNTAX : RT_ERR_RANGE,
-                       p->values[i].column, expected, &p->values[i]);
+                       expected, &p->values[i]);
     }
     *value = (int)v;
     return RT_OK;
 }
 
-/* A point; `bounded`: a vertex or a camera point, whose coordinates must
- * stay within RT_MAX_COORDINATE (a light's need not). */
-static rt_status point_within(parser *p, int first, int bounded,
-                              rt_vec3 *out)
+/* A point: values first..first+2 (the builder judges their range). */
+static rt_status point(parser *p, int first, rt_vec3 *out)
 {
     double c[3];
     for (int i = 0; i < 3; i++) {
         rt_status status = number(p, first + i, &c[i]);
         if (status != RT_OK)
             return status;
-        if (bounded && fabs(c[i]) > RT_MAX_COORDINATE)
-            return fail_at(p, RT_ERR_RANGE, p->values[first + i].column,
-                           "a coordinate of magnitude at most 1e152 (the "
-                           "renderer's arithmetic overflows beyond)",
-                           &p->values[first + i]);
     }
     *out = v3(c[0], c[1], c[2]);
     return RT_OK;
-}
-
-static rt_status point(parser *p, int first, rt_vec3 *out)
-{
-    return point_within(p, first, 1, out);
 }
 
 static rt_status color(parser *p, int first, rt_rgb8 *out)
@@ -332,12 +190,11 @@ static rt_status color(parser *p, int first, rt_rgb8 *out)
 }
 
 /* A count of lines to follow, at most the lines the file has left. */
-static rt_status count(parser *p, const char *text, const char *what,
-                       int *out)
+static rt_status count(parser *p, const char *what, int *out)
 {
     char description[96];
     snprintf(description, sizeof description, "the %s count `n`", what);
-    rt_status status = expect_record(p, text, 1, description);
+    rt_status status = expect_record(p, 1, description);
     if (status != RT_OK)
         return status;
     snprintf(description, sizeof description, "a %s count", what);
@@ -347,56 +204,112 @@ static rt_status count(parser *p, const char *text, const char *what,
         snprintf(description, sizeof description,
                  "a %s count of at most %d (the lines left in the file)",
                  what, p->record_lines_left);
-        return fail_at(p, RT_ERR_LIMIT, p->values[0].column, description,
+        return fail_at(p, RT_ERR_LIMIT, description,
                        &p->values[0]);
     }
     return RT_OK;
 }
 
-/* The optional `a, f` of the screen record (values 8 and 9): both or
- * neither, a >= 0, f > 0. */
+/*
+ * The optional `a, f` of the screen record (values 8 and 9): both or
+ * neither.  The builder judges the lens, but for f = 0: a description's 0
+ * stands for |AO|, which a file says by leaving `a, f` out, so the format
+ * refuses a written 0 (with the builder's words).
+ */
 static rt_status lens_values(parser *p, double *aperture, double *focal)
 {
     if (p->value_count == 8)
         return RT_OK;
     if (p->value_count == 9) {
-        const token *last = &p->values[8];
+        const rt_token *last = &p->values[8];
         return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, p->record_line,
                              last->column + (int)last->length,
                              "expected the focal distance `f` after the "
                              "aperture `a`, found the end of the line");
     }
     rt_status status = number(p, 8, aperture);
-    if (status == RT_OK && !(*aperture >= 0.0))
-        status = fail_at(p, RT_ERR_RANGE, p->values[8].column,
-                         "an aperture a >= 0", &p->values[8]);
     if (status == RT_OK)
         status = number(p, 9, focal);
-    if (status == RT_OK && !(*focal > 0.0))
-        status = fail_at(p, RT_ERR_RANGE, p->values[9].column,
-                         "a focal distance f > 0", &p->values[9]);
+    if (status == RT_OK && *focal == 0.0)
+        status = fail_at(p, RT_ERR_RANGE, RT_RULE_FOCAL, &p->values[9]);
     return status;
 }
 
-/* The optional `t [, n]` of a facet record (values 7 and 8). */
+/* The optional `t [, n]` of a facet record (values 7 and 8), judged by
+ * the builder but for n = 0: a description's 0 stands for 1, which a file
+ * says by leaving n out. */
 static rt_status transparency(parser *p, rt_facet_desc *f)
 {
     rt_status status = RT_OK;
-    if (p->value_count > 7) {
+    if (p->value_count > 7)
         status = number(p, 7, &f->t);
-        if (status == RT_OK && !(f->t >= 0.0 && f->t <= 1.0 - f->k))
-            status = fail_at(p, RT_ERR_RANGE, p->values[7].column,
-                             f->t >= 0.0 ? "a transparency t with k + t <= 1"
-                                         : "a transparency t >= 0",
-                             &p->values[7]);
-    }
     if (status == RT_OK && p->value_count > 8) {
         status = number(p, 8, &f->n);
-        if (status == RT_OK && !(f->n > 0.0))
-            status = fail_at(p, RT_ERR_RANGE, p->values[8].column,
-                             "a refractive index n > 0", &p->values[8]);
+        if (status == RT_OK && f->n == 0.0)
+            status = fail_at(p, RT_ERR_RANGE, RT_RULE_N, &p->values[8]);
     }
     return status;
+}
+
+/* The token of value `value` (from 0, commas not counted) of the record
+ * numbered `record` (from 0: the observer), read again from the start. */
+static int record_value(const parser *p, long record, int value,
+                        rt_token *token)
+{
+    rt_lexer lx = p->start;
+    rt_token t;
+    for (long r = 0; r <= record; r++)
+        if (!rt__lex_statement(&lx, &t))
+            return 0;
+    for (int v = 0;;) {
+        if (!is_comma(&t) && v++ == value) {
+            *token = t;
+            return 1;
+        }
+        if (!rt__lex_next(&lx, &t))
+            return 0;
+    }
+}
+
+/*
+ * The token a refusal of the builder names (rt_locate_func).  The records
+ * are numbered from 0: the observer, the screen, the vertex count, the
+ * vertices, the facet count, the facets, the background, the light, the
+ * further lights.
+ */
+static int locate(void *user, const rt_refusal *r, rt_token *token)
+{
+    const parser *p = user;
+    long vertices = 3, facets = 4 + (long)p->vertex_count;
+    long lights = 5 + (long)p->vertex_count + p->facet_count;
+    switch (r->item) {
+    case RT_ITEM_CAMERA:
+        if (r->field == RT_FIELD_OBSERVER)
+            return record_value(p, 0, r->part, token);
+        return record_value(p, 1,
+                            (r->field == RT_FIELD_SCREEN_RIGHT ? 3 : 0) +
+                                r->part,
+                            token);
+    case RT_ITEM_LENS:
+        return record_value(p, 1, r->field == RT_FIELD_APERTURE ? 8 : 9,
+                            token);
+    case RT_ITEM_VERTEX:
+        return record_value(p, vertices + r->index, r->part, token);
+    case RT_ITEM_FACET: {
+        int value = r->field == RT_FIELD_CORNER ? r->part
+                    : r->field == RT_FIELD_K    ? 3
+                    : r->field == RT_FIELD_T    ? 7
+                    : r->field == RT_FIELD_N    ? 8
+                                                : -1;
+        return value >= 0 && record_value(p, facets + r->index, value, token);
+    }
+    case RT_ITEM_LIGHT:
+        return record_value(p, lights + r->index,
+                            r->field == RT_FIELD_POSITION ? r->part : 0,
+                            token);
+    default:
+        return 0;
+    }
 }
 
 #define TRY(call)                                                            \
@@ -405,8 +318,8 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
             goto done;                                                       \
     } while (0)
 
-static rt_status parse(parser *p, const char *text,
-                       const rt_load_options *options, rt_scene **scene)
+static rt_status parse(parser *p, const rt_load_options *options,
+                       rt_scene **scene)
 {
     rt_status status;
     rt_scene_desc d;
@@ -416,40 +329,29 @@ static rt_status parse(parser *p, const char *text,
     int *facet_lines = NULL;
     rt_light *lights = NULL;
 
-    TRY(expect_record(p, text, 3, "the observer `x, y, z`"));
+    TRY(expect_record(p, 3, "the observer `x, y, z`"));
     TRY(point(p, 0, &d.observer));
-    TRY(expect_values(p, text, 8, 10,
+    TRY(expect_values(p, 8, 10,
                       "the screen `xA, yA, zA, xB, yB, zB, w, h [, a, f]`"));
     TRY(point(p, 0, &d.screen_center));
     TRY(point(p, 3, &d.screen_right));
     TRY(integer(p, 6, 1, RT_MAX_IMAGE_SIDE, "an image width", &d.width));
     TRY(integer(p, 7, 1, RT_MAX_IMAGE_SIDE, "an image height", &d.height));
     TRY(lens_values(p, &d.aperture, &d.focal_distance));
-    rt_camera camera;
-    const char *reason = rt__camera_make(d.observer, d.screen_center,
-                                         d.screen_right, d.width, d.height,
-                                         &camera);
-    if (reason != NULL) {
-        int column = strstr(reason, "observer") ? p->values[0].column
-                                                : p->values[3].column;
-        status = rt__error_set(p->error, RT_ERR_CAMERA, p->name,
-                               p->record_line, column,
-                               "expected a camera that sees something, "
-                               "found that %s", reason);
-        goto done;
-    }
-    TRY(count(p, text, "vertex", &d.vertex_count));
+    TRY(count(p, "vertex", &d.vertex_count));
+    p->vertex_count = d.vertex_count;
     vertices = malloc((size_t)(d.vertex_count ? d.vertex_count : 1) *
                       sizeof *vertices);
     if (vertices == NULL)
         goto nomem;
     for (int i = 0; i < d.vertex_count; i++) {
-        TRY(expect_record(p, text, 3, "a vertex `x, y, z`"));
+        TRY(expect_record(p, 3, "a vertex `x, y, z`"));
         TRY(point(p, 0, &vertices[i]));
     }
     d.vertices = vertices;
 
-    TRY(count(p, text, "facet", &d.facet_count));
+    TRY(count(p, "facet", &d.facet_count));
+    p->facet_count = d.facet_count;
     size_t m = (size_t)(d.facet_count ? d.facet_count : 1);
     facets = calloc(m, sizeof *facets);
     facet_lines = malloc(m * sizeof *facet_lines);
@@ -457,7 +359,7 @@ static rt_status parse(parser *p, const char *text,
         goto nomem;
     for (int i = 0; i < d.facet_count; i++) {
         rt_facet_desc *f = &facets[i];
-        TRY(expect_values(p, text, 7, 9,
+        TRY(expect_values(p, 7, 9,
                           "a facet `a, b, c, k, R, G, B [, t [, n]]`"));
         for (int j = 0; j < 3; j++) {
             int vertex = 0;
@@ -465,22 +367,16 @@ static rt_status parse(parser *p, const char *text,
             f->vertex[j] = vertex - 1;
         }
         TRY(number(p, 3, &f->k));
-        if (!(f->k >= 0.0 && f->k <= 1.0)) {
-            status = fail_at(p, RT_ERR_RANGE, p->values[3].column,
-                             "a reflection coefficient k in [0, 1]",
-                             &p->values[3]);
-            goto done;
-        }
         TRY(color(p, 4, &f->color));
         TRY(transparency(p, f));
         facet_lines[i] = p->record_line;
     }
     d.facets = facets;
 
-    TRY(expect_record(p, text, 3, "the background colour `R, G, B`"));
+    TRY(expect_record(p, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
-    TRY(expect_record(p, text, 6, "the light source `x, y, z, R, G, B`"));
-    TRY(point_within(p, 0, 0, &d.light_position));
+    TRY(expect_record(p, 6, "the light source `x, y, z, R, G, B`"));
+    TRY(point(p, 0, &d.light_position));
     TRY(color(p, 3, &d.light_color));
 
     /* Further lights, one a line, to the end of the file. */
@@ -492,23 +388,14 @@ static rt_status parse(parser *p, const char *text,
     while (p->record_lines_left > 0) {
         rt_light *light = &lights[d.more_light_count];
         static const char what[] = "a further light `x, y, z, R, G, B`";
-        TRY(expect_values(p, text, 1, 6, what));
-        if (d.more_light_count == RT_MAX_LIGHTS - 1) {
-            status = rt__error_set(p->error, RT_ERR_LIMIT, p->name,
-                                   p->record_line, p->values[0].column,
-                                   "expected at most %d lights (each one "
-                                   "costs every hit a shadow ray), found "
-                                   "light %d", RT_MAX_LIGHTS,
-                                   RT_MAX_LIGHTS + 1);
-            goto done;
-        }
+        TRY(expect_values(p, 1, 6, what));
         /* Something that is not a number is named before any count. */
         for (int i = 0; i < p->value_count; i++) {
             double ignored;
             TRY(number(p, i, &ignored));
         }
         if (p->value_count < 6) {
-            const token *last = &p->values[p->value_count - 1];
+            const rt_token *last = &p->values[p->value_count - 1];
             status = rt__error_set(p->error, RT_ERR_SYNTAX, p->name,
                                    p->record_line,
                                    last->column + (int)last->length,
@@ -516,7 +403,7 @@ static rt_status parse(parser *p, const char *text,
                                    what, p->value_count);
             goto done;
         }
-        TRY(point_within(p, 0, 0, &light->position));
+        TRY(point(p, 0, &light->position));
         TRY(color(p, 3, &light->color));
         d.more_light_count++;
     }
@@ -525,8 +412,8 @@ static rt_status parse(parser *p, const char *text,
         status = rt__load_cancel(p->error, p->name);
         goto done;
     }
-    status = rt__reader_finish(&d, p->name, facet_lines, NULL, options, scene,
-                               p->error);
+    rt_reading reading = {p->name, facet_lines, NULL, options, locate, p};
+    status = rt__reader_finish(&d, &reading, scene, p->error);
     goto done;
 nomem:
     status = rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
@@ -543,43 +430,33 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error)
 {
-    if (scene == NULL)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected a pointer to fill with the scene");
-    *scene = NULL;
-    if (text == NULL && length > 0)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "expected scene text");
-    if (text == NULL)
-        text = "";
-    rt_status checked = rt__text_check(text, length, name ? name : "<memory>",
-                                       error);
-    if (checked != RT_OK)
-        return checked;
     parser p;
     memset(&p, 0, sizeof p);
-    p.at = text;
-    p.end = text + length;
     p.name = name ? name : "<memory>";
-    p.line = 1;
     p.error = error;
-    if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
-        p.at += 3;          /* a UTF-8 byte-order mark: not a column */
     p.options = options;
-    p.record_lines_left = count_record_lines(p.at, p.end, options);
-    if (p.record_lines_left < 0)
-        return rt__load_cancel(error, p.name);
-    p.c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
-    if (p.c_locale == (locale_t)0)
-        return rt__error_set(error, RT_ERR_NOMEM, p.name, 0, 0,
-                             "cannot create the C locale");
-    rt_status status = parse(&p, text, options, scene);
-    freelocale(p.c_locale);
+    rt_status status = rt__lex_open(&p.lex, text, length, p.name, SCN_LEXER,
+                                    error);
+    if (status != RT_OK)
+        return status;
+    p.start = p.lex;
+    /* (a record costs at least two bytes: fewer than INT_MAX of them) */
+    long records = rt__lex_count(&p.lex, 1, options ? options->cancel : NULL);
+    if (records < 0)
+        status = rt__load_cancel(error, p.name);
+    if (status == RT_OK) {
+        p.record_lines_left = (int)records;
+        status = parse(&p, options, scene);
+    }
+    rt__lex_close(&p.lex);
     return status;
 }
 
 rt_status rt_scene_parse(const char *text, size_t length, const char *name,
                          rt_scene **scene, rt_error *error)
 {
+    rt_status status = rt__parse_arguments(text, length, name, scene, error);
+    if (status != RT_OK)
+        return status;
     return rt__scn_parse(text, length, name, NULL, scene, error);
 }

@@ -13,7 +13,7 @@
 
 #include "base/error.h"
 #include "formats/resolve.h"
-#include "scene/scene_internal.h"
+#include "scene/scene_build.h"
 
 rt_status rt__files_init(rt_files *files, rt_resolve_func resolve,
                          void *user, const char *scene_name,

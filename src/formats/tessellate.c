@@ -32,7 +32,7 @@
 #include "base/exact.h"
 #include "formats/triangulate.h"
 #include "raytrace/render.h"
-#include "scene/scene_internal.h"
+#include "scene/scene_build.h"
 #include "base/vecmath.h"
 
 /* Facets cut between two polls of the cancellation flag. */

@@ -13,12 +13,18 @@
 #include "base/vecmath.h"
 
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
-                            int width, int height, rt_camera *camera)
+                            int width, int height, rt_camera *camera,
+                            rt_field *field)
 {
     rt_vec3 ao = v3_sub(observer, a);
     rt_vec3 ab = v3_sub(b, a);
+    rt_field ignored;
+    if (field == NULL)
+        field = &ignored;
+    *field = RT_FIELD_SCREEN_CENTER;
     if (v3_max_abs(ao) == 0.0)
         return "the observer O is the screen centre A";
+    *field = RT_FIELD_SCREEN_RIGHT;
     if (v3_max_abs(ab) == 0.0)
         return "the screen point B is the screen centre A";
     if (!v3_is_finite(ao) || !v3_is_finite(ab))

@@ -10,6 +10,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,6 @@
 #include "base/error.h"
 #include "base/exact.h"
 #include "kernel/plane_crossing.h"
-#include "formats/reader.h"
 #include "scene_internal.h"
 #include "base/vecmath.h"
 
@@ -28,86 +28,220 @@ static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
     return v3_normalize(rt__exact_cross(a, b, c));
 }
 
-static rt_status check_desc(const rt_scene_desc *d, rt_error *error)
+_Static_assert(RT_MAX_LIGHTS == 64, "RT_RULE_LIGHTS says 64 lights");
+
+/* Where a check reports what it refuses. */
+typedef struct check {
+    const char *name;       /* for messages; may be NULL */
+    rt_error *error;
+    rt_refusal *refusal;    /* may be NULL */
+} check;
+
+static rt_status refuse(const check *c, rt_status status, rt_item item,
+                        int index, rt_field field, int part,
+                        const char *expected, const char *fmt, ...)
+    RT_PRINTF_LIKE(8, 9);
+
+/* Fills the refusal (the token quoted: found "") and the error, whose
+ * words `fmt` gives; returns `status`. */
+static rt_status refuse(const check *c, rt_status status, rt_item item,
+                        int index, rt_field field, int part,
+                        const char *expected, const char *fmt, ...)
 {
-    const char *what = NULL;
+    if (c->refusal != NULL)
+        *c->refusal = (rt_refusal){status, item, index, field, part,
+                                   expected, ""};
+    char words[RT_ERROR_MESSAGE_SIZE];
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(words, sizeof words, fmt, args);
+    va_end(args);
+    return rt__error_set(c->error, status, c->name, 0, 0, "%s", words);
+}
+
+/* The point `field` of the camera. */
+static rt_vec3 camera_point(const rt_scene_desc *d, rt_field field)
+{
+    return field == RT_FIELD_OBSERVER        ? d->observer
+           : field == RT_FIELD_SCREEN_CENTER ? d->screen_center
+                                             : d->screen_right;
+}
+
+/* The first coordinate of p that is not finite (`finite`) or beyond
+ * RT_MAX_COORDINATE (not `finite`), or -1. */
+static int bad_coordinate(rt_vec3 p, int finite)
+{
+    double c[3] = {p.x, p.y, p.z};
+    for (int i = 0; i < 3; i++)
+        if (finite ? !isfinite(c[i]) : fabs(c[i]) > RT_MAX_COORDINATE)
+            return i;
+    return -1;
+}
+
+static const rt_field camera_fields[3] = {
+    RT_FIELD_OBSERVER, RT_FIELD_SCREEN_CENTER, RT_FIELD_SCREEN_RIGHT};
+
+/* Every point finite: the camera's, the lights', the vertices'. */
+static rt_status check_finite(const check *c, const rt_scene_desc *d)
+{
+    static const char words[] = "expected finite coordinates for %s";
+    const char *expected = "finite coordinates";
+    for (int i = 0; i < 3; i++) {
+        int part = bad_coordinate(camera_point(d, camera_fields[i]), 1);
+        if (part >= 0)
+            return refuse(c, RT_ERR_RANGE, RT_ITEM_CAMERA, 0,
+                          camera_fields[i], part, expected, words,
+                          "the camera and the light");
+    }
+    for (int i = 0; i <= d->more_light_count; i++) {
+        rt_vec3 p = i == 0 ? d->light_position
+                           : d->more_lights[i - 1].position;
+        int part = bad_coordinate(p, 1);
+        if (part >= 0)
+            return refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, i,
+                          RT_FIELD_POSITION, part, expected, words,
+                          i == 0 ? "the camera and the light"
+                                 : "every light");
+    }
+    for (int i = 0; i < d->vertex_count; i++) {
+        int part = bad_coordinate(d->vertices[i], 1);
+        if (part >= 0)
+            return refuse(c, RT_ERR_RANGE, RT_ITEM_VERTEX, i,
+                          RT_FIELD_POSITION, part, expected, words,
+                          "every vertex");
+    }
+    return RT_OK;
+}
+
+/* A coordinate beyond RT_MAX_COORDINATE, as item `item` names it. */
+static rt_status refuse_far(const check *c, rt_item item, int index,
+                            rt_field field, int part, double value)
+{
+    return refuse(c, RT_ERR_RANGE, item, index, field, part,
+                  RT_RULE_COORDINATE,
+                  "expected coordinates of magnitude at most %g, found %g: "
+                  "the arithmetic of the renderer cannot hold such a scene",
+                  RT_MAX_COORDINATE, value);
+}
+
+static double coordinate(rt_vec3 p, int part)
+{
+    return part == 0 ? p.x : part == 1 ? p.y : p.z;
+}
+
+/* The camera's points within RT_MAX_COORDINATE, the lens, and a camera
+ * that sees something, computed into *camera. */
+static rt_status check_camera(const check *c, const rt_scene_desc *d,
+                              rt_camera *camera)
+{
+    for (int i = 0; i < 3; i++) {
+        rt_vec3 p = camera_point(d, camera_fields[i]);
+        int part = bad_coordinate(p, 0);
+        if (part >= 0)
+            return refuse_far(c, RT_ITEM_CAMERA, 0, camera_fields[i], part,
+                              coordinate(p, part));
+    }
+    if (!(d->aperture >= 0.0 && isfinite(d->aperture)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_LENS, 0, RT_FIELD_APERTURE, 0,
+                      RT_RULE_APERTURE, "expected %s, found %g",
+                      RT_RULE_APERTURE, d->aperture);
+    if (!(d->focal_distance >= 0.0 && isfinite(d->focal_distance)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_LENS, 0,
+                      RT_FIELD_FOCAL_DISTANCE, 0, RT_RULE_FOCAL,
+                      "expected %s (or 0 for |AO|), found %g", RT_RULE_FOCAL,
+                      d->focal_distance);
+    rt_field field;
+    const char *reason = rt__camera_make(d->observer, d->screen_center,
+                                         d->screen_right, d->width, d->height,
+                                         camera, &field);
+    if (reason == NULL)
+        return RT_OK;
+    rt_status status = refuse(c, RT_ERR_CAMERA, RT_ITEM_CAMERA, 0, field, 0,
+                              RT_RULE_CAMERA, "expected %s, found that %s",
+                              RT_RULE_CAMERA, reason);
+    if (c->refusal != NULL)
+        snprintf(c->refusal->found, sizeof c->refusal->found, "that %s",
+                 reason);
+    return status;
+}
+
+static rt_status check_facet(const check *c, const rt_scene_desc *d, int i)
+{
+    const rt_facet_desc *f = &d->facets[i];
+    for (int j = 0; j < 3; j++)
+        if (f->vertex[j] < 0 || f->vertex[j] >= d->vertex_count)
+            return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_CORNER,
+                          j, "a vertex index of the description",
+                          "facet %d: expected a vertex index in 0..%d, "
+                          "found %d", i, d->vertex_count - 1, f->vertex[j]);
+    static const char words[] = "facet %d: expected %s, found %g";
+    if (!(f->k >= 0.0 && f->k <= 1.0))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_K, 0,
+                      RT_RULE_K, words, i, RT_RULE_K, f->k);
+    if (!(f->t >= 0.0 && f->t <= 1.0 - f->k)) {
+        const char *rule = f->t >= 0.0 ? RT_RULE_T : RT_RULE_T_SIGN;
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_T, 0, rule,
+                      words, i, rule, f->t);
+    }
+    if (!(f->n >= 0.0 && isfinite(f->n)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_N, 0,
+                      RT_RULE_N, words, i, RT_RULE_N, f->n);
+    if (f->d_given && !(f->d >= 0.0 && isfinite(f->d)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_D, 0,
+                      RT_RULE_D, words, i, RT_RULE_D, f->d);
+    return RT_OK;
+}
+
+/*
+ * The one validator of a description (raytrace/scene.h, rt_scene_desc):
+ * its shape first (sizes, arrays, finite values), then its rules in the
+ * order a file states them, so that a reader's first refusal is the first
+ * it met.  Computes the camera into *camera.
+ */
+static rt_status check_desc(const check *c, const rt_scene_desc *d,
+                            rt_camera *camera)
+{
     if (d->width < 1 || d->width > RT_MAX_IMAGE_SIDE || d->height < 1 ||
         d->height > RT_MAX_IMAGE_SIDE)
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected an image size in 1..%d, found %dx%d",
-                             RT_MAX_IMAGE_SIDE, d->width, d->height);
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_IMAGE, 0,
+                      d->width < 1 || d->width > RT_MAX_IMAGE_SIDE
+                          ? RT_FIELD_WIDTH
+                          : RT_FIELD_HEIGHT,
+                      0, "an image size in 1..16384",
+                      "expected an image size in 1..%d, found %dx%d",
+                      RT_MAX_IMAGE_SIDE, d->width, d->height);
     if (d->vertex_count < 0 || d->facet_count < 0 ||
         (d->vertex_count > 0 && d->vertices == NULL) ||
         (d->facet_count > 0 && d->facets == NULL))
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "expected vertex and facet arrays");
+        return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
+                      "vertex and facet arrays",
+                      "expected vertex and facet arrays");
     if (d->more_light_count < 0 ||
         (d->more_light_count > 0 && d->more_lights == NULL))
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "expected an array of further lights");
-    if (d->more_light_count > RT_MAX_LIGHTS - 1)
-        return rt__error_set(error, RT_ERR_LIMIT, NULL, 0, 0,
-                             "expected at most %d lights (each one costs "
-                             "every hit a shadow ray), found %.0f",
-                             RT_MAX_LIGHTS, 1.0 + d->more_light_count);
-    if (!v3_is_finite(d->observer) || !v3_is_finite(d->screen_center) ||
-        !v3_is_finite(d->screen_right) || !v3_is_finite(d->light_position))
-        what = "the camera and the light";
-    for (int i = 0; what == NULL && i < d->more_light_count; i++)
-        if (!v3_is_finite(d->more_lights[i].position))
-            what = "every light";
-    for (int i = 0; what == NULL && i < d->vertex_count; i++)
-        if (!v3_is_finite(d->vertices[i]))
-            what = "every vertex";
-    if (what != NULL)
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected finite coordinates for %s", what);
-    double largest = fmax(v3_max_abs(d->observer),
-                          fmax(v3_max_abs(d->screen_center),
-                               v3_max_abs(d->screen_right)));
-    for (int i = 0; i < d->vertex_count; i++)
-        largest = fmax(largest, v3_max_abs(d->vertices[i]));
-    if (largest > RT_MAX_COORDINATE)
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected coordinates of magnitude at most %g, "
-                             "found %g: the arithmetic of the renderer "
-                             "cannot hold such a scene", RT_MAX_COORDINATE,
-                             largest);
-    for (int i = 0; i < d->facet_count; i++) {
-        const rt_facet_desc *f = &d->facets[i];
-        for (int j = 0; j < 3; j++)
-            if (f->vertex[j] < 0 || f->vertex[j] >= d->vertex_count)
-                return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                                     "facet %d: expected a vertex index in "
-                                     "0..%d, found %d",
-                                     i, d->vertex_count - 1, f->vertex[j]);
-        if (!(f->k >= 0.0 && f->k <= 1.0))
-            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                                 "facet %d: expected k in [0, 1], found %g",
-                                 i, f->k);
-        if (!(f->t >= 0.0 && f->t <= 1.0 - f->k))
-            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                                 "facet %d: expected a transparency t in "
-                                 "[0, 1 - k] = [0, %g], found %g",
-                                 i, 1.0 - f->k, f->t);
-        if (!(f->n >= 0.0 && isfinite(f->n)))
-            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                                 "facet %d: expected a refractive index "
-                                 "n > 0, found %g", i, f->n);
-        if (f->d_given && !(f->d >= 0.0 && isfinite(f->d)))
-            return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                                 "facet %d: expected a diffuse weight "
-                                 "d >= 0, found %g", i, f->d);
+        return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
+                      "an array of further lights",
+                      "expected an array of further lights");
+    rt_status status = check_finite(c, d);
+    if (status == RT_OK)
+        status = check_camera(c, d, camera);
+    for (int i = 0; status == RT_OK && i < d->vertex_count; i++) {
+        int part = bad_coordinate(d->vertices[i], 0);
+        if (part >= 0)
+            status = refuse_far(c, RT_ITEM_VERTEX, i, RT_FIELD_POSITION, part,
+                                coordinate(d->vertices[i], part));
     }
-    if (!(d->aperture >= 0.0 && isfinite(d->aperture)))
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected an aperture a >= 0, found %g",
-                             d->aperture);
-    if (!(d->focal_distance >= 0.0 && isfinite(d->focal_distance)))
-        return rt__error_set(error, RT_ERR_RANGE, NULL, 0, 0,
-                             "expected a focal distance f > 0 (or 0 for "
-                             "|AO|), found %g", d->focal_distance);
-    return RT_OK;
+    for (int i = 0; status == RT_OK && i < d->facet_count; i++)
+        status = check_facet(c, d, i);
+    if (status == RT_OK && d->more_light_count > RT_MAX_LIGHTS - 1) {
+        status = refuse(c, RT_ERR_LIMIT, RT_ITEM_LIGHT, RT_MAX_LIGHTS,
+                        RT_FIELD_NONE, 0, RT_RULE_LIGHTS,
+                        "expected %s, found %.0f", RT_RULE_LIGHTS,
+                        1.0 + d->more_light_count);
+        if (c->refusal != NULL)
+            snprintf(c->refusal->found, sizeof c->refusal->found,
+                     "light %d", RT_MAX_LIGHTS + 1);
+    }
+    return status;
 }
 
 /* The kind of the builder's warning for each zero-area facet. */
@@ -236,27 +370,34 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
     return 1;
 }
 
+rt_status rt__scene_check(const rt_scene_desc *d, const char *name,
+                          rt_error *error, rt_refusal *refusal)
+{
+    if (refusal != NULL)
+        memset(refusal, 0, sizeof *refusal);
+    check c = {name, error, refusal};
+    rt_camera camera;
+    return check_desc(&c, d, &camera);
+}
+
 rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
                           const int *facet_lines, const rt_notes *notes,
                           const rt_cancel *cancel, rt_scene **out,
-                          rt_error *error)
+                          rt_error *error, rt_refusal *refusal)
 {
     *out = NULL;
-    rt_status status = check_desc(d, error);
+    if (refusal != NULL)
+        memset(refusal, 0, sizeof *refusal);
+    check c = {name, error, refusal};
+    rt_camera camera;
+    rt_status status = check_desc(&c, d, &camera);
     if (status != RT_OK)
         return status;
     rt_scene *s = calloc(1, sizeof *s);
     if (s == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     rt__scene_prepared_init(s);
-    const char *reason = rt__camera_make(d->observer, d->screen_center,
-                                         d->screen_right, d->width, d->height,
-                                         &s->camera);
-    if (reason != NULL) {
-        rt_scene_destroy(s);
-        return rt__error_set(error, RT_ERR_CAMERA, name, 0, 0,
-                             "expected a camera, found that %s", reason);
-    }
+    s->camera = camera;
     size_t nv = (size_t)d->vertex_count, nf = (size_t)d->facet_count;
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
@@ -340,7 +481,7 @@ rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
     if (desc == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a scene description");
-    return rt__scene_build(desc, NULL, NULL, NULL, NULL, scene, error);
+    return rt__scene_build(desc, NULL, NULL, NULL, NULL, scene, error, NULL);
 }
 
 void rt_scene_destroy(rt_scene *scene)

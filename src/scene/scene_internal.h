@@ -16,6 +16,7 @@
 
 #include "kernel/kernel.h"
 #include "raytrace/scene.h"
+#include "scene/scene_build.h"
 
 struct rt_scene {
     char *name;
@@ -47,28 +48,16 @@ struct rt_scene {
     int source_count;
 };
 
-struct rt_notes;
-
-/*
- * Builds a scene from a validated description.  `name` (may be NULL) and
- * `facet_lines` (may be NULL) only serve warnings; `notes` (may be NULL)
- * are the reader's own warnings, listed before the builder's; `cancel`
- * (may be NULL) is polled (RT_ERR_CANCELLED).  On failure returns a
- * status with *error filled and *scene NULL.
- */
-rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
-                          const int *facet_lines,
-                          const struct rt_notes *notes,
-                          const rt_cancel *cancel, rt_scene **scene,
-                          rt_error *error);
-
 /*
  * Computes the camera of docs/rendering-model.md (aperture 0, focal distance
- * |AO|: the pinhole camera).  Returns NULL on success, or a
- * phrase saying what is degenerate ("the observer O is the screen centre A").
+ * |AO|: the pinhole camera).  Returns NULL on success, or a phrase saying
+ * what is degenerate ("the observer O is the screen centre A"), with
+ * *field (may be NULL) the point to blame: the screen centre A when O is
+ * A, else the screen point B.
  */
 const char *rt__camera_make(rt_vec3 observer, rt_vec3 a, rt_vec3 b,
-                            int width, int height, rt_camera *camera);
+                            int width, int height, rt_camera *camera,
+                            rt_field *field);
 
 /* The bytes of a scene's own records (itself, its name, vertices, facet
  * records, warnings and lights; not its kernels): what a load leaves in
@@ -113,11 +102,5 @@ struct rt_workers *rt__scene_workers(const rt_scene *scene);
 /* RT_OK for a precision rt_precision names, else RT_ERR_ARGUMENT with the
  * reason in *error (may be NULL). */
 rt_status rt__precision_check(rt_precision precision, rt_error *error);
-
-/* Gives `scene` the files its load read: `sources` (an array of `count`,
- * from malloc, each name from malloc), which the scene frees; a list it
- * held before is freed. */
-void rt__scene_take_sources(rt_scene *scene, rt_scene_source *sources,
-                            int count);
 
 #endif /* RAYTRACE_SCENE_INTERNAL_H */
