@@ -6,13 +6,11 @@ raytrace_add_suite(test_explain INTERNAL)
 # reflection included, in rt-export's --explain and (when the viewer is
 # built) rt-view's click (tests/test_explain_terms.c).
 if(TARGET raytrace_viewer)
-  raytrace_add_suite(test_explain_terms SOURCES support/program_util.c
-    LIBS raytrace_cli raytrace_viewer)
+  raytrace_add_suite(test_explain_terms LIBS raytrace_cli raytrace_viewer)
   target_compile_definitions(raytrace_test_explain_terms PRIVATE
     RT_TEST_HAVE_VIEWER=1)
 else()
-  raytrace_add_suite(test_explain_terms SOURCES support/program_util.c
-    LIBS raytrace_cli)
+  raytrace_add_suite(test_explain_terms LIBS raytrace_cli)
   target_compile_definitions(raytrace_test_explain_terms PRIVATE
     RT_TEST_HAVE_VIEWER=0)
 endif()

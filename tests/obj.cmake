@@ -4,11 +4,11 @@
 raytrace_add_suite(test_obj)
 # The files an OBJ names: the resolver's rule, the budget, each file read
 # once, what is never quoted (tests/test_obj_files.c).
-raytrace_add_suite(test_obj_files SOURCES support/hostile_util.c)
+raytrace_add_suite(test_obj_files)
 # The readers' polygon triangulator and NFF's calls into it
 # (tests/test_triangulate.c).
 raytrace_add_suite(test_triangulate INTERNAL)
 # What hostile OBJ and MTL input costs: bytes in against facets, warnings
 # and memory out (tests/test_obj_costs.c).
-raytrace_add_suite(test_obj_costs SOURCES support/hostile_util.c)
+raytrace_add_suite(test_obj_costs)
 set_tests_properties(test_obj_costs PROPERTIES TIMEOUT 600)

@@ -25,7 +25,7 @@ set_tests_properties(test_save_privileged PROPERTIES
 # process substitution), tests/test_save_streams.c: test_save_streams calls
 # the library; test_save_streams_shell runs rt-export in bash with the same
 # destinations, and exits 77, a visible skip, without bash or rt-export.
-raytrace_add_suite(test_save_streams SOURCES support/hostile_util.c)
+raytrace_add_suite(test_save_streams)
 set_tests_properties(test_save_streams PROPERTIES TIMEOUT 300)
 add_test(NAME test_save_streams_shell
          COMMAND raytrace_test_save_streams shell

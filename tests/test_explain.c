@@ -19,12 +19,6 @@ static const char *const scenes[] = {
     "scenes/two-facets.scn"};
 #define SCENE_COUNT (int)(sizeof scenes / sizeof scenes[0])
 
-static int memcheck(void)
-{
-    const char *v = getenv("RT_TEST_MEMCHECK");
-    return v != NULL && strcmp(v, "1") == 0;
-}
-
 static rt_scene *load(const char *relative)
 {
     rt_scene *scene;
@@ -91,7 +85,7 @@ static int check_every_pixel(const rt_scene *scene, rt_render_options *o,
 
 START_TEST(explained_value_is_the_rendered_pixel_in_every_scene)
 {
-    int fast = memcheck();
+    int fast = rt_test_memcheck();
     for (int s = 0; s < SCENE_COUNT; s++) {
         rt_scene *scene = load(scenes[s]);
         for (int precision = 0; precision < 2; precision++)
@@ -115,7 +109,7 @@ END_TEST
 
 START_TEST(explained_value_is_the_rendered_pixel_with_samples_and_lens)
 {
-    int fast = memcheck();
+    int fast = rt_test_memcheck();
     const char *names[] = {"scenes/cubes.scn", "scenes/focus.scn",
                            "scenes/glass.scn"};
     for (int s = 0; s < 3; s++) {

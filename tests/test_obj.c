@@ -79,17 +79,6 @@ static void refused(const char *text, rt_status status, int line, int column,
                   prefix);
 }
 
-/* The number of warnings holding `words`. */
-static int warnings_with(const rt_scene *scene, const char *words)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    int found = 0;
-    for (int i = 0; i < info.warning_count; i++)
-        found += strstr(rt_scene_warning(scene, i)->message, words) != NULL;
-    return found;
-}
-
 static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
 {
     rt_facet_info f;
@@ -238,7 +227,7 @@ static void check_polygon(const double (*p)[2], int n, rt_vec3 origin,
     ck_assert_msg(fabs(total - polygon_area) <= 1e-9 * fabs(polygon_area),
                   "the facets cover %.17g, the polygon %.17g", total,
                   polygon_area);
-    ck_assert_int_eq(warnings_with(scene, "fan"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "fan"), 0);
     rt_scene_destroy(scene);
 }
 
@@ -305,8 +294,8 @@ START_TEST(a_polygon_that_crosses_itself_is_fanned_with_a_warning)
     rt_scene *scene = obj("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3 4\n");
     ck_assert_int_eq(facet_count(scene), 2);
-    ck_assert_int_eq(warnings_with(scene, "triangulated as a fan"), 1);
-    ck_assert_int_eq(warnings_with(scene, ":5:1: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "triangulated as a fan"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, ":5:1: warning"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -366,14 +355,14 @@ START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
     material_is(scene, 6, 0, 255, 0, 0, 0.4, 1.33, 0.6);
     /* illum 5, Ks 0.9, d 0.5: k + t > 1, so k is lowered to 1 - t. */
     material_is(scene, 8, 204, 204, 204, 0.5, 0.5, 1, 0);
-    ck_assert_int_eq(warnings_with(scene, "`mirror_glass`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`mirror_glass`"), 1);
     /* illum 2 with Ks: a highlight, which the model has no place for. */
     material_is(scene, 10, 128, 128, 128, 0, 0, 1, 1);
     /* A material no library defines: the default grey, with a warning. */
     material_is(scene, 12, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(warnings_with(scene, "material `nowhere` is defined "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material `nowhere` is defined "
                                           "in no material library"), 1);
-    ck_assert_int_eq(warnings_with(scene, "materials.obj:20:8: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "materials.obj:20:8: warning"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -383,13 +372,13 @@ START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
     rt_scene *scene = obj_file("tests/data/obj/missing-mtl.obj");
     ck_assert_int_eq(facet_count(scene), 1);
     material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(warnings_with(scene, "material library "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material library "
                                           "`no-such-library.mtl` is not "
                                           "read"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "missing-mtl.obj:2:8: warning"),
+    ck_assert_int_eq(rt_test_count_warnings(scene, "missing-mtl.obj:2:8: warning"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "material `red`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material `red`"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -406,7 +395,7 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 1);
-    ck_assert_int_eq(warnings_with(scene, "escaped-library.obj:2:8: warning: "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "escaped-library.obj:2:8: warning: "
                                           "material library `missing.mtl` "
                                           "is not read"), 1);
     rt_scene_destroy(scene);
@@ -417,7 +406,7 @@ START_TEST(an_obj_from_memory_without_a_resolver_reads_no_library)
 {
     rt_scene *scene = obj("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3\n");
-    ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "without a resolver"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -431,13 +420,13 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
                           "vp 0.5\nvp 0.5\ncstype bezier\nl 1 2\nl 2 3\n"
                           "p 1\no thing\ng a b\ns off\nf 1 2 3\n");
     ck_assert_int_eq(facet_count(scene), 1);
-    ck_assert_int_eq(warnings_with(scene, "`vp` statements are not "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`vp` statements are not "
                                           "understood"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`cstype`"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`l` statements"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`p` statements"), 1);
-    ck_assert_int_eq(warnings_with(scene, "vertex normals"), 1);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:6:1: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`cstype`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`l` statements"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`p` statements"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "vertex normals"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:6:1: warning"), 1);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 5);
@@ -449,11 +438,11 @@ START_TEST(a_file_without_faces_loads_with_a_warning)
 {
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nl 1 2\n");
     ck_assert_int_eq(facet_count(scene), 0);
-    ck_assert_int_eq(warnings_with(scene, "<memory>: warning: the file has "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>: warning: the file has "
                                           "no face to draw"), 1);
     rt_scene_destroy(scene);
     scene = obj("");
-    ck_assert_int_eq(warnings_with(scene, "no face to draw"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "no face to draw"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -486,10 +475,10 @@ START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
                           "f 1/2/1 2/9/1 3/-2/4\nf 3/1 2/5 1/1\n");
     ck_assert_int_eq(facet_count(scene), 2);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:5:5: warning: `2` "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:5: warning: `2` "
                                           "refers to no texture coordinate"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:5:7: warning: `1` "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:7: warning: `1` "
                                           "refers to no normal"),
                      1);
     rt_scene_info info;
@@ -627,13 +616,11 @@ START_TEST(the_automatic_camera_sees_every_vertex_at_any_image_shape)
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
         every_vertex_inside_the_image(text, sizes[i][0], sizes[i][1]);
     used = 0;
-    unsigned seed = 12345;
+    rt_test_rng rng = {12345};
     for (int i = 0; i < 60; i++) {
         double c[3];
-        for (int k = 0; k < 3; k++) {
-            seed = seed * 1103515245u + 12345u;
-            c[k] = ((seed >> 8) % 20001) / 100.0 - 100.0;
-        }
+        for (int k = 0; k < 3; k++)
+            c[k] = rt_test_rng_below(&rng, 20001) / 100.0 - 100.0;
         used += (size_t)sprintf(text + used, "v %g %g %g\n", c[0] * 1e-5,
                                 c[1] * 1e-5 + 3, c[2] * 1e-5);
     }
@@ -712,37 +699,20 @@ START_TEST(a_cube_renders_framed_with_its_red_top_lit)
 }
 END_TEST
 
-typedef struct buffer {
-    char *data;
-    size_t length;
-} buffer;
-
-static int append(void *user, const void *data, size_t size)
-{
-    buffer *b = user;
-    char *grown = realloc(b->data, b->length + size + 1);
-    if (grown == NULL)
-        return 0;
-    memcpy(grown + b->length, data, size);
-    b->data = grown;
-    b->length += size;
-    return 1;
-}
-
 START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
 {
     static const char *const files[] = {"tests/data/obj/cube.obj",
                                         "tests/data/obj/materials.obj"};
     for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
         rt_scene *scene = obj_file(files[i]);
-        buffer b = {NULL, 0};
+        rt_test_bytes b = {NULL, 0, 0};
         rt_error error;
         unsigned dropped = 0;
-        ck_assert_int_eq(rt_scene_write_scn(scene, 1, append, &b, &dropped,
+        ck_assert_int_eq(rt_scene_write_scn(scene, 1, rt_test_bytes_add, &b, &dropped,
                                             &error),
                          RT_OK);
         rt_scene *again = NULL;
-        ck_assert_msg(rt_scene_parse(b.data, b.length, "converted.scn",
+        ck_assert_msg(rt_scene_parse((const char *)b.data, b.size, "converted.scn",
                                      &again, &error) == RT_OK,
                       "%s", error.message);
         rt_image direct = rt_test_render(scene, 5, 2);

@@ -40,8 +40,6 @@
 
 #include "testutil.h"
 
-static int memcheck(void) { return getenv("RT_TEST_MEMCHECK") != NULL; }
-
 /* --- scenes as data, written as .scn text ---------------------------- */
 
 #define MAX_VERTICES 256
@@ -160,66 +158,41 @@ static void box(spec *s, rt_vec3 lo, rt_vec3 hi, double k, int r, int g,
     }
 }
 
-typedef struct text {
-    char *p;
-    size_t used, size;
-} text;
-
-static void put(text *t, const char *format, ...)
+static void put_point(rt_test_text *t, rt_vec3 p, double scale)
 {
-    for (;;) {
-        va_list ap;
-        va_start(ap, format);
-        int n = vsnprintf(t->p + t->used, t->size - t->used, format, ap);
-        va_end(ap);
-        ck_assert_int_ge(n, 0);
-        if ((size_t)n < t->size - t->used) {
-            t->used += (size_t)n;
-            return;
-        }
-        t->size = t->size * 2 + (size_t)n + 64;
-        t->p = realloc(t->p, t->size);
-        ck_assert_ptr_nonnull(t->p);
-    }
-}
-
-static void put_point(text *t, rt_vec3 p, double scale)
-{
-    put(t, "%.17g, %.17g, %.17g", p.x * scale, p.y * scale, p.z * scale);
+    rt_test_text_add(t, "%.17g, %.17g, %.17g", p.x * scale, p.y * scale, p.z * scale);
 }
 
 /* The .scn text of *s with every coordinate (camera, vertices, lights)
  * multiplied by `scale`; malloc'd. */
 static char *scn_text(const spec *s, double scale)
 {
-    text t = {malloc(4096), 0, 4096};
-    ck_assert_ptr_nonnull(t.p);
-    t.p[0] = '\0';
-    put(&t, "# test_packets\n");
+    rt_test_text t = {NULL, 0, 0};
+    rt_test_text_add(&t, "# test_packets\n");
     put_point(&t, s->eye, scale);
-    put(&t, "\n");
+    rt_test_text_add(&t, "\n");
     put_point(&t, s->a, scale);
-    put(&t, ",  ");
+    rt_test_text_add(&t, ",  ");
     put_point(&t, s->b, scale);
-    put(&t, ",  %d, %d\n%d\n", s->width, s->height, s->nv);
+    rt_test_text_add(&t, ",  %d, %d\n%d\n", s->width, s->height, s->nv);
     for (int i = 0; i < s->nv; i++) {
         put_point(&t, s->v[i], scale);
-        put(&t, "\n");
+        rt_test_text_add(&t, "\n");
     }
-    put(&t, "%d\n", s->nf);
+    rt_test_text_add(&t, "%d\n", s->nf);
     for (int i = 0; i < s->nf; i++) {
         const facet_spec *f = &s->f[i];
-        put(&t, "%d, %d, %d, %.17g, %d, %d, %d\n", f->v[0] + 1, f->v[1] + 1,
+        rt_test_text_add(&t, "%d, %d, %d, %.17g, %d, %d, %d\n", f->v[0] + 1, f->v[1] + 1,
             f->v[2] + 1, f->k, f->color[0], f->color[1], f->color[2]);
     }
-    put(&t, "%d, %d, %d\n", s->background[0], s->background[1],
+    rt_test_text_add(&t, "%d, %d, %d\n", s->background[0], s->background[1],
         s->background[2]);
     for (int i = 0; i < s->nl; i++) {
         put_point(&t, s->l[i].p, scale);
-        put(&t, ", %d, %d, %d\n", s->l[i].color[0], s->l[i].color[1],
+        rt_test_text_add(&t, ", %d, %d, %d\n", s->l[i].color[0], s->l[i].color[1],
             s->l[i].color[2]);
     }
-    return t.p;
+    return t.data;
 }
 
 /* --- the comparison -------------------------------------------------- */
@@ -419,15 +392,15 @@ static void check_spec(const char *name, const spec *s, double scale,
 
 /* --- random scenes --------------------------------------------------- */
 
-static uint64_t rng;
+/* The generator of the random scenes, seeded by each test. */
+static rt_test_rng rng;
 
 static double uniform(double lo, double hi)
 {
-    rng = rng * 6364136223846793005u + 1442695040888963407u;
-    return lo + (hi - lo) * ((double)(rng >> 11) / 9007199254740992.0);
+    return rt_test_rng_range(&rng, lo, hi);
 }
 
-static int below(int n) { return (int)uniform(0, n) % n; }
+static int below(int n) { return rt_test_rng_below(&rng, n); }
 
 static rt_vec3 random_point(double r)
 {
@@ -522,15 +495,15 @@ static void random_lights(spec *s, int count)
 START_TEST(random_scenes_render_identically)
 {
     tally_reset();
-    int cases = memcheck() ? 4 : 48;
+    int cases = rt_test_memcheck() ? 4 : 48;
     for (int i = 0; i < cases; i++) {
-        rng = 0x5eed0000u + (uint64_t)i * 7919u;
+        rng.state = 0x5eed0000u + (uint64_t)i * 7919u;
         spec *s = spec_new();
         random_facets(s, 1 + below(64));
         random_camera(s, i % 4);
         random_lights(s, 1 + below(3));
-        s->width = memcheck() ? 6 + below(5) : 17 + below(24);
-        s->height = memcheck() ? 5 + below(4) : 9 + below(16);
+        s->width = rt_test_memcheck() ? 6 + below(5) : 17 + below(24);
+        s->height = rt_test_memcheck() ? 5 + below(4) : 9 + below(16);
         char name[128];
         snprintf(name, sizeof name, "random scene %d (%d facets, %d lights, "
                  "camera kind %d)", i, s->nf, s->nl, i % 4);
@@ -552,7 +525,7 @@ START_TEST(diagonal_views_render_identically)
     static const double widths[] = {1, 3, 1e3};
     for (int v = 0; v < 5; v++)
         for (int w = 0; w < 3; w++) {
-            rng = 0xd1a90000u + (uint64_t)(v * 3 + w);
+            rng.state = 0xd1a90000u + (uint64_t)(v * 3 + w);
             spec *s = spec_new();
             /* facets all round the eye: a shell of 40 random ones */
             for (int i = 0; i < 40; i++) {
@@ -567,8 +540,8 @@ START_TEST(diagonal_views_render_identically)
             random_lights(s, 2);
             light(s, vec(0.5, 0.25, 0.125), 200, 200, 200);
             aim(s, vec(0, 0, 0), views[v], vec(0, 0, 1), widths[w]);
-            s->width = memcheck() ? 9 : 33;
-            s->height = memcheck() ? 7 : 25;
+            s->width = rt_test_memcheck() ? 9 : 33;
+            s->height = rt_test_memcheck() ? 7 : 25;
             char name[128];
             snprintf(name, sizeof name,
                      "diagonal view (%g, %g, %g), half-width %g", views[v].x,
@@ -653,8 +626,8 @@ START_TEST(facets_at_the_eye_render_identically)
         light(s, add(e, vec(0.5, 0.5, 0.5)), 120, 120, 255);
         for (int camera = 0; camera < 2; camera++) {
             aim(s, e, d, vec(0, 0, 1), camera ? 6 : 0.7);
-            s->width = memcheck() ? 9 : 35;
-            s->height = memcheck() ? 7 : 27;
+            s->width = rt_test_memcheck() ? 9 : 35;
+            s->height = rt_test_memcheck() ? 7 : 27;
             char name[160];
             snprintf(name, sizeof name, "%s (%s)", what,
                      camera ? "wide" : "normal");
@@ -705,8 +678,8 @@ START_TEST(lights_on_and_in_facets_render_identically)
         spec *s = shadow_scene();
         light(s, lights[i].p, 255, 240, 220);
         light(s, vec(-3, 2, 5), 90, 90, 140);
-        s->width = memcheck() ? 10 : 40;
-        s->height = memcheck() ? 8 : 30;
+        s->width = rt_test_memcheck() ? 10 : 40;
+        s->height = rt_test_memcheck() ? 8 : 30;
         check_spec(lights[i].what, s, 1, NULL, BOTH, 0);
         free(s);
     }
@@ -717,8 +690,8 @@ START_TEST(lights_on_and_in_facets_render_identically)
     light(s, vec(0.5, 0.5, 0.75), 255, 255, 255);
     light(s, vec(-0.75, 0.5, -0.9), 100, 100, 255);
     aim(s, vec(0, -0.75, 0.25), vec(0.25, 1, -0.5), vec(0, 0, 1), 1.5);
-    s->width = memcheck() ? 10 : 40;
-    s->height = memcheck() ? 8 : 30;
+    s->width = rt_test_memcheck() ? 10 : 40;
+    s->height = rt_test_memcheck() ? 8 : 30;
     check_spec("the eye and the lights inside a closed box", s, 1, NULL, BOTH,
                0);
     free(s);
@@ -747,14 +720,14 @@ START_TEST(extreme_scales_render_identically)
             light(s, vec(-2, 1, 3), 255, 240, 220);
             light(s, vec(1, -3, 2), 90, 90, 140);
         } else {
-            rng = 0x5ca1e000u;
+            rng.state = 0x5ca1e000u;
             s = spec_new();
             random_facets(s, 60);
             random_camera(s, 1);
             random_lights(s, 3);
         }
-        s->width = memcheck() ? 10 : 40;
-        s->height = memcheck() ? 8 : 30;
+        s->width = rt_test_memcheck() ? 10 : 40;
+        s->height = rt_test_memcheck() ? 8 : 30;
         for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
             char name[128];
             snprintf(name, sizeof name, "%s scaled by %g",
@@ -781,17 +754,17 @@ START_TEST(light_counts_render_identically)
             if (scene == 0) {
                 s = shadow_scene();
             } else {
-                rng = 0x119470u;
+                rng.state = 0x119470u;
                 s = spec_new();
                 random_facets(s, 50);
                 random_camera(s, 0);
             }
-            rng = 0x1167u + i;
+            rng.state = 0x1167u + i;
             for (int l = 0; l < counts[i]; l++)
                 light(s, add(vec(0, 0, 2.5), random_point(3)), 30 + below(60),
                       30 + below(60), 30 + below(60));
-            s->width = memcheck() ? 10 : 36;
-            s->height = memcheck() ? 8 : 27;
+            s->width = rt_test_memcheck() ? 10 : 36;
+            s->height = rt_test_memcheck() ? 8 : 27;
             char name[128];
             snprintf(name, sizeof name, "%s with %d lights",
                      scene ? "a random scene" : "the shadow scene", counts[i]);
@@ -807,7 +780,7 @@ START_TEST(facet_counts_render_identically)
     tally_reset();
     static const int counts[] = {0, 1, 2, 63, 64, 65};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) {
-        rng = 0xfac37u + i;
+        rng.state = 0xfac37u + i;
         spec *s = spec_new();
         random_facets(s, counts[i]);
         ck_assert_int_eq(s->nf, counts[i]);
@@ -815,8 +788,8 @@ START_TEST(facet_counts_render_identically)
             vertex(s, vec(1, 2, 3));
         random_camera(s, 0);
         random_lights(s, 2);
-        s->width = memcheck() ? 10 : 36;
-        s->height = memcheck() ? 8 : 27;
+        s->width = rt_test_memcheck() ? 10 : 36;
+        s->height = rt_test_memcheck() ? 8 : 27;
         char name[64];
         snprintf(name, sizeof name, "%d facets", counts[i]);
         check_spec(name, s, 1, NULL, BOTH, 0);
@@ -860,7 +833,7 @@ START_TEST(sizes_and_regions_render_identically)
             s = shadow_scene();
             light(s, vec(-2, 1, 3), 255, 240, 220);
         } else {
-            rng = 0x5123u;
+            rng.state = 0x5123u;
             s = spec_new();
             random_facets(s, 64);
             random_camera(s, 1);
@@ -869,7 +842,7 @@ START_TEST(sizes_and_regions_render_identically)
         s->width = 32;
         s->height = 24;
         for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-            if (memcheck() && i % 3 != 0)
+            if (rt_test_memcheck() && i % 3 != 0)
                 continue;
             rt_render_options options;
             rt_render_options_init(&options);
@@ -923,7 +896,7 @@ static void grid(spec *s, int nx, int ny, double side, double x0, double y0,
 START_TEST(tessellated_grids_render_identically)
 {
     tally_reset();
-    const int w = memcheck() ? 8 : 32, h = memcheck() ? 8 : 16;
+    const int w = rt_test_memcheck() ? 8 : 32, h = rt_test_memcheck() ? 8 : 16;
     /* 1. A flat 8 x 4 grid (64 facets) of side 2^-6 seen straight down from
      * the height that puts the pixel centres' rays on its vertices and the
      * 2 x 2 samples' on its diagonals, exactly. */
@@ -960,7 +933,7 @@ START_TEST(tessellated_grids_render_identically)
     }
     /* 2. A bumpy 7 x 4 height field (56 facets) that shadows itself, with
      * posts, seen from several sides. */
-    rng = 0x917du;
+    rng.state = 0x917du;
     double heights[8 * 5];
     for (int i = 0; i < 8 * 5; i++)
         heights[i] = uniform(0, 0.6);
@@ -975,8 +948,8 @@ START_TEST(tessellated_grids_render_identically)
             {-3, -3, 2.5}, {0.25, 0.0, 4}, {3, -0.5, 0.8}, {-1, 3, 1.5}};
         aim(s, eyes[view], sub(vec(0, 0, 0.3), eyes[view]), vec(0, 0, 1),
             0.7);
-        s->width = memcheck() ? 10 : 37;
-        s->height = memcheck() ? 8 : 25;
+        s->width = rt_test_memcheck() ? 10 : 37;
+        s->height = rt_test_memcheck() ? 8 : 25;
         char name[64];
         snprintf(name, sizeof name, "a bumpy height field, view %d", view);
         check_spec(name, s, 1, NULL, BOTH, 0);
@@ -1048,7 +1021,7 @@ START_TEST(telephoto_views_render_identically)
                   {2.5e-5, FLOAT_ONLY}, {1.8e-5, FLOAT_ONLY}};
     for (size_t i = 0; i < sizeof fields / sizeof fields[0]; i++)
         for (int t = 0; t < TARGETS; t++) {
-            if (memcheck() && (t + (int)i) % 4 != 0)
+            if (rt_test_memcheck() && (t + (int)i) % 4 != 0)
                 continue;
             rt_vec3 targets[TARGETS];
             spec *s = fan_scene(targets);
@@ -1058,7 +1031,7 @@ START_TEST(telephoto_views_render_identically)
             s->height = 16384;
             rt_render_options options;
             rt_render_options_init(&options);
-            int rw = memcheck() ? 16 : 64, rh = memcheck() ? 4 : 16;
+            int rw = rt_test_memcheck() ? 16 : 64, rh = rt_test_memcheck() ? 4 : 16;
             options.region = (rt_region){8192 - rw / 2 + 1, 8192 - rh / 2,
                                          8192 + rw / 2 + 1, 8192 + rh / 2};
             char name[128];

@@ -684,14 +684,7 @@ START_TEST(parse_refuses_huge_count_without_allocating)
 {
     /* With the address space limited to 256 MiB, a loader that allocated
      * 2e9 vertices before checking the file would report RT_ERR_NOMEM. */
-#if defined(__SANITIZE_ADDRESS__)
-#define RT_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RT_TEST_ASAN 1
-#endif
-#endif
-#ifdef RT_TEST_ASAN
+#if RT_TEST_UNDER_ASAN
     /* AddressSanitizer reserves terabytes of address space, and reports a
      * 48 GB allocation by itself */
     printf("NOTE parse_refuses_huge_count_without_allocating: built with "
@@ -715,42 +708,31 @@ START_TEST(parse_refuses_huge_count_without_allocating)
 }
 END_TEST
 
-/* A fresh directory under /tmp, removed by the caller. */
-static void make_temp_dir(char *path, size_t size)
-{
-    snprintf(path, size, "/tmp/rt-test-parse-XXXXXX");
-    ck_assert_ptr_nonnull(mkdtemp(path));
-}
-
 START_TEST(load_reads_a_file_and_names_it_in_errors)
 {
-    char dir[64], good[128], bad[128];
-    make_temp_dir(dir, sizeof dir);
-    snprintf(good, sizeof good, "%s/good.scn", dir);
-    snprintf(bad, sizeof bad, "%s/bad.scn", dir);
+    char *dir = rt_test_temp_dir();
+    rt_test_path good = rt_test_path_at(dir, "good.scn");
+    rt_test_path bad = rt_test_path_at(dir, "bad.scn");
     char text[2048];
     build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
-    rt_test_write_file(good, text);
+    rt_test_write_file(good.s, text);
     build_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
                 "\n");
-    rt_test_write_file(bad, text);
+    rt_test_write_file(bad.s, text);
 
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(good, &scene, &error);
+    rt_status status = rt_scene_load(good.s, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     check_base_scene(scene);
     rt_scene_destroy(scene);
 
     scene = NULL;
-    status = rt_scene_load(bad, &scene, &error);
+    status = rt_scene_load(bad.s, &scene, &error);
     bad_case c = {"file with 10 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
                   21, "9", 1};
-    check_error(&c, status, scene, &error, bad);
-
-    unlink(good);
-    unlink(bad);
-    rmdir(dir);
+    check_error(&c, status, scene, &error, bad.s);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 

@@ -52,12 +52,6 @@
 /* What a file held before a save: recognisably not an image written here. */
 static const char old_content[] = "P3\n1 1\n255\n9 8 7\n";
 
-static int under_memcheck(void)
-{
-    const char *value = getenv("RT_TEST_MEMCHECK");
-    return value != NULL && value[0] != '\0' && strcmp(value, "0") != 0;
-}
-
 /* ------------------------------------------------------------------ */
 /* Paths, files and folders                                             */
 
@@ -343,7 +337,7 @@ typedef struct copy_args {
 static int copy_job(void *arg, char *note, size_t size)
 {
     const copy_args *a = arg;
-    alarm(under_memcheck() ? 600 : 60);     /* a save that never comes */
+    alarm(rt_test_memcheck() ? 600 : 60);     /* a save that never comes */
     if (a->also_close >= 0)
         close(a->also_close);
     int in = a->from ? open(a->from, O_RDONLY) : a->from_fd;
@@ -370,7 +364,7 @@ typedef struct accept_args {
 static int accept_job(void *arg, char *note, size_t size)
 {
     const accept_args *a = arg;
-    alarm(under_memcheck() ? 600 : 60);
+    alarm(rt_test_memcheck() ? 600 : 60);
     int connection = accept(a->listener, NULL, NULL);
     if (connection < 0)
         return say(1, note, size, "accept: %s", strerror(errno));
@@ -840,7 +834,7 @@ static int has_temporary(const char *dir)
 /* Waits until a temporary file shows in `dir` while `pid` runs. */
 static int temporary_appears(const char *dir, pid_t pid)
 {
-    double deadline = seconds_now() + (under_memcheck() ? 600 : 60);
+    double deadline = seconds_now() + (rt_test_memcheck() ? 600 : 60);
     const struct timespec pause = {0, 100000};
     while (seconds_now() < deadline) {
         if (has_temporary(dir))
@@ -857,7 +851,7 @@ static int temporary_appears(const char *dir, pid_t pid)
 
 static int signal_side(void)
 {
-    if (!under_memcheck())
+    if (!rt_test_memcheck())
         return 2000;
     static int told;
     if (!told++)

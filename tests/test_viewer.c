@@ -28,7 +28,6 @@
 #include <SDL.h>
 
 #include "testutil.h"
-#include "viewer_testutil.h"
 #include "view_app.h"
 #include "view_scene.h"
 #include "view_session.h"
@@ -60,13 +59,11 @@ static rt_scene *heavy_scene(int count, int width, int height)
     rt_vec3 *vertices = malloc(sizeof *vertices * (size_t)(3 * count + 3));
     rt_facet_desc *facets = malloc(sizeof *facets * (size_t)(count + 1));
     ck_assert(vertices != NULL && facets != NULL);
-    unsigned seed = 12345u;
+    rt_test_rng rng = {12345};
     for (int i = 0; i < count; i++) {
         double p[3];
-        for (int c = 0; c < 3; c++) {
-            seed = seed * 1103515245u + 12345u;
-            p[c] = (double)(seed >> 8 & 0xffff) / 65535.0;
-        }
+        for (int c = 0; c < 3; c++)
+            p[c] = rt_test_rng_uniform(&rng);
         rt_vec3 centre = {-8 + 16 * p[0], -6 + 12 * p[1], 0.5 + 1.5 * p[2]};
         vertices[3 * i] = (rt_vec3){centre.x - 0.2, centre.y - 0.1, centre.z};
         vertices[3 * i + 1] = (rt_vec3){centre.x + 0.2, centre.y - 0.1,
@@ -123,13 +120,13 @@ static view_session *new_session(rt_scene *scene, int threads,
 static view_state wait_until_finished(view_session *session)
 {
     view_progress progress;
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     for (;;) {
         view_session_get_progress(session, &progress);
         if (progress.state != VIEW_RENDERING)
             return progress.state;
-        ck_assert_msg(viewer_now_seconds() < deadline, "render did not finish");
-        viewer_sleep_ms(2);
+        ck_assert_msg(rt_test_now() < deadline, "render did not finish");
+        rt_test_sleep_ms(2);
     }
 }
 
@@ -207,14 +204,14 @@ static rt_image show_until_done(rt_scene *scene, int threads)
     view_session *session = new_session(scene, threads, NULL, NULL);
     ck_assert(view_window_attach(window, session, NULL, 0));
     ck_assert_int_eq(view_session_start(session), RT_OK);
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     view_progress progress;
     do {
         view_session_get_progress(session, &progress);
         if (view_window_sync(window))
             view_window_draw(window);
-        ck_assert_msg(viewer_now_seconds() < deadline, "render did not finish");
-        viewer_sleep_ms(5);
+        ck_assert_msg(rt_test_now() < deadline, "render did not finish");
+        rt_test_sleep_ms(5);
     } while (progress.state == VIEW_RENDERING);
     view_window_sync(window);
     ck_assert_int_eq(progress.state, VIEW_DONE);
@@ -357,30 +354,30 @@ END_TEST
 
 START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
 {
-    int threads_before = viewer_baseline_thread_count();
+    int threads_before = rt_test_baseline_thread_count();
     view_session *session = new_session(heavy_scene(2000, 48, 1500), 0,
                                         NULL, NULL);
     ck_assert_int_eq(view_session_start(session), RT_OK);
 
     view_progress progress;
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     do {
-        viewer_sleep_ms(1);
+        rt_test_sleep_ms(1);
         view_session_get_progress(session, &progress);
-        ck_assert(viewer_now_seconds() < deadline);
+        ck_assert(rt_test_now() < deadline);
     } while (progress.rows_done < 3 && progress.state == VIEW_RENDERING);
     ck_assert_msg(progress.state == VIEW_RENDERING,
                   "the heavy scene finished before it could be cancelled");
-    ck_assert_int_gt(viewer_thread_count(), threads_before);
+    ck_assert_int_gt(rt_test_thread_count(), threads_before);
 
-    double started = viewer_now_seconds();
+    double started = rt_test_now();
     view_session_cancel(session);
-    double took = viewer_now_seconds() - started;
+    double took = rt_test_now() - started;
     if (getenv("RT_TEST_VERBOSE"))
         fprintf(stderr, "cancel: %.4f s after %d rows\n", took,
                 progress.rows_done);
     ck_assert_msg(took < 0.5, "cancelling took %.3f s", took);
-    ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
 
     view_session_get_progress(session, &progress);
     ck_assert_int_eq(progress.state, VIEW_CANCELLED);
@@ -397,23 +394,23 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
     ck_assert_int_eq(marked, progress.rows_done);
 
     view_session_destroy(session);
-    ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
 }
 END_TEST
 
 START_TEST(destroying_a_rendering_session_joins_its_thread)
 {
-    int threads_before = viewer_baseline_thread_count();
+    int threads_before = rt_test_baseline_thread_count();
     for (int i = 0; i < 5; i++) {
         view_session *session = new_session(heavy_scene(1500, 64, 400),
                                             i % 3, NULL, NULL);
         ck_assert_int_eq(view_session_start(session), RT_OK);
-        viewer_sleep_ms(i * 7);
-        double started = viewer_now_seconds();
+        rt_test_sleep_ms(i * 7);
+        double started = rt_test_now();
         view_session_destroy(session);
-        double took = viewer_now_seconds() - started;
+        double took = rt_test_now() - started;
         ck_assert_msg(took < 0.5, "destroying took %.3f s", took);
-        ck_assert_int_eq(viewer_settled_thread_count(threads_before, 0.2), threads_before);
+        ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
     }
 }
 END_TEST
@@ -714,7 +711,7 @@ static void edit_and_reload(view_app *app, const char *path, int r, int g,
 {
     char background[64];
     snprintf(background, sizeof background, "%d, %d, %d", r, g, b);
-    viewer_write_scene(path, background);
+    rt_test_write_two_facet_scene(path, background);
     ck_assert(view_app_reload(app));
     ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), r, g, b));
@@ -723,7 +720,7 @@ static void edit_and_reload(view_app *app, const char *path, int r, int g,
 
 START_TEST(reload_reads_the_edited_file)
 {
-    viewer_write_scene("viewer-reload.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-reload.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 0);
     ck_assert(open_and_wait(app, "viewer-reload.scn"));
     ck_assert(shows_background(finished_image(app), 30, 30, 60));
@@ -735,12 +732,12 @@ END_TEST
 
 START_TEST(failing_reload_keeps_the_picture_and_reports_the_error)
 {
-    viewer_write_scene("viewer-broken.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-broken.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 0);
     ck_assert(open_and_wait(app, "viewer-broken.scn"));
     const rt_image *before = finished_image(app);
     view_session *session = view_app_session(app);
-    viewer_write_scene("viewer-broken.scn", "30, 30");
+    rt_test_write_two_facet_scene("viewer-broken.scn", "30, 30");
     ck_assert(view_app_reload(app));
     ck_assert(!view_app_wait_load(app));
     ck_assert_ptr_eq(view_app_session(app), session);
@@ -760,12 +757,12 @@ END_TEST
 
 START_TEST(watch_reloads_when_the_file_changes_and_only_then)
 {
-    viewer_write_scene("viewer-watch.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-watch.scn", "30, 30, 60");
     view_app *app = open_app(NULL, 1);
     ck_assert(open_and_wait(app, "viewer-watch.scn"));
     ck_assert(shows_background(finished_image(app), 30, 30, 60));
     ck_assert(!view_app_check_watch(app));
-    viewer_write_scene("viewer-watch.scn", "60, 30, 30");
+    rt_test_write_two_facet_scene("viewer-watch.scn", "60, 30, 30");
     touch_later("viewer-watch.scn", 2);
     ck_assert(view_app_check_watch(app));
     ck_assert(view_app_wait_load(app));
@@ -776,7 +773,7 @@ START_TEST(watch_reloads_when_the_file_changes_and_only_then)
     remove("viewer-watch.scn");
     ck_assert(!view_app_check_watch(app));
     ck_assert_str_eq(view_app_message(app), "");
-    viewer_write_scene("viewer-watch.scn", "30, 60, 30");
+    rt_test_write_two_facet_scene("viewer-watch.scn", "30, 60, 30");
     ck_assert(view_app_check_watch(app));
     ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), 30, 60, 30));
@@ -790,9 +787,9 @@ START_TEST(saves_are_numbered_and_never_replace_an_earlier_one)
     remove("viewer-save-1.ppm");
     remove("viewer-save-2.ppm");
     remove("viewer-save-3.ppm");
-    viewer_write_scene("viewer-save.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-save.scn", "30, 30, 60");
     /* A file of that name from before is not a candidate. */
-    viewer_write_scene("viewer-save-1.ppm", "not an image");
+    rt_test_write_two_facet_scene("viewer-save-1.ppm", "not an image");
     view_app *app = open_app(NULL, 0);
     ck_assert(open_and_wait(app, "viewer-save.scn"));
     finished_image(app);
@@ -837,7 +834,7 @@ START_TEST(a_save_mid_render_is_partial_and_replaces_no_complete_one)
     remove("viewer-out.ppm");
     remove("viewer-out-1.ppm");
     remove("viewer-out-partial-1.ppm");
-    viewer_write_scene("viewer-mid.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-mid.scn", "30, 30, 60");
     view_app *app = open_app("viewer-out.ppm", 0);
     ck_assert(open_and_wait(app, "viewer-mid.scn"));
     finished_image(app);
@@ -931,9 +928,9 @@ START_TEST(without_a_display_rt_view_says_so_and_exits_1_at_once)
              "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "
              "timeout -s KILL 10 '%s' '%s' 2>viewer-nodisplay.txt",
              RT_VIEW_PATH, rt_test_source_path("scenes/cubes.scn"));
-    double start = viewer_now_seconds();
+    double start = rt_test_now();
     int status = system(command);
-    double seconds = viewer_now_seconds() - start;
+    double seconds = rt_test_now() - start;
     ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 1,
                   "status %d after %.2f s", status, seconds);
     ck_assert_msg(seconds < 2.0, "took %.2f s", seconds);

@@ -34,7 +34,6 @@
 #include "view_app.h"
 #include "view_load.h"
 #include "view_scene.h"
-#include "viewer_testutil.h"
 
 /* Safety bound for a thread to come or go (never reached when it works). */
 #define WAIT_SECONDS 20.0
@@ -120,10 +119,10 @@ static rt_status cancellable_load(const char *path,
     if (strstr(path, "slow") == NULL)
         return view_scene_load(path, options, scene, error);
     sem_post(&gate.entered);
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     while (!rt_cancel_requested(options->cancel) &&
-           viewer_now_seconds() < deadline)
-        viewer_sleep_ms(1);
+           rt_test_now() < deadline)
+        rt_test_sleep_ms(1);
     atomic_store(&saw_cancel, rt_cancel_requested(options->cancel));
     *scene = NULL;
     snprintf(error->message, sizeof error->message, "%s: cancelled", path);
@@ -179,13 +178,13 @@ static const rt_image *finished_image(view_app *app)
     view_session *session = view_app_session(app);
     ck_assert_ptr_nonnull(session);
     view_progress progress;
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     do {
         view_session_get_progress(session, &progress);
         if (progress.state == VIEW_RENDERING)
-            viewer_sleep_ms(1);
+            rt_test_sleep_ms(1);
     } while (progress.state == VIEW_RENDERING &&
-             viewer_now_seconds() < deadline);
+             rt_test_now() < deadline);
     ck_assert_int_eq(progress.state, VIEW_DONE);
     return view_session_image(session);
 }
@@ -195,8 +194,8 @@ static const rt_image *finished_image(view_app *app)
 START_TEST(a_load_runs_on_a_worker_while_the_window_keeps_its_picture)
 {
     gate_open();
-    viewer_write_scene("viewer-load-a.scn", "30, 30, 60");
-    viewer_write_scene("viewer-load-b.scn", "200, 10, 10");
+    rt_test_write_two_facet_scene("viewer-load-a.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-b.scn", "200, 10, 10");
     view_app *app = open_app(held_load, 0);
     gate_release('l');              /* the first load goes through */
     ck_assert(view_app_open(app, "viewer-load-a.scn"));
@@ -241,9 +240,9 @@ END_TEST
 
 START_TEST(a_quit_during_a_load_blocked_in_read_does_not_wait_for_it)
 {
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     gate_open();
-    viewer_write_scene("viewer-load-q.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-q.scn", "30, 30, 60");
     view_app *app = open_app(held_load, 0);
     ck_assert(view_app_open(app, "viewer-load-q.scn"));
     ck_assert(wait_for(&gate.entered));
@@ -259,7 +258,7 @@ START_TEST(a_quit_during_a_load_blocked_in_read_does_not_wait_for_it)
 
     gate_release('x');              /* it returns, and its thread ends */
     ck_assert(wait_for(&gate.left));
-    ck_assert_int_eq(viewer_settled_thread_count(threads, WAIT_SECONDS),
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, WAIT_SECONDS),
                      threads);
     gate_close();
     remove("viewer-load-q.scn");
@@ -270,8 +269,8 @@ START_TEST(a_new_load_cancels_the_one_under_way)
 {
     gate_open();
     atomic_store(&saw_cancel, 0);
-    viewer_write_scene("viewer-load-slow.scn", "30, 30, 60");
-    viewer_write_scene("viewer-load-next.scn", "10, 200, 10");
+    rt_test_write_two_facet_scene("viewer-load-slow.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-next.scn", "10, 200, 10");
     view_app *app = open_app(cancellable_load, 0);
     ck_assert(view_app_open(app, "viewer-load-slow.scn"));
     ck_assert(wait_for(&gate.entered));
@@ -297,9 +296,9 @@ START_TEST(a_termination_signal_during_a_blocked_load_ends_the_loop)
     sigemptyset(&term);
     sigaddset(&term, SIGTERM);
     ck_assert_int_eq(pthread_sigmask(SIG_BLOCK, &term, &before), 0);
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     gate_open();
-    viewer_write_scene("viewer-load-t.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-t.scn", "30, 30, 60");
     view_app *app = open_app(held_load, 0);
     ck_assert(view_app_open(app, "viewer-load-t.scn"));
     ck_assert(wait_for(&gate.entered));
@@ -311,7 +310,7 @@ START_TEST(a_termination_signal_during_a_blocked_load_ends_the_loop)
     ck_assert(!atomic_load(&gate.returned));
     gate_release('x');
     ck_assert(wait_for(&gate.left));
-    ck_assert_int_eq(viewer_settled_thread_count(threads, WAIT_SECONDS),
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, WAIT_SECONDS),
                      threads);
     gate_close();
     sigset_t pending;
@@ -327,10 +326,10 @@ END_TEST
  * picture, and closing it does not wait. */
 START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)
 {
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     const char *path = "viewer-load-fifo.scn";
     remove(path);
-    viewer_write_scene(path, "30, 30, 60");
+    rt_test_write_two_facet_scene(path, "30, 30, 60");
     view_app *app = open_app(NULL, 1);
     ck_assert(view_app_open(app, path));
     ck_assert(view_app_wait_load(app));
@@ -352,15 +351,15 @@ START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)
     /* A worker blocked opening the FIFO is let through by a writer that
      * opens and closes it (the load then fails on an empty file); one that
      * refused it is gone already. */
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
-    while (viewer_thread_count() > threads &&
-           viewer_now_seconds() < deadline) {
+    double deadline = rt_test_now() + WAIT_SECONDS;
+    while (rt_test_thread_count() > threads &&
+           rt_test_now() < deadline) {
         int fd = open(path, O_WRONLY | O_NONBLOCK);
         if (fd >= 0)
             close(fd);
-        viewer_sleep_ms(1);
+        rt_test_sleep_ms(1);
     }
-    ck_assert_int_eq(viewer_settled_thread_count(threads, 0.2), threads);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, 0.2), threads);
     remove(path);
 }
 END_TEST

@@ -17,7 +17,6 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
-#include "program_util.h"
 #include "testutil.h"
 #include "view_app.h"
 #include "view_session.h"
@@ -80,14 +79,14 @@ static void assert_same_file_text(const char *path, const char *text)
 
 START_TEST(save_refuses_an_output_that_is_the_scene)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char *text = rt_test_read_file(rt_test_source_path("scenes/cubes.scn"),
                                    NULL);
     ck_assert_ptr_nonnull(text);
     char scene[4200], soft[4200], hard[4200];
-    snprintf(scene, sizeof scene, "%s", in_dir(dir, "v.scn"));
-    snprintf(soft, sizeof soft, "%s", in_dir(dir, "link.scn"));
-    snprintf(hard, sizeof hard, "%s", in_dir(dir, "hard.scn"));
+    snprintf(scene, sizeof scene, "%s", rt_test_in_dir(dir, "v.scn"));
+    snprintf(soft, sizeof soft, "%s", rt_test_in_dir(dir, "link.scn"));
+    snprintf(hard, sizeof hard, "%s", rt_test_in_dir(dir, "hard.scn"));
     rt_test_write_file(scene, text);
     ck_assert_int_eq(symlink("v.scn", soft), 0);
     ck_assert_int_eq(link(scene, hard), 0);
@@ -106,33 +105,33 @@ START_TEST(save_refuses_an_output_that_is_the_scene)
         assert_same_file_text(scene, text);
     }
     /* an output that is no input: saved as before */
-    view_app *app = render(scene, in_dir(dir, "out.ppm"));
+    view_app *app = render(scene, rt_test_in_dir(dir, "out.ppm"));
     char path[4200];
     ck_assert(view_app_save(app, path, sizeof path));
-    ck_assert_str_eq(path, in_dir(dir, "out.ppm"));
+    ck_assert_str_eq(path, rt_test_in_dir(dir, "out.ppm"));
     ck_assert_str_eq(view_app_message(app), "");
     close_app(app);
     rt_image saved;
-    ck_assert_int_eq(rt_ppm_load(in_dir(dir, "out.ppm"), &saved, NULL),
+    ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &saved, NULL),
                      RT_OK);
     ck_assert_int_eq(saved.width, 32);
     rt_image_release(&saved);
     free(text);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(save_refuses_the_material_library_its_obj_read)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char *obj = rt_test_read_file(rt_test_source_path(
                                       "tests/data/obj/cube.obj"), NULL);
     char *mtl = rt_test_read_file(rt_test_source_path(
                                       "tests/data/obj/cube.mtl"), NULL);
     ck_assert(obj != NULL && mtl != NULL);
     char scene[4200], library[4200];
-    snprintf(scene, sizeof scene, "%s", in_dir(dir, "cube.obj"));
-    snprintf(library, sizeof library, "%s", in_dir(dir, "cube.mtl"));
+    snprintf(scene, sizeof scene, "%s", rt_test_in_dir(dir, "cube.obj"));
+    snprintf(library, sizeof library, "%s", rt_test_in_dir(dir, "cube.mtl"));
     rt_test_write_file(scene, obj);
     rt_test_write_file(library, mtl);
     view_app *app = render(scene, library);
@@ -146,7 +145,7 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
     assert_same_file_text(scene, obj);
     free(obj);
     free(mtl);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -172,6 +171,6 @@ static Suite *sources_suite(void)
 
 int main(int argc, char **argv)
 {
-    return main_with_sources(argc, argv, outputs_suite, sources_suite,
+    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite,
                              "test_viewer_outputs");
 }

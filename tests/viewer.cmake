@@ -5,14 +5,13 @@
 if(TARGET raytrace_viewer)
   # One test compares with the image rt-export writes; one runs rt-view
   # without a display (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
-  raytrace_add_suite(test_viewer SOURCES support/viewer_testutil.c LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer LIBS raytrace_viewer)
   set_tests_properties(test_viewer PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
   # S never writes over an input (tests/test_viewer_outputs.c); the
   # material-library case, `test_viewer_outputs_sources`, is a skip (77)
   # until the loader lists the files it read.
-  raytrace_add_suite(test_viewer_outputs SOURCES support/program_util.c
-    LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer_outputs LIBS raytrace_viewer)
   add_test(NAME test_viewer_outputs_sources
            COMMAND raytrace_test_viewer_outputs sources
            WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
@@ -22,8 +21,7 @@ if(TARGET raytrace_viewer)
   set_tests_properties(test_viewer_outputs_sources PROPERTIES
     SKIP_RETURN_CODE 77)
   # Loads on a worker thread: live window, cancels, quits that never wait.
-  raytrace_add_suite(test_viewer_load SOURCES support/viewer_testutil.c
-    LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer_load LIBS raytrace_viewer)
   set_tests_properties(test_viewer_load PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()

@@ -17,6 +17,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "child.h"
 #include "robust/robust.h"
 
 #define RB_PI 3.14159265358979323846
@@ -45,17 +46,17 @@ static rb_view ray_view(double scale, rt_vec3 light, rt_rgb8 background)
 
 static int is_double(rt_precision p) { return p == RT_PRECISION_DOUBLE; }
 
-static rt_vec3 random_in_ball(rb_rng *rng, double radius)
+static rt_vec3 random_in_ball(rt_test_rng *rng, double radius)
 {
     for (;;) {
-        rt_vec3 p = rb_v(rb_range(rng, -1, 1), rb_range(rng, -1, 1),
-                         rb_range(rng, -1, 1));
+        rt_vec3 p = rb_v(rt_test_rng_range(rng, -1, 1), rt_test_rng_range(rng, -1, 1),
+                         rt_test_rng_range(rng, -1, 1));
         if (rb_dot(p, p) <= 1)
             return rb_scale(p, radius);
     }
 }
 
-static rt_vec3 random_unit(rb_rng *rng)
+static rt_vec3 random_unit(rt_test_rng *rng)
 {
     rt_vec3 p = random_in_ball(rng, 1);
     while (rb_length(p) < 1e-3)
@@ -125,13 +126,13 @@ static void shared_free(shared *sh)
 
 /* A point on an edge shared by two facets, or (with probability
  * vertex_share) a vertex inside the mesh. */
-static rt_vec3 shared_point(const rb_mesh *m, const shared *sh, rb_rng *rng,
+static rt_vec3 shared_point(const rb_mesh *m, const shared *sh, rt_test_rng *rng,
                             double vertex_share)
 {
-    if (sh->vertex_count > 0 && rb_uniform(rng) < vertex_share)
-        return m->vertices[sh->vertices[(int)(rb_uniform(rng) * sh->vertex_count)]];
-    const int *e = sh->edges[(int)(rb_uniform(rng) * sh->edge_count)];
-    return rb_lerp(m->vertices[e[0]], m->vertices[e[1]], rb_uniform(rng));
+    if (sh->vertex_count > 0 && rt_test_rng_uniform(rng) < vertex_share)
+        return m->vertices[sh->vertices[(int)(rt_test_rng_uniform(rng) * sh->vertex_count)]];
+    const int *e = sh->edges[(int)(rt_test_rng_uniform(rng) * sh->edge_count)];
+    return rb_lerp(m->vertices[e[0]], m->vertices[e[1]], rt_test_rng_uniform(rng));
 }
 
 static int hit_is_nan(const rb_hit *h)
@@ -152,7 +153,7 @@ static void sphere_edges(rb_method method, rt_precision precision,
     rb_view view = ray_view(scale, centre, SKY);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {5};
+    rt_test_rng rng = {5};
     shared sh = shared_of(&m);
     for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&m, &sh, &rng, 0.3);
@@ -190,20 +191,20 @@ static void case_w4(rb_method method, rt_precision precision, rb_result *r)
     rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {44};
+    rt_test_rng rng = {44};
     for (int i = 0; i < rb_scaled(50000); i++) {
         rt_vec3 target = m.vertices[apex];
         if (i % 2)
             target = rb_lerp(m.vertices[apex],
-                             m.vertices[rim0 + (int)(rb_uniform(&rng) * 64)],
-                             rb_uniform(&rng));
+                             m.vertices[rim0 + (int)(rt_test_rng_uniform(&rng) * 64)],
+                             rt_test_rng_uniform(&rng));
         /* From within 60 degrees of the axis, above or below: there the
          * fan covers the apex and the spokes from the ray's view. */
-        rt_vec3 axis = rb_rotate(rb_v(0, 0, rb_uniform(&rng) < 0.5 ? -1 : 1));
+        rt_vec3 axis = rb_rotate(rb_v(0, 0, rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1));
         rt_vec3 d = random_unit(&rng);
         while (rb_dot(d, axis) < 0.5)
             d = random_unit(&rng);
-        rt_vec3 origin = rb_add(target, rb_scale(d, rb_range(&rng, 0.5, 3)));
+        rt_vec3 origin = rb_add(target, rb_scale(d, rt_test_rng_range(&rng, 0.5, 3)));
         rb_hit h;
         r->total++;
         if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
@@ -231,7 +232,7 @@ static void case_w5(rb_method method, rt_precision precision, rb_result *r)
     view.screen_right = rb_add(view.screen_right, corner);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {55};
+    rt_test_rng rng = {55};
     shared sh = shared_of(&m);
     for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&m, &sh, &rng, 0.2);
@@ -248,7 +249,7 @@ static void case_w5(rb_method method, rt_precision precision, rb_result *r)
         rt_vec3 d = random_unit(&rng);
         if (rb_dot(d, normal) < 0.1)
             d = rb_add(d, rb_scale(normal, 1.1 - rb_dot(d, normal)));
-        rt_vec3 origin = rb_add(target, rb_scale(d, rb_range(&rng, 1, 5)));
+        rt_vec3 origin = rb_add(target, rb_scale(d, rt_test_rng_range(&rng, 1, 5)));
         /* An origin float holds exactly: the same ray in both precisions. */
         origin = rb_v((float)origin.x, (float)origin.y, (float)origin.z);
         rb_hit h;
@@ -294,13 +295,13 @@ static void case_d1(rb_method method, rt_precision precision, rb_result *r)
                               info.warning_count != n))
         r->failures += n;
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {11};
+    rt_test_rng rng = {11};
     for (int i = 0; i < rb_scaled(70000); i++) {
         const rt_facet_desc *f = &m.facets[i % n];
         rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
                 c = m.vertices[f->vertex[2]];
         rt_vec3 target = i % 3 == 0 ? a : rb_lerp(a, i % 3 == 1 ? b : c,
-                                                  rb_uniform(&rng));
+                                                  rt_test_rng_uniform(&rng));
         double size = fmax(rb_length(rb_sub(b, a)), rb_length(rb_sub(c, a)));
         if (size == 0)
             size = 1;
@@ -316,7 +317,7 @@ static void case_d1(rb_method method, rt_precision precision, rb_result *r)
 }
 
 /* A random orthonormal frame (u, v, n). */
-static void random_frame(rb_rng *rng, rt_vec3 *u, rt_vec3 *v, rt_vec3 *n)
+static void random_frame(rt_test_rng *rng, rt_vec3 *u, rt_vec3 *v, rt_vec3 *n)
 {
     *n = random_unit(rng);
     rt_vec3 t = random_unit(rng);
@@ -332,7 +333,7 @@ static void slivers(rb_method method, rt_precision precision, rb_result *r,
                     double aspect, int needle)
 {
     rb_mesh m = {0};
-    rb_rng rng = {(uint64_t)(aspect * 7) + (uint64_t)needle};
+    rt_test_rng rng = {(uint64_t)(aspect * 7) + (uint64_t)needle};
     rt_vec3 normals[16];
     for (int i = 0; i < 16; i++) {
         rt_vec3 u, v, n;
@@ -355,7 +356,7 @@ static void slivers(rb_method method, rt_precision precision, rb_result *r,
         const rt_facet_desc *f = &m.facets[s];
         rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
                 c = m.vertices[f->vertex[2]];
-        double wu = rb_range(&rng, 0.05, 0.9), wv = rb_range(&rng, 0.05, 0.95 - wu);
+        double wu = rt_test_rng_range(&rng, 0.05, 0.9), wv = rt_test_rng_range(&rng, 0.05, 0.95 - wu);
         rt_vec3 target = rb_add(a, rb_add(rb_scale(rb_sub(b, a), wu),
                                           rb_scale(rb_sub(c, a), wv)));
         rt_vec3 d = random_unit(&rng);
@@ -434,7 +435,7 @@ static void case_d5(rb_method method, rt_precision precision, rb_result *r)
         not_applicable(r, "normals are computed once, in double, for both");
         return;
     }
-    rb_rng rng = {505};
+    rt_test_rng rng = {505};
     rb_mesh m = {0};
     for (int i = 0; i < rb_scaled(2000); i++) {
         double aspect = pow(10, 2 + (i % 11));
@@ -442,7 +443,7 @@ static void case_d5(rb_method method, rt_precision precision, rb_result *r)
         random_frame(&rng, &u, &v, &n);
         rt_vec3 a = random_in_ball(&rng, 5), b = rb_add(a, u);
         rt_vec3 c = i % 2 ? rb_add(b, rb_scale(v, 1 / aspect))
-                          : rb_add(a, rb_add(rb_scale(u, rb_range(&rng, 0.1, 0.9)),
+                          : rb_add(a, rb_add(rb_scale(u, rt_test_rng_range(&rng, 0.1, 0.9)),
                                              rb_scale(v, 1 / aspect)));
         rb_mesh_triangle(&m, a, b, c, 0, GREY);
     }
@@ -665,23 +666,23 @@ static void contact(rb_method method, rt_precision precision, rb_result *r,
     rb_view_transform(&view, scale, shift);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {77};
+    rt_test_rng rng = {77};
     long leaks = 0, acne = 0;
     for (int i = 0; i < rb_scaled(100000); i++) {
         int under = i % 2;
         rt_vec3 origin, target;
         if (under) {
-            origin = rb_v(rb_range(&rng, -0.45, 0.45), rb_range(&rng, -0.45, 0.45), h / 2);
-            target = rb_v(rb_range(&rng, -0.4, 0.4), rb_range(&rng, -0.4, 0.4), 0);
+            origin = rb_v(rt_test_rng_range(&rng, -0.45, 0.45), rt_test_rng_range(&rng, -0.45, 0.45), h / 2);
+            target = rb_v(rt_test_rng_range(&rng, -0.4, 0.4), rt_test_rng_range(&rng, -0.4, 0.4), 0);
         } else {
-            double x = rb_range(&rng, 0.7, 0.98) * (rb_uniform(&rng) < 0.5 ? -1 : 1);
-            double y = rb_range(&rng, -0.98, 0.98);
+            double x = rt_test_rng_range(&rng, 0.7, 0.98) * (rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1);
+            double y = rt_test_rng_range(&rng, -0.98, 0.98);
             if (i % 4 == 0) {
                 double s = x;
                 x = y, y = s;
             }
             target = rb_v(x, y, 0);
-            origin = rb_add(target, rb_v(rb_range(&rng, -0.1, 0.1), rb_range(&rng, -0.1, 0.1), 1));
+            origin = rb_add(target, rb_v(rt_test_rng_range(&rng, -0.1, 0.1), rt_test_rng_range(&rng, -0.1, 0.1), 1));
         }
         rt_vec3 to_light = rb_sub(light, target);
         double expected = 200 * to_light.z / rb_length(to_light);
@@ -750,14 +751,14 @@ static void floor_rays(rb_method method, rt_precision precision, rb_result *r,
     /* In the plane up to rounding: the light gives at most what its own
      * rounding (relative 1e-16, float 6e-8) lets through - invisible. */
     double zero_tolerance = is_double(precision) ? 1e-6 : 1e-2;
-    rb_rng rng = {99};
+    rt_test_rng rng = {99};
     for (int i = 0; i < rb_scaled(50000); i++) {
-        rt_vec3 target = rb_v(rb_range(&rng, -extent, extent),
-                              rb_range(&rng, -extent, extent), 0);
+        rt_vec3 target = rb_v(rt_test_rng_range(&rng, -extent, extent),
+                              rt_test_rng_range(&rng, -extent, extent), 0);
         if (skip_wall && fabs(target.x) < 0.05)
             target.x = 0.05 + target.x;
-        rt_vec3 origin = rb_add(target, rb_v(rb_range(&rng, -0.2, 0.2),
-                                             rb_range(&rng, -0.2, 0.2), 0.5));
+        rt_vec3 origin = rb_add(target, rb_v(rt_test_rng_range(&rng, -0.2, 0.2),
+                                             rt_test_rng_range(&rng, -0.2, 0.2), 0.5));
         if (skip_wall && origin.x * target.x <= 0)
             origin.x = target.x;
         double expected = expect(target, light);
@@ -867,7 +868,7 @@ static void case_c1(rb_method method, rt_precision precision, rb_result *r)
         rt_scene_info info;
         rt_scene_get_info(scene, &info);
         rb_engine *e = rb_engine_create(scene, method, precision);
-        rb_rng rng = {31};
+        rt_test_rng rng = {31};
         for (int i = 0; i < 4096 + rb_scaled(20000); i++) {
             rt_ray ray = i < 4096 ? rt_camera_ray(&info.camera, i % 64, i / 64)
                                   : (rt_ray){eye, random_unit(&rng)};
@@ -904,12 +905,12 @@ static void case_c2(rb_method method, rt_precision precision, rb_result *r)
     rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {21};
+    rt_test_rng rng = {21};
     shared sh = shared_of(&m);
     for (int i = 0; i < rb_scaled(100000); i++) {
-        rt_vec3 origin = rb_v(rb_range(&rng, -3, 3), rb_range(&rng, -3, 3), 0);
+        rt_vec3 origin = rb_v(rt_test_rng_range(&rng, -3, 3), rt_test_rng_range(&rng, -3, 3), 0);
         rt_vec3 target = i % 2 ? shared_point(&m, &sh, &rng, 0.3)
-                               : rb_v(rb_range(&rng, -1, 1), rb_range(&rng, -1, 1), 0);
+                               : rb_v(rt_test_rng_range(&rng, -1, 1), rt_test_rng_range(&rng, -1, 1), 0);
         rt_vec3 d = rb_sub(target, origin);
         if (d.x == 0 && d.y == 0)
             d.x = 1;
@@ -943,13 +944,13 @@ static void case_c3(rb_method method, rt_precision precision, rb_result *r)
     rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {12};
+    rt_test_rng rng = {12};
     shared sh = shared_of(&inner);
     for (int i = 0; i < rb_scaled(100000); i++) {
         rt_vec3 target = shared_point(&inner, &sh, &rng, 0.2);
         while (fabs(target.x) > 0.5 || fabs(target.y) > 0.5)
             target = shared_point(&inner, &sh, &rng, 0.2);
-        double heading = rb_range(&rng, 0, 2 * RB_PI);
+        double heading = rt_test_rng_range(&rng, 0, 2 * RB_PI);
         rt_vec3 back = rb_v(cos(heading) * 0.5, sin(heading) * 0.5, 0.5 * tan(angle));
         rt_vec3 origin = rb_rotate(rb_add(target, back));
         target = rb_rotate(target);
@@ -982,17 +983,16 @@ static void mirror_pair(rb_mesh *m, rb_view *v)
                    WHITE};
 }
 
-/* Runs fn in a child process; returns its exit status, or -signal. */
-static int in_child(void (*fn)(void *), void *arg)
+/* Runs `job` in a child process (support/child.h); returns its exit
+ * status, or -signal. */
+static int in_child(rt_test_job job, void *arg)
 {
-    fflush(stdout);
-    pid_t pid = fork();
-    if (pid == 0) {
-        fn(arg);
-        _exit(0);
-    }
-    int status = 0;
-    if (pid < 0 || waitpid(pid, &status, 0) < 0)
+    rt_test_child child = rt_test_child_start(job, arg);
+    char note[64];
+    int status = child.pid > 0 ? rt_test_child_finish(&child, note,
+                                                      sizeof note)
+                               : -1;
+    if (status == -1)
         return -1000;
     if (WIFSIGNALED(status))
         return -WTERMSIG(status);
@@ -1005,8 +1005,9 @@ typedef struct naive_render_job {
     int expected_black;
 } naive_render_job;
 
-static void naive_render_child(void *arg)
+static int naive_render_child(void *arg, char *note, size_t size)
 {
+    (void)note, (void)size;
     naive_render_job *job = arg;
     rt_image image;
     rt_scene_info info;
@@ -1017,7 +1018,7 @@ static void naive_render_child(void *arg)
     for (int j = 0; j < 4; j++)
         for (int i = 0; i < 4; i++)
             bad |= rt_image_pixel(&image, i, j)[0] != 0;
-    _exit(bad ? 3 : 0);
+    return bad ? 3 : 0;
 }
 
 /* Two facing mirrors (k = 1), depth 100,000: every pixel black (the depth
@@ -1082,15 +1083,15 @@ static void case_r2(rb_method method, rt_precision precision, rb_result *r)
     rb_view view = ray_view(1, rb_v(0.1, 0.2, 0.3), WHITE);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {3};
+    rt_test_rng rng = {3};
     long escapes = 0;
     for (int i = 0; i < rb_scaled(3000); i++) {
         /* A point of a face at least 1% of the facet away from its edges:
          * a ray that meets an edge exactly leaves through it even in
          * exact arithmetic (the model's t > 0; docs/robustness.md), so it has
          * no escape-free answer to test. */
-        const rt_facet_desc *f = &m.facets[(int)(rb_uniform(&rng) * m.facet_count)];
-        double u = rb_uniform(&rng), v = rb_uniform(&rng);
+        const rt_facet_desc *f = &m.facets[(int)(rt_test_rng_uniform(&rng) * m.facet_count)];
+        double u = rt_test_rng_uniform(&rng), v = rt_test_rng_uniform(&rng);
         if (u + v > 1)
             u = 1 - u, v = 1 - v;
         double w0 = 0.01 + 0.97 * u, w1 = 0.01 + 0.97 * v;
@@ -1215,7 +1216,7 @@ static void case_v2(rb_method method, rt_precision precision, rb_result *r)
     static const double doubles[] = {1e-300, 1e-150, 1e-20, 1, 1e20, 1e150, 1e300};
     static const double floats[] = {1e-30, 1e-15, 1e-5, 1, 1e5, 1e15, 1e30};
     const double *magnitudes = is_double(precision) ? doubles : floats;
-    rb_rng rng = {8};
+    rt_test_rng rng = {8};
     for (int i = 0; i < rb_scaled(2000); i++) {
         rt_vec3 origin = random_in_ball(&rng, 0.5), d = random_unit(&rng);
         rb_hit first;
@@ -1289,7 +1290,7 @@ static void case_v3(rb_method method, rt_precision precision, rb_result *r)
 static void case_v4(rb_method method, rt_precision precision, rb_result *r)
 {
     rb_mesh m = {0};
-    rb_rng rng = {404};
+    rt_test_rng rng = {404};
     rt_vec3 base = rb_v(1e8, -1e8, 3e7);
     for (int i = 0; i < rb_scaled(200); i++) {
         rt_vec3 a = rb_add(base, random_in_ball(&rng, 40));
@@ -1306,8 +1307,8 @@ static void case_v4(rb_method method, rt_precision precision, rb_result *r)
         const rt_facet_desc *f = &m.facets[i % m.facet_count];
         rt_vec3 target = rb_lerp(m.vertices[f->vertex[0]],
                                  rb_lerp(m.vertices[f->vertex[1]],
-                                         m.vertices[f->vertex[2]], rb_uniform(&rng)),
-                                 rb_uniform(&rng));
+                                         m.vertices[f->vertex[2]], rt_test_rng_uniform(&rng)),
+                                 rt_test_rng_uniform(&rng));
         rt_vec3 origin = rb_add(target, random_in_ball(&rng, 60));
         rt_ray ray = {origin, rb_sub(target, origin)};
         rb_hit h;
@@ -1387,9 +1388,9 @@ static void duplicates(rb_method method, rt_precision precision, rb_result *r,
     rb_view view = ray_view(1, rb_v(0, 0, 3), SKY);
     rt_scene *scene = rb_scene(&m, &view);
     rb_engine *e = rb_engine_create(scene, method, precision);
-    rb_rng rng = {66};
+    rt_test_rng rng = {66};
     for (int i = 0; i < rb_scaled(50000); i++) {
-        rt_vec3 target = rb_v(rb_range(&rng, -0.98, 0.98), rb_range(&rng, -0.98, 0.98), 0);
+        rt_vec3 target = rb_v(rt_test_rng_range(&rng, -0.98, 0.98), rt_test_rng_range(&rng, -0.98, 0.98), 0);
         rt_vec3 origin = rb_add(target, rb_add(random_in_ball(&rng, 0.8), rb_v(0, 0, 1)));
         target = rb_rotate(target), origin = rb_rotate(origin);
         rb_hit h;
@@ -1643,7 +1644,7 @@ static rt_vec3 glass_place(rt_vec3 p, int rotate, double scale)
  * floor. */
 typedef void (*glass_build)(rb_mesh *m, glass *g, floor_det *fl);
 /* The i-th ray of a case (resampled while glass_expected refuses it). */
-typedef void (*glass_aim_fn)(const rb_mesh *m, rb_rng *rng, int i,
+typedef void (*glass_aim_fn)(const rb_mesh *m, rt_test_rng *rng, int i,
                              double crit, glass_aim *aim);
 
 /* How far a colour is from what was expected, in tolerances. */
@@ -1695,7 +1696,7 @@ static void glass_run(rb_method method, rt_precision precision, rb_result *r,
                                 SKY);
         rt_scene *scene = rb_scene(&m, &view);
         rb_engine *e = scene ? rb_engine_create(scene, method, precision) : NULL;
-        rb_rng rng = {seed + (uint64_t)k};
+        rt_test_rng rng = {seed + (uint64_t)k};
         for (int i = 0; e != NULL && i < rb_scaled(rays); i++) {
             glass_aim aim;
             glass_expect x[2];
@@ -1788,22 +1789,22 @@ static void slab_build(rb_mesh *m, glass *g, floor_det *fl)
  * is displaced sideways by sin(theta - theta_t) / cos(theta_t), the slab's
  * lateral shift.
  */
-static void slab_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
+static void slab_aim(const rb_mesh *m, rt_test_rng *rng, int i, double crit,
                      glass_aim *aim)
 {
     (void)m, (void)crit;
-    double theta = i % 2 ? rb_range(rng, 0, 80)
-                         : 90 - pow(10, rb_range(rng, -1, 1));
+    double theta = i % 2 ? rt_test_rng_range(rng, 0, 80)
+                         : 90 - pow(10, rt_test_rng_range(rng, -1, 1));
     theta *= RB_PI / 180;
-    double phi = rb_range(rng, 0, 2 * RB_PI);
-    double radius = 2 * sqrt(rb_uniform(rng)), around = rb_range(rng, 0, 2 * RB_PI);
+    double phi = rt_test_rng_range(rng, 0, 2 * RB_PI);
+    double radius = 2 * sqrt(rt_test_rng_uniform(rng)), around = rt_test_rng_range(rng, 0, 2 * RB_PI);
     rt_vec3 f = rb_v(radius * cos(around), radius * sin(around), -2);
     rt_vec3 in = rb_v(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta));
     rt_vec3 x = rb_sub(f, rb_scale(in, 1 / cos(theta)));
     double st = sin(theta) / GLASS_N, ct = sqrt(1 - st * st);
     rt_vec3 t = rb_v(st * cos(phi), st * sin(phi), -ct);
     rt_vec3 entry = rb_sub(x, rb_scale(t, 1 / ct));
-    *aim = (glass_aim){rb_sub(entry, rb_scale(in, rb_range(rng, 0.5, 2.5))),
+    *aim = (glass_aim){rb_sub(entry, rb_scale(in, rt_test_rng_range(rng, 0.5, 2.5))),
                        in, -1, -1, 0, 0, {-1, -1}};
 }
 
@@ -1854,7 +1855,7 @@ static void prism_build(rb_mesh *m, glass *g, floor_det *fl)
  * near beta_c, to the floor.  Far from beta_c it may be reflected by the
  * side first: every path is followed.
  */
-static void prism_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
+static void prism_aim(const rb_mesh *m, rt_test_rng *rng, int i, double crit,
                       glass_aim *aim)
 {
     (void)m;
@@ -1862,15 +1863,15 @@ static void prism_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
     double beta_c = asin(GLASS_N * sin(RB_PI / 4 - critical));
     double beta;
     if (i % 2) {
-        beta = rb_range(rng, -RB_PI / 3, RB_PI / 3);
+        beta = rt_test_rng_range(rng, -RB_PI / 3, RB_PI / 3);
     } else {
-        double off = pow(10, rb_range(rng, log10(crit), -0.5));
-        beta = beta_c + (rb_uniform(rng) < 0.5 ? -off : off);
+        double off = pow(10, rt_test_rng_range(rng, log10(crit), -0.5));
+        beta = beta_c + (rt_test_rng_uniform(rng) < 0.5 ? -off : off);
     }
-    double phi = i % 4 < 2 ? 0 : rb_range(rng, -0.4, 0.4);
+    double phi = i % 4 < 2 ? 0 : rt_test_rng_range(rng, -0.4, 0.4);
     rt_vec3 in = rb_v(sin(beta) * cos(phi), sin(beta) * sin(phi), -cos(beta));
-    rt_vec3 entry = rb_v(rb_range(rng, 0.02, 0.98), rb_range(rng, -1, 1), 0);
-    *aim = (glass_aim){rb_sub(entry, rb_scale(in, rb_range(rng, 0.5, 1.5))),
+    rt_vec3 entry = rb_v(rt_test_rng_range(rng, 0.02, 0.98), rt_test_rng_range(rng, -1, 1), 0);
+    *aim = (glass_aim){rb_sub(entry, rb_scale(in, rt_test_rng_range(rng, 0.5, 1.5))),
                        in, -1, -1, 0, 0, {-1, -1}};
 }
 
@@ -1931,20 +1932,20 @@ static int find_vertex(const rb_mesh *m, rt_vec3 p)
  * a face's diagonal at normal incidence, so that they leave exactly
  * through the opposite face's diagonal.
  */
-static void cube_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
+static void cube_aim(const rb_mesh *m, rt_test_rng *rng, int i, double crit,
                      glass_aim *aim)
 {
     (void)crit;
     int kind = i % 10 < 4 ? 0 : i % 10 < 7 ? 1 : 2;
-    int a = (int)(rb_uniform(rng) * 3);
-    double s = rb_uniform(rng) < 0.5 ? 1 : -1;
+    int a = (int)(rt_test_rng_uniform(rng) * 3);
+    double s = rt_test_rng_uniform(rng) < 0.5 ? 1 : -1;
     int u = (a + 1) % 3, v = (a + 2) % 3;
     rt_vec3 na = axis_vec(a, s), nb = rb_v(0, 0, 0);
     rt_vec3 pa, pb;
     int fa = 2 * a + (s < 0), fb = -1;
     if (kind == 1) {
-        int b = rb_uniform(rng) < 0.5 ? u : v, c = 3 - a - b;
-        double sb = rb_uniform(rng) < 0.5 ? 1 : -1;
+        int b = rt_test_rng_uniform(rng) < 0.5 ? u : v, c = 3 - a - b;
+        double sb = rt_test_rng_uniform(rng) < 0.5 ? 1 : -1;
         nb = axis_vec(b, sb);
         fb = 2 * b + (sb < 0);
         pa = rb_sub(rb_add(na, nb), axis_vec(c, 1));
@@ -1953,7 +1954,7 @@ static void cube_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
         pa = rb_sub(rb_sub(na, axis_vec(u, 1)), axis_vec(v, 1));
         pb = rb_add(rb_add(na, axis_vec(u, 1)), axis_vec(v, 1));
     }
-    double t = rb_range(rng, 0.01, 0.99);
+    double t = rt_test_rng_range(rng, 0.01, 0.99);
     rt_vec3 target = rb_lerp(pa, pb, t), d;
     if (kind == 2) {
         d = rb_scale(na, -1);
@@ -1962,7 +1963,7 @@ static void cube_aim(const rb_mesh *m, rb_rng *rng, int i, double crit,
             d = random_unit(rng);
         while (!(rb_dot(d, na) < -0.1 && (fb < 0 || rb_dot(d, nb) < -0.1)));
     }
-    double dist = rb_range(rng, 0.5, 2.5);
+    double dist = rt_test_rng_range(rng, 0.5, 2.5);
     *aim = (glass_aim){rb_sub(target, rb_scale(d, dist)), d,
                        find_vertex(m, pa), find_vertex(m, pb), t, dist,
                        {kind == 1 ? fa : -1, kind == 1 ? fb : -1}};
@@ -2011,26 +2012,26 @@ static void case_g4(rb_method method, rt_precision precision, rb_result *r)
         rt_light more = {glass_place(light_out, 1, scale), {0, 128, 255}};
         rt_scene *scene = rb_scene_lights(&m, &view, &more, 1);
         rb_engine *e = scene ? rb_engine_create(scene, method, precision) : NULL;
-        rb_rng rng = {144 + (uint64_t)k};
+        rt_test_rng rng = {144 + (uint64_t)k};
         for (int i = 0; e != NULL && i < rb_scaled(2000); i++) {
             rt_vec3 o, p, light;
             const double *color;
             int lit = 1;
             if (i % 2 == 0) {       /* inside, on the plate */
-                p = rb_v(rb_range(&rng, -0.79, -0.21), rb_range(&rng, -0.79, 0.79),
+                p = rb_v(rt_test_rng_range(&rng, -0.79, -0.21), rt_test_rng_range(&rng, -0.79, 0.79),
                          -0.5);
-                o = rb_v(rb_range(&rng, -0.95, 0.95), rb_range(&rng, -0.95, 0.95),
-                         rb_range(&rng, -0.45, 0.95));
+                o = rb_v(rt_test_rng_range(&rng, -0.95, 0.95), rt_test_rng_range(&rng, -0.95, 0.95),
+                         rt_test_rng_range(&rng, -0.45, 0.95));
                 light = light_in, color = in_color;
             } else {                /* outside, on the floor */
                 light = light_out, color = out_color;
                 for (;;) {
-                    p = rb_v(rb_range(&rng, -7.9, 7.9), rb_range(&rng, -7.9, 7.9),
+                    p = rb_v(rt_test_rng_range(&rng, -7.9, 7.9), rt_test_rng_range(&rng, -7.9, 7.9),
                              -1.5);
                     rt_vec3 up = random_unit(&rng);
                     if (up.z < 0.05)
                         continue;
-                    o = rb_add(p, rb_scale(up, rb_range(&rng, 0.3, 3)));
+                    o = rb_add(p, rb_scale(up, rt_test_rng_range(&rng, 0.3, 3)));
                     double s0, s1;
                     int plane;
                     if (glass_clip(&big, o, rb_sub(p, o), &s0, &s1, &plane) &&
