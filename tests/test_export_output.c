@@ -324,6 +324,7 @@ END_TEST
 static int saving(const char *dir)
 {
     char *names = rt_test_dir_names(dir);
+    ck_assert_ptr_nonnull(names);
     const char *temp = strstr(names, ".rt-save-");
     char path[4096];
     if (temp != NULL)

@@ -260,6 +260,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
         free(path);
     }
     char *listing = rt_test_dir_names(dir);
+    ck_assert_ptr_nonnull(listing);
     /* every file is larger than 100 bytes: a 100-byte limit fails each
      * write; then one that lets the small depth CSV through */
     rlim_t limits[2] = {100, 1024};
@@ -281,6 +282,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
             free(path);
         }
         char *names = rt_test_dir_names(dir);
+        ck_assert_ptr_nonnull(names);
         ck_assert_msg(strcmp(names, listing) == 0,
                       "the directory holds `%s`, was `%s`", names, listing);
         free(names);

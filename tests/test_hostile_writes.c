@@ -176,6 +176,7 @@ START_TEST(save_to_the_longest_file_name_works)
     rt_error error;
     rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
     char *names = rt_test_dir_names(dir);
+    ck_assert_ptr_nonnull(names);
     rt_image_release(&image);
     free(path);
     rt_test_remove_dir(dir);

@@ -20,6 +20,10 @@
  */
 typedef int (*rt_test_job)(void *arg, char *note, size_t size);
 
+/* The user and group "nobody" on Debian and most systems: what a job that
+ * runs as root becomes to lose its privileges. */
+#define RT_TEST_NOBODY 65534
+
 typedef struct rt_test_child {
     pid_t pid;              /* -1 when fork or pipe failed */
     int note_fd;            /* the read end of the note's pipe */

@@ -6,6 +6,7 @@
 #include <check.h>
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -120,6 +121,41 @@ void rt_test_write_file(const char *path, const char *text)
     rt_test_write_bytes(path, text, strlen(text));
 }
 
+int rt_test_file_holds(const char *path, const void *data, size_t size)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return 0;
+    const unsigned char *expected = data;
+    unsigned char chunk[65536];
+    size_t seen = 0;
+    int same = 1;
+    ssize_t n;
+    while (same && (n = read(fd, chunk, sizeof chunk)) > 0) {
+        same = seen + (size_t)n <= size &&
+               memcmp(chunk, expected + seen, (size_t)n) == 0;
+        seen += (size_t)n;
+    }
+    close(fd);
+    return same && seen == size;
+}
+
+unsigned rt_test_file_kind(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0 ? (unsigned)(st.st_mode & S_IFMT) : 0;
+}
+
+void rt_test_assert_link(const char *path, const char *target)
+{
+    char text[PATH_MAX];
+    ssize_t n = readlink(path, text, sizeof text - 1);
+    ck_assert_msg(n >= 0, "%s is no longer a symbolic link", path);
+    text[n] = '\0';
+    ck_assert_msg(strcmp(text, target) == 0,
+                  "%s now points at `%s`, was `%s`", path, text, target);
+}
+
 static int by_name(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
@@ -128,32 +164,41 @@ static int by_name(const void *a, const void *b)
 char *rt_test_dir_names(const char *dir)
 {
     DIR *d = opendir(dir);
-    ck_assert_msg(d != NULL, "%s: %s", dir, strerror(errno));
-    char **names = NULL;
+    if (d == NULL)
+        return NULL;
+    char **names = NULL, *out = NULL;
     size_t count = 0, capacity = 0, length = 1;
+    int failed = 0;
     struct dirent *entry;
-    while ((entry = readdir(d)) != NULL) {
+    while (!failed && (entry = readdir(d)) != NULL) {
         if (!strcmp(entry->d_name, ".") || !strcmp(entry->d_name, ".."))
             continue;
         if (count == capacity) {
             capacity = capacity ? 2 * capacity : 16;
-            names = realloc(names, capacity * sizeof *names);
-            ck_assert_ptr_nonnull(names);
+            char **grown = realloc(names, capacity * sizeof *names);
+            failed = grown == NULL;
+            if (failed)
+                break;
+            names = grown;
         }
         names[count] = strdup(entry->d_name);
-        ck_assert_ptr_nonnull(names[count]);
-        length += strlen(names[count++]) + 1;
+        failed = names[count] == NULL;
+        if (!failed)
+            length += strlen(names[count++]) + 1;
     }
     closedir(d);
     if (count > 0)
         qsort(names, count, sizeof *names, by_name);
-    char *out = malloc(length);
-    ck_assert_ptr_nonnull(out);
-    out[0] = '\0';
+    if (!failed)
+        out = malloc(length);
+    if (out != NULL)
+        out[0] = '\0';
     for (size_t i = 0; i < count; i++) {
-        if (i)
-            strcat(out, " ");
-        strcat(out, names[i]);
+        if (out != NULL) {
+            if (i)
+                strcat(out, " ");
+            strcat(out, names[i]);
+        }
         free(names[i]);
     }
     free(names);
@@ -163,6 +208,8 @@ char *rt_test_dir_names(const char *dir)
 void rt_test_assert_dir_holds(const char *dir, const char *expected)
 {
     char *names = rt_test_dir_names(dir);
+    ck_assert_msg(names != NULL, "%s cannot be read: %s", dir,
+                  strerror(errno));
     ck_assert_msg(strcmp(names, expected) == 0,
                   "%s holds `%s`, expected `%s` (a temporary file left, or "
                   "something created or replaced?)", dir, names, expected);

@@ -2,9 +2,9 @@
  * files.h - the files and folders of a test: a fresh folder of its own and
  * its removal, paths in it (a value, a malloc'd string, or one of a few
  * static buffers), whole files read and written, and what a folder holds.
- * Part of the support library (tests/support/).  Every function fails the
- * test (Check) when it cannot do its job, except rt_test_remove_dir, which
- * does what it can, so it is safe in a forked child.
+ * Part of the support library (tests/support/).  The functions fail the
+ * test (Check) when they cannot do their job, except those that say they
+ * are safe in a forked child.
  */
 #ifndef RAYTRACE_TEST_FILES_H
 #define RAYTRACE_TEST_FILES_H
@@ -17,7 +17,8 @@
 char *rt_test_temp_dir(void);
 
 /* Removes `dir` and everything in it (restoring the permissions a test took
- * away first), then frees `dir`. */
+ * away first), then frees `dir`; does what it can (safe in a forked
+ * child). */
 void rt_test_remove_dir(char *dir);
 
 /* A path as a value, for a test that holds many at a time. */
@@ -45,8 +46,20 @@ char *rt_test_read_file(const char *path, size_t *size);
 void rt_test_write_bytes(const char *path, const void *data, size_t size);
 void rt_test_write_file(const char *path, const char *text);
 
+/* Non-zero when the file at `path` holds exactly the `size` bytes `data`.
+ * Calls no Check function (safe in a forked child). */
+int rt_test_file_holds(const char *path, const void *data, size_t size);
+
+/* The type bits (S_IFREG, S_IFIFO...) of what `path` names, the last
+ * component not followed (lstat); 0 when nothing is there. */
+unsigned rt_test_file_kind(const char *path);
+
+/* Fails the test unless `path` is a symbolic link whose text is `target`. */
+void rt_test_assert_link(const char *path, const char *target);
+
 /* The names in `dir` other than . and .. (hidden ones too), sorted and
- * joined by spaces; malloc'd. */
+ * joined by spaces; malloc'd; NULL when the folder cannot be read.  Calls
+ * no Check function (safe in a forked child). */
 char *rt_test_dir_names(const char *dir);
 
 /* Fails the test unless `dir` holds exactly `expected` (rt_test_dir_names'

@@ -120,6 +120,32 @@ rt_test_bytes rt_test_encode(const rt_image *image, rt_image_format format)
     return b;
 }
 
+void rt_test_save_ok(const char *path, const rt_image *image,
+                     rt_image_format format)
+{
+    rt_error error = {0};
+    rt_status status = rt_image_save(path, image, format, &error);
+    ck_assert_msg(status == RT_OK, "saving to %s returned %s: %s", path,
+                  rt_status_string(status), error.message);
+}
+
+void rt_test_save_refused(const char *path, const char *reason,
+                          rt_error *error)
+{
+    rt_image image = rt_test_pattern(6, 4);
+    memset(error, 0, sizeof *error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, error);
+    rt_image_release(&image);
+    ck_assert_msg(status == RT_ERR_IO, "saving to %s returned %s, expected "
+                  "an input/output error", path, rt_status_string(status));
+    ck_assert_int_eq(error->status, RT_ERR_IO);
+    ck_assert_msg(strstr(error->message, path) != NULL,
+                  "the message does not name %s: %s", path, error->message);
+    ck_assert_msg(strstr(error->message, reason) != NULL,
+                  "the message does not say `%s`: %s", reason,
+                  error->message);
+}
+
 const char rt_test_previous_ppm[sizeof RT_TEST_PREVIOUS_PPM] =
     RT_TEST_PREVIOUS_PPM;
 

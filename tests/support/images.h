@@ -52,6 +52,16 @@ int rt_test_bytes_add(void *user, const void *data, size_t size);
 /* The bytes rt_image_write_to writes for `image` in `format`. */
 rt_test_bytes rt_test_encode(const rt_image *image, rt_image_format format);
 
+/* Saves `image` at `path` (rt_image_save); fails the test, with the
+ * status and message, unless it succeeds. */
+void rt_test_save_ok(const char *path, const rt_image *image,
+                     rt_image_format format);
+
+/* Saves a small image at `path`, which must fail with RT_ERR_IO and a
+ * message (in *error) that names `path` and says `reason`. */
+void rt_test_save_refused(const char *path, const char *reason,
+                          rt_error *error);
+
 /* A PPM file that is recognisably "the previous one", for the tests of
  * saves that must leave it as it was (sizeof gives its length + 1). */
 #define RT_TEST_PREVIOUS_PPM "P3\n1 1\n255\n1 2 3\n"
