@@ -4,6 +4,12 @@
 # docs/robustness.md.
 add_library(raytrace_robust STATIC
   robust/cases.c
+  robust/cases_camera.c
+  robust/cases_glass.c
+  robust/cases_invariance.c
+  robust/cases_shadows.c
+  robust/cases_special.c
+  robust/cases_watertight.c
   robust/engine.c
   robust/scenes.c)
 # The cases use the support library's generator, probe and children.
