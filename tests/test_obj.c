@@ -40,18 +40,6 @@ static rt_scene *obj(const char *text)
     return scene;
 }
 
-static rt_scene *obj_file(const char *relative)
-{
-    rt_scene *scene = NULL;
-    rt_error error;
-    memset(&error, 0, sizeof error);
-    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
-                                     &error);
-    ck_assert_msg(status == RT_OK, "%s did not load: %s", relative,
-                  error.message);
-    return scene;
-}
-
 /* Refuses `text` with `status`, at (line, column), with a message that
  * holds `words`. */
 static void refused(const char *text, rt_status status, int line, int column,
@@ -343,7 +331,7 @@ static void material_is(const rt_scene *scene, int facet, int r, int g,
 
 START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
 {
-    rt_scene *scene = obj_file("tests/data/obj/materials.obj");
+    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/materials.obj");
     ck_assert_int_eq(facet_count(scene), 14);
     /* Kd 1 0 0, illum 1: colour only. */
     material_is(scene, 0, 255, 0, 0, 0, 0, 1, 1);
@@ -369,7 +357,7 @@ END_TEST
 
 START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
 {
-    rt_scene *scene = obj_file("tests/data/obj/missing-mtl.obj");
+    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/missing-mtl.obj");
     ck_assert_int_eq(facet_count(scene), 1);
     material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "material library "
@@ -385,13 +373,13 @@ END_TEST
 
 START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
 {
-    rt_scene *scene = obj_file("tests/data/obj/spaced-library.obj");
+    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 0);
     rt_scene_destroy(scene);
-    scene = obj_file("tests/data/obj/escaped-library.obj");
+    scene = rt_test_load_source_scene("tests/data/obj/escaped-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 1);
@@ -666,7 +654,7 @@ static int is_background(const rt_image *image, int x, int y,
 
 START_TEST(a_cube_renders_framed_with_its_red_top_lit)
 {
-    rt_scene *scene = obj_file("tests/data/obj/cube.obj");
+    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/cube.obj");
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 12);
@@ -704,7 +692,7 @@ START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
     static const char *const files[] = {"tests/data/obj/cube.obj",
                                         "tests/data/obj/materials.obj"};
     for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        rt_scene *scene = obj_file(files[i]);
+        rt_scene *scene = rt_test_load_source_scene(files[i]);
         rt_test_bytes b = {NULL, 0, 0};
         rt_error error;
         unsigned dropped = 0;

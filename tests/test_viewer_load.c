@@ -31,7 +31,7 @@
 #include <SDL.h>
 
 #include "testutil.h"
-#include "view_app.h"
+#include "viewer.h"
 #include "view_load.h"
 #include "view_scene.h"
 
@@ -134,20 +134,12 @@ static rt_status cancellable_load(const char *path,
 
 static view_app *open_app(view_load_func load, int watch)
 {
-    setenv("SDL_VIDEODRIVER", "dummy", 0);
-    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
-                  SDL_GetError());
     view_app_options options;
-    view_app_options_init(&options);
-    options.window_flags = VIEW_WINDOW_SOFTWARE;
+    rt_test_view_app_options(&options);
     options.watch = watch;
     options.load_scene = load;
-    char error[256];
-    view_app *app = view_app_create(&options, error, sizeof error);
-    ck_assert_msg(app != NULL, "%s", error);
-    return app;
+    return rt_test_view_app_open(&options);
 }
-
 static void push_key(SDL_Keycode key)
 {
     SDL_Event event;
@@ -230,8 +222,7 @@ START_TEST(a_load_runs_on_a_worker_while_the_window_keeps_its_picture)
     ck_assert_ptr_ne(view_app_session(app), session);
     ck_assert(shows_background(finished_image(app), 200, 10, 10));
     ck_assert(strstr(view_app_title(app), "loading") == NULL);
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     gate_close();
     remove("viewer-load-a.scn");
     remove("viewer-load-b.scn");
@@ -249,8 +240,7 @@ START_TEST(a_quit_during_a_load_blocked_in_read_does_not_wait_for_it)
     push_quit();
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 1);    /* never loaded */
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     /* Quit and destroy have returned with the loader still in read():
      * neither waited for it; and its load was told to stop. */
     ck_assert(!atomic_load(&gate.returned));
@@ -280,8 +270,7 @@ START_TEST(a_new_load_cancels_the_one_under_way)
     ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), 10, 200, 10));
     ck_assert_str_eq(view_app_message(app), "");
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     gate_close();
     remove("viewer-load-slow.scn");
     remove("viewer-load-next.scn");
@@ -305,8 +294,7 @@ START_TEST(a_termination_signal_during_a_blocked_load_ends_the_loop)
     ck_assert_int_eq(raise(SIGTERM), 0);   /* pending on this thread */
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 128 + SIGTERM);
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     ck_assert(!atomic_load(&gate.returned));
     gate_release('x');
     ck_assert(wait_for(&gate.left));
@@ -346,8 +334,7 @@ START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)
                   "%s", view_app_title(app));
     ck_assert_ptr_eq(view_app_session(app), session);
     ck_assert(shows_background(view_session_image(session), 30, 30, 60));
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     /* A worker blocked opening the FIFO is let through by a writer that
      * opens and closes it (the load then fails on an empty file); one that
      * refused it is gone already. */

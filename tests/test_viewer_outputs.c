@@ -18,31 +18,18 @@
 #include <SDL.h>
 
 #include "testutil.h"
-#include "view_app.h"
-#include "view_session.h"
-
-/* Longest a test waits for a render before failing (a guard, not a
- * measure: a render here takes milliseconds). */
-#define WAIT_SECONDS 60.0
+#include "viewer.h"
 
 static view_app *open_app(const char *output)
 {
-    setenv("SDL_VIDEODRIVER", "dummy", 0);
-    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
-                  SDL_GetError());
     view_app_options options;
-    view_app_options_init(&options);
+    rt_test_view_app_options(&options);
     options.format = RT_IMAGE_P6;
     options.output = output;
-    options.window_flags = VIEW_WINDOW_SOFTWARE;
     options.render.width = 32;
     options.render.height = 24;
-    char error[256];
-    view_app *app = view_app_create(&options, error, sizeof error);
-    ck_assert_msg(app != NULL, "%s", error);
-    return app;
+    return rt_test_view_app_open(&options);
 }
-
 /* Opens `path` in a new app saving to `output`, and waits for the whole
  * image (so that S goes to -o, not to a partial name). */
 static view_app *render(const char *path, const char *output)
@@ -50,23 +37,8 @@ static view_app *render(const char *path, const char *output)
     view_app *app = open_app(output);
     ck_assert_msg(view_app_open(app, path) && view_app_wait_load(app), "%s",
                   view_app_message(app));
-    view_progress progress;
-    Uint64 deadline = SDL_GetTicks64() + (Uint64)(WAIT_SECONDS * 1000);
-    do {
-        view_session_get_progress(view_app_session(app), &progress);
-        ck_assert_msg(SDL_GetTicks64() < deadline,
-                      "the render did not finish");
-        if (progress.state == VIEW_RENDERING)
-            SDL_Delay(2);
-    } while (progress.state == VIEW_RENDERING);
-    ck_assert_int_eq(progress.state, VIEW_DONE);
+    ck_assert_int_eq(rt_test_view_wait(view_app_session(app)), VIEW_DONE);
     return app;
-}
-
-static void close_app(view_app *app)
-{
-    view_app_destroy(app);
-    SDL_Quit();
 }
 
 static void assert_same_file_text(const char *path, const char *text)
@@ -101,7 +73,7 @@ START_TEST(save_refuses_an_output_that_is_the_scene)
                  outputs[i], scene);
         ck_assert_str_eq(view_app_message(app), expected);
         ck_assert_ptr_nonnull(strstr(view_app_title(app), "refusing"));
-        close_app(app);
+        rt_test_view_app_close(app);
         assert_same_file_text(scene, text);
     }
     /* an output that is no input: saved as before */
@@ -110,7 +82,7 @@ START_TEST(save_refuses_an_output_that_is_the_scene)
     ck_assert(view_app_save(app, path, sizeof path));
     ck_assert_str_eq(path, rt_test_in_dir(dir, "out.ppm"));
     ck_assert_str_eq(view_app_message(app), "");
-    close_app(app);
+    rt_test_view_app_close(app);
     rt_image saved;
     ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &saved, NULL),
                      RT_OK);
@@ -140,7 +112,7 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
     ck_assert_msg(strstr(view_app_message(app), "cube.mtl, a file the scene "
                                                 "read (the same file)"),
                   "%s", view_app_message(app));
-    close_app(app);
+    rt_test_view_app_close(app);
     assert_same_file_text(library, mtl);
     assert_same_file_text(scene, obj);
     free(obj);

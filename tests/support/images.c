@@ -5,6 +5,7 @@
 
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,6 +57,24 @@ long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff)
     if (max_diff)
         *max_diff = worst;
     return count;
+}
+
+void rt_test_assert_same_image(const rt_image *actual,
+                               const rt_image *expected, const char *name)
+{
+    int max_diff;
+    long differ = rt_test_image_diff(actual, expected, &max_diff);
+    if (differ != 0) {
+        char path[256];
+        snprintf(path, sizeof path, "%s-actual.ppm", name);
+        rt_image_save(path, actual, RT_IMAGE_P6, NULL);
+        snprintf(path, sizeof path, "%s-expected.ppm", name);
+        rt_image_save(path, expected, RT_IMAGE_P6, NULL);
+    }
+    ck_assert_msg(differ == 0,
+                  "%s: %ld pixels differ (by up to %d), images written to "
+                  "%s-*.ppm",
+                  name, differ, max_diff, name);
 }
 
 void rt_test_assert_color(rt_color c, double r, double g, double b,

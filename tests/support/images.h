@@ -26,6 +26,11 @@ rt_image rt_test_render(const rt_scene *scene, int max_depth, int threads);
  * largest channel difference (through *max_diff when not NULL). */
 long rt_test_image_diff(const rt_image *a, const rt_image *b, int *max_diff);
 
+/* Fails the test when the two images differ, after writing both beside
+ * the suite as <name>-actual.ppm and <name>-expected.ppm. */
+void rt_test_assert_same_image(const rt_image *actual,
+                               const rt_image *expected, const char *name);
+
 /* Fails the test unless every channel of `c` is within `tol` of (r, g, b);
  * `what` names the colour in the message. */
 void rt_test_assert_color(rt_color c, double r, double g, double b,

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "suite.h"
+
 const char rt_test_small_scene[] =
     "0 0 10\n"
     "0 0 5 4 0 5 40 30\n"
@@ -36,6 +38,18 @@ rt_scene *rt_test_scene_from_string(const char *text)
     rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
                                       &error);
     ck_assert_msg(status == RT_OK, "scene did not load: %s", error.message);
+    return scene;
+}
+
+rt_scene *rt_test_load_source_scene(const char *relative)
+{
+    rt_scene *scene = NULL;
+    rt_error error;
+    memset(&error, 0, sizeof error);
+    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
+                                     &error);
+    ck_assert_msg(status == RT_OK, "%s did not load: %s", relative,
+                  error.message);
     return scene;
 }
 

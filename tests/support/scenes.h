@@ -25,6 +25,10 @@ extern const char rt_test_centred_facet_scene[];
  * message if it does not load. */
 rt_scene *rt_test_scene_from_string(const char *text);
 
+/* Loads the project's file `relative` (scenes/cubes.scn...); fails the
+ * test, naming it, if it does not load. */
+rt_scene *rt_test_load_source_scene(const char *relative);
+
 /* Parses `text` (named hostile.scn), which must be refused: no scene, the
  * error's status the one returned, a message; returns the status. */
 rt_status rt_test_parse_refused(const char *text, size_t length,
