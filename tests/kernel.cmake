@@ -7,5 +7,8 @@ target_include_directories(raytrace_test_kernel PRIVATE
 raytrace_add_shared_test(test_kernel)
 
 # The camera-ray packets (src/kernel/packet_impl.h) against the scalar
-# loops: scenes built in memory to stress the tile and shadow culls.
+# loops: scenes built in memory (support/spec.h) to stress the tile and
+# shadow culls; the exact geometry (grids, telephoto, a far eye) in
+# test_packets_edges.
 raytrace_add_suite(test_packets INTERNAL)
+raytrace_add_suite(test_packets_edges INTERNAL)
