@@ -2,6 +2,9 @@
 # materials, the automatic camera, refusals.  Included from
 # tests/CMakeLists.txt, which defines raytrace_add_suite().
 raytrace_add_suite(test_obj)
+# What the reader gives a render: the automatic camera, the view options,
+# renders (tests/test_obj_view.c).
+raytrace_add_suite(test_obj_view)
 # The files an OBJ names: the resolver's rule, the budget, each file read
 # once, what is never quoted (tests/test_obj_files.c).
 raytrace_add_suite(test_obj_files)

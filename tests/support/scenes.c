@@ -53,6 +53,19 @@ rt_scene *rt_test_load_source_scene(const char *relative)
     return scene;
 }
 
+rt_status rt_test_parse_obj(const char *text, const rt_load_options *given,
+                            rt_scene **scene, rt_error *error)
+{
+    rt_load_options options;
+    if (given != NULL)
+        options = *given;
+    else
+        rt_load_options_init(&options);
+    options.format = RT_SCENE_FORMAT_OBJ;
+    return rt_scene_parse_with(text, strlen(text), NULL, &options, scene,
+                               error);
+}
+
 rt_status rt_test_parse_refused(const char *text, size_t length,
                                 rt_error *error)
 {

@@ -29,6 +29,12 @@ rt_scene *rt_test_scene_from_string(const char *text);
  * test, naming it, if it does not load. */
 rt_scene *rt_test_load_source_scene(const char *relative);
 
+/* Parses an OBJ held in a C string with `given` (NULL: the defaults), its
+ * format set to OBJ; no name, so no .mtl is read unless the options'
+ * resolver serves one.  The loader's status. */
+rt_status rt_test_parse_obj(const char *text, const rt_load_options *given,
+                            rt_scene **scene, rt_error *error);
+
 /* Parses `text` (named hostile.scn), which must be refused: no scene, the
  * error's status the one returned, a message; returns the status. */
 rt_status rt_test_parse_refused(const char *text, size_t length,
