@@ -88,7 +88,8 @@ START_TEST(options_of_size_zero_or_too_large_are_refused)
     rt_load_options load;
     memset(&load, 0, sizeof load);
     rt_scene *loaded = (rt_scene *)&load;       /* must become NULL */
-    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene, strlen(rt_test_centred_facet_scene),
+    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
+                                         strlen(rt_test_centred_facet_scene),
                                          "a.scn", &load, &loaded, &error),
                      RT_ERR_ARGUMENT);
     ck_assert_ptr_null(loaded);
@@ -107,7 +108,8 @@ START_TEST(old_load_options_read_only_their_fields)
     load.fov = -1.0;                    /* refused if it were read */
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene, strlen(rt_test_centred_facet_scene),
+    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
+                                         strlen(rt_test_centred_facet_scene),
                                          "a.scn", &load, &scene, &error),
                      RT_OK);
     rt_scene_destroy(scene);

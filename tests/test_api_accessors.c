@@ -29,7 +29,8 @@ static rt_scene *scene;
 
 static void setup(void)
 {
-    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene, strlen(rt_test_centred_facet_scene), NULL,
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene), NULL,
                                      &scene, NULL), RT_OK);
 }
 

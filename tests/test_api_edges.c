@@ -31,7 +31,8 @@ static FILE *sink_file;
 
 static void setup(void)
 {
-    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene, strlen(rt_test_centred_facet_scene), NULL,
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene), NULL,
                                      &scene, NULL), RT_OK);
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     sink_file = fopen("/dev/null", "wb");
@@ -171,7 +172,9 @@ static rt_status save_view(rt_image view, rt_error *error)
       rt_scene_create(&(rt_scene_desc){0}, NULL, error))                     \
     X(n37, RT_ERR_ARGUMENT, rt_scene_parse(NULL, 5, NULL, &out_scene, error))\
     X(n38, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse(rt_test_centred_facet_scene, strlen(rt_test_centred_facet_scene), NULL, NULL, error))  \
+      rt_scene_parse(rt_test_centred_facet_scene,                            \
+                     strlen(rt_test_centred_facet_scene), NULL, NULL,        \
+                     error))                                                 \
     X(n39, RT_ERR_ARGUMENT, rt_scene_load(NULL, &out_scene, error))          \
     X(n40, RT_ERR_ARGUMENT, rt_scene_load("x.scn", NULL, error))             \
     X(n41, RT_ERR_ARGUMENT,                                                  \
@@ -182,7 +185,8 @@ static rt_status save_view(rt_image view, rt_error *error)
     X(n44, RT_ERR_ARGUMENT,                                                  \
       rt_scene_parse_with(NULL, 5, "a.obj", NULL, &out_scene, error))        \
     X(n45, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse_with(rt_test_centred_facet_scene, 5, NULL, NULL, NULL, error))           \
+      rt_scene_parse_with(rt_test_centred_facet_scene, 5, NULL, NULL, NULL,  \
+                          error))                                            \
     X(n46, RT_ERR_ARGUMENT,                                                  \
       rt_scene_load_with(NULL, NULL, &out_scene, error))                     \
     X(n47, RT_ERR_ARGUMENT, rt_scene_load_with("x.scn", NULL, NULL, error))  \

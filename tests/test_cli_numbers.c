@@ -278,7 +278,8 @@ START_TEST(values_the_scene_format_takes_render)
         ck_assert_str_eq(r.out, "out.ppm\n");
         rt_test_output_free(&r);
         rt_image image;
-        ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &image, NULL),
+        ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &image,
+                                     NULL),
                          RT_OK);
         ck_assert_int_eq(image.width, 16);
         ck_assert_int_eq(image.height, 12);

@@ -89,7 +89,8 @@ static void scene_with_links(const char *dir)
 {
     copy_in(dir, "scenes/cubes.scn", "s.scn");
     ck_assert_int_eq(symlink("s.scn", rt_test_in_dir(dir, "link.scn")), 0);
-    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"), rt_test_in_dir(dir, "hard.scn")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"),
+                          rt_test_in_dir(dir, "hard.scn")), 0);
 }
 
 /* Where the output's name goes in assert_every_name_refused's args. */
@@ -223,7 +224,8 @@ START_TEST(export_refuses_the_material_library_its_obj_read)
 {
     char *dir = rt_test_temp_dir();
     write_obj(dir);
-    ck_assert_int_eq(link(rt_test_in_dir(dir, "m.mtl"), rt_test_in_dir(dir, "hard.mtl")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "m.mtl"),
+                          rt_test_in_dir(dir, "hard.mtl")), 0);
     const char *names[] = {"m.mtl", "./m.mtl", "hard.mtl"};
     for (size_t i = 0; i < 3; i++) {
         const char *args[] = {"m.obj", "--format", "p6", "-o", names[i],
@@ -449,8 +451,8 @@ START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
     rt_test_setup setup = {NULL, NULL, rt_test_in_dir(dir, "tmp")};
     rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, &setup);
     /* the output was checked before the render: its folder is there */
-    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "), "no progress line: %s",
-                  s.err ? s.err : "");
+    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
+                  "no progress line: %s", s.err ? s.err : "");
     ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
     ck_assert_int_eq(rmdir(rt_test_in_dir(dir, "sub")), 0);
     ck_assert_int_eq(kill(s.pid, SIGCONT), 0);
@@ -462,7 +464,8 @@ START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
     ck_assert_str_eq(r.out, "");
     char *kept = kept_name(r.err, "rt-export");
     char prefix[4200];
-    snprintf(prefix, sizeof prefix, "%s/out.rescue-", rt_test_in_dir(dir, "tmp"));
+    snprintf(prefix, sizeof prefix, "%s/out.rescue-",
+             rt_test_in_dir(dir, "tmp"));
     ck_assert_msg(strncmp(kept, prefix, strlen(prefix)) == 0 &&
                       strlen(kept) == strlen(prefix) + 6 + 4 &&
                       strcmp(kept + strlen(kept) - 4, ".ppm") == 0,
@@ -482,11 +485,12 @@ START_TEST(export_keeps_the_image_when_its_output_becomes_the_scene)
     const char *args[] = {"s.scn", SLOW, "--progress", "--format", "png",
                           "-o", "out.png", NULL};
     rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, NULL);
-    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "), "no progress line: %s",
-                  s.err ? s.err : "");
+    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
+                  "no progress line: %s", s.err ? s.err : "");
     ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
     /* out.png is now the scene itself, under another name */
-    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"), rt_test_in_dir(dir, "out.png")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"),
+                          rt_test_in_dir(dir, "out.png")), 0);
     ck_assert_int_eq(kill(s.pid, SIGCONT), 0);
     rt_test_output r = rt_test_finish(&s);
     ck_assert_int_eq(r.code, 1);
@@ -528,7 +532,8 @@ START_TEST(export_keeps_the_image_a_full_device_did_not_take)
     for (size_t i = 0; i < 2; i++) {
         const char *args[] = {cubes(), "--size", "64x48", "--format", "p3",
                               "-q", "-o", cases[i].output, NULL};
-        rt_test_setup setup = {NULL, cases[i].stdout_path, rt_test_in_dir(dir, "tmp")};
+        rt_test_setup setup = {NULL, cases[i].stdout_path,
+                               rt_test_in_dir(dir, "tmp")};
         rt_test_output r = rt_test_run_with(dir, RT_EXPORT_PATH, args, &setup);
         ck_assert_int_eq(r.code, 1);
         ck_assert_msg(strncmp(r.err, cases[i].failure,
@@ -592,5 +597,5 @@ static Suite *sources_suite(void)
 int main(int argc, char **argv)
 {
     return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite,
-                             "test_cli_outputs");
+                                     "test_cli_outputs");
 }

@@ -209,8 +209,8 @@ START_TEST(viewer_names_a_total_internal_reflection_the_t_ct_term)
     write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0", "1");
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_load_with(rt_test_in_dir(dir, "tir.scn"), NULL, &scene,
-                                        &error), RT_OK);
+    ck_assert_int_eq(rt_scene_load_with(rt_test_in_dir(dir, "tir.scn"), NULL,
+                                        &scene, &error), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     view_explanation e;

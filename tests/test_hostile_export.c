@@ -68,7 +68,8 @@ START_TEST(export_refuses_to_write_over_its_own_scene)
 {
     char *dir = rt_test_temp_dir();
     char *scene = rt_test_join(dir, "scene.scn");
-    rt_test_write_bytes(scene, rt_test_small_scene, strlen(rt_test_small_scene));
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     char *out, *err;
     /* the same file by its name, another spelling, and a symbolic link */
     const char *outputs[] = {"scene.scn", "./scene.scn", "link.scn"};
@@ -104,7 +105,8 @@ START_TEST(export_exit_codes_say_what_went_wrong)
 {
     char *dir = rt_test_temp_dir();
     char *scene = rt_test_join(dir, "scene.scn");
-    rt_test_write_bytes(scene, rt_test_small_scene, strlen(rt_test_small_scene));
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     char *bad = rt_test_join(dir, "bad.scn");
     rt_test_write_bytes(bad, "0 0 10\n0 0 5 4 0 5 8 8\n3\n", 25);
     char *out, *err;
@@ -149,9 +151,11 @@ START_TEST(export_that_cannot_write_keeps_the_previous_image)
 {
     char *dir = rt_test_temp_dir();
     char *scene = rt_test_join(dir, "scene.scn");
-    rt_test_write_bytes(scene, rt_test_small_scene, strlen(rt_test_small_scene));
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     char *image = rt_test_join(dir, "out.ppm");
-    rt_test_write_bytes(image, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(image, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char *out, *err;
     /* the 40 x 30 P3 image is about 10 KB: a 2 KB limit stops it */
     const char *args[] = {"scene.scn", "-o", "out.ppm", "--format", "p3",
@@ -210,7 +214,8 @@ START_TEST(export_killed_mid_render_keeps_the_previous_image)
     rt_test_write_bytes(scene, text, strlen(text));
     free(text);
     char *image = rt_test_join(dir, "out.ppm");
-    rt_test_write_bytes(image, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(image, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char *out, *err;
     const char *args[] = {"slow.scn", "-o", "out.ppm", "-q", NULL};
     int code = run_export(dir, args, 0.3, RLIM_INFINITY, &out, &err);
@@ -238,7 +243,8 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
 #else
     char *dir = rt_test_temp_dir();
     char *scene = rt_test_join(dir, "scene.scn");
-    rt_test_write_bytes(scene, rt_test_small_scene, strlen(rt_test_small_scene));
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     const char *args[] = {"scene.scn", "--size", "16x12", "--runs", "5",
                           "--ref-samples", "16", "--max-samples", "4",
                           "--threads", "1", "-q", NULL};

@@ -141,7 +141,8 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     rt_scene_destroy(scene);
     /* every prefix is refused, with a message, until the last record
      * "0 0 4 255 255 255" has its sixth value; then every prefix loads */
-    size_t complete = (size_t)(strstr(rt_test_small_scene, "0 0 4 255 255 255") -
+    size_t complete = (size_t)(strstr(rt_test_small_scene,
+                                      "0 0 4 255 255 255") -
                                rt_test_small_scene) + strlen("0 0 4 255 255 ");
     for (size_t n = 0; n < length; n++) {
         rt_status status = rt_scene_parse(exact, n, NULL, &scene, &error);
@@ -159,7 +160,8 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     /* a NUL byte: no scene file holds one; the message says the file is
      * binary, at the byte's position */
     static const char nul_inside[] = "0 0 1\0" "0\n";
-    ck_assert_int_eq(rt_test_parse_refused(nul_inside, sizeof nul_inside - 1, &error),
+    ck_assert_int_eq(rt_test_parse_refused(nul_inside, sizeof nul_inside - 1,
+                                           &error),
                      RT_ERR_FORMAT);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:6: expected text, found a NUL byte: the "
@@ -193,21 +195,24 @@ START_TEST(line_of_commas_is_refused_at_the_first_stray_comma)
     ck_assert_ptr_nonnull(text);
     memset(text, ',', length);
     rt_error error;
-    ck_assert_int_eq(rt_test_parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:1: expected a number, found `,`");
     /* values then a million commas: the eleventh value (one more than the
      * longest record holds) is the error, found before the commas are
      * read */
     memcpy(text, "1,2,3,4,5,6,7,8,9,10,11", 23);
-    ck_assert_int_eq(rt_test_parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:22: expected the end of the line, found "
                      "`11`");
     /* a complete observer, then a million commas on the next line */
     memset(text, ',', length);
     memcpy(text, "0,0,0\n1,", 8);
-    ck_assert_int_eq(rt_test_parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:2:3: expected a number, found `,`");
     free(text);
@@ -278,7 +283,7 @@ START_TEST(ppm_header_promising_more_pixels_than_the_file_holds_is_refused_befor
     bounded_parse b = {text, sizeof text - 1, 1, 64u << 20};
     char message[1024];
     int code = rt_test_in_child(parse_with_memory_limit, &b, message,
-                            sizeof message);
+                                sizeof message);
     ck_assert_msg(code == 0,
                   "a 20-byte P3 file made the reader allocate more than "
                   "64 MB: %s", message);
@@ -297,7 +302,7 @@ START_TEST(scene_counts_promising_more_than_the_file_holds_are_refused_before_al
         bounded_parse b = {texts[i], strlen(texts[i]), 0, 16u << 20};
         char message[1024];
         int code = rt_test_in_child(parse_with_memory_limit, &b, message,
-                                sizeof message);
+                                    sizeof message);
         ck_assert_msg(code == 0, "case %zu ran out of 16 MB: %s", i,
                       message);
         ck_assert_msg(strstr(message, "loaded") == NULL, "case %zu: %s", i,

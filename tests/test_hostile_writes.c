@@ -234,10 +234,11 @@ START_TEST(save_that_exceeds_the_file_size_limit_keeps_the_previous_file)
 {
     char *dir = rt_test_temp_dir();
     char *path = rt_test_join(dir, "out.ppm");
-    rt_test_write_bytes(path, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(path, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char message[1024];
     int code = rt_test_in_child(save_with_file_size_limit, dir, message,
-                            sizeof message);
+                                sizeof message);
     check_failed_save(dir, code, message, "File too large");
     free(path);
     rt_test_remove_dir(dir);
@@ -259,7 +260,8 @@ static int save_on_a_full_tmpfs(void *arg, char *message, size_t size)
     char path[PATH_MAX];
     snprintf(path, sizeof path, "%s/out.ppm", dir);
     int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0 || write(fd, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1) !=
+    if (fd < 0 || write(fd, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1) !=
                       (ssize_t)(sizeof rt_test_previous_ppm - 1)) {
         snprintf(message, size, "cannot write the previous file");
         return 2;
@@ -276,7 +278,8 @@ static int save_on_a_full_tmpfs(void *arg, char *message, size_t size)
     size_t n = file ? fread(data, 1, sizeof data, file) : 0;
     if (file)
         fclose(file);
-    if (n != sizeof rt_test_previous_ppm - 1 || memcmp(data, rt_test_previous_ppm, n) != 0) {
+    if (n != sizeof rt_test_previous_ppm - 1 ||
+        memcmp(data, rt_test_previous_ppm, n) != 0) {
         snprintf(message, size, "the previous file was changed: %s", text);
         return 1;
     }
@@ -300,7 +303,7 @@ START_TEST(save_on_a_full_disk_keeps_the_previous_file)
     char *dir = rt_test_temp_dir();
     char message[1024];
     int code = rt_test_in_child(save_on_a_full_tmpfs, dir, message,
-                            sizeof message);
+                                sizeof message);
     rt_test_remove_dir(dir);
     if (code == 3) {
         fprintf(stderr,

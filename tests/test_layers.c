@@ -616,7 +616,8 @@ static void report_circles(report *r, int n, const int *component,
 
 /* Appends "file:line includes target; " for each include of `t`'s files
  * for which `inside(file, target)` holds. */
-static void describe_includes(const tree *t, const int *of, const int *component,
+static void describe_includes(const tree *t, const int *of,
+                              const int *component,
                               int c, char *out, size_t size)
 {
     size_t used = 0;
@@ -807,8 +808,8 @@ static Suite *layers_suite(void)
     suite_add_tcase(s, tree_case);
 
     TCase *rules = tcase_create("the rules");
-    tcase_add_test(rules,
-                   the_rules_refuse_an_upward_include_and_accept_a_downward_one);
+    tcase_add_test(
+        rules, the_rules_refuse_an_upward_include_and_accept_a_downward_one);
     tcase_add_test(rules,
                    a_circle_of_two_files_is_one_component_and_a_chain_is_none);
     suite_add_tcase(s, rules);

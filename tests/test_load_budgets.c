@@ -242,7 +242,8 @@ START_TEST(zero_area_facets_are_left_out_of_a_sphere_with_one_warning)
     rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_gt(info.facet_count, 0);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "facets of zero area left out"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "facets of zero area left out"),
                      1);
     int dropped = 0;
     for (int i = 0; i < info.warning_count; i++) {
@@ -277,7 +278,7 @@ static rt_status with_lights(rt_scene_format format, int count,
     int nff = format == RT_SCENE_FORMAT_NFF;
     rt_test_text t = {0};
     rt_test_text_add(&t, "%s",
-                  nff ? "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
+                     nff ? "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
                         "resolution 8 8\n"
                       : "0 0 10\n0 0 5 4 0 5 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n"
                         "1\n1 2 3 0 255 255 255\n0 0 0\n");
@@ -368,7 +369,8 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
     ck_assert_double_eq(f.n, 1.5);
     ck_assert_int_eq(rt_test_scene_info(scene).transparent_facet_count,
                      rt_test_scene_info(scene).live_facet_count);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "Ks + T = 1e+308 + 1e+308 is "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "Ks + T = 1e+308 + 1e+308 is "
                                            "more than 1"),
                      1);
     rt_scene_destroy(scene);

@@ -35,8 +35,9 @@ static rt_scene *parse_scn(const rt_test_text *t, const char *name)
 static rt_test_text scn_with(int count, const char *(*facet)(int i))
 {
     rt_test_text t = {0};
-    rt_test_text_add(&t, "0 0 10\n0 0 5 4 0 5 16 16\n4\n-1 -1 0\n1 -1 0\n0 1 0\n"
-                  "3 -1 0\n%d\n1 2 3 0 200 100 50\n", count + 1);
+    rt_test_text_add(&t,
+                     "0 0 10\n0 0 5 4 0 5 16 16\n4\n-1 -1 0\n1 -1 0\n0 1 0\n"
+                     "3 -1 0\n%d\n1 2 3 0 200 100 50\n", count + 1);
     for (int i = 0; i < count; i++)
         rt_test_text_add(&t, "%s\n", facet(i));
     rt_test_text_add(&t, "0 0 0\n0 0 8 255 255 255\n");
@@ -203,7 +204,8 @@ static const char *same_facet(int i)
 
 START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
 {
-    rt_test_text once = scn_with(0, same_facet), many = scn_with(10000, same_facet);
+    rt_test_text once = scn_with(0, same_facet),
+                 many = scn_with(10000, same_facet);
     rt_scene *a = parse_scn(&once, "once.scn"), *b = parse_scn(&many,
                                                                "many.scn");
     ck_assert_int_eq(rt_test_scene_info(b).facet_count, 10001);

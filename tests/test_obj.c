@@ -331,23 +331,27 @@ START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
     material_is(scene, 10, 128, 128, 128, 0, 0, 1, 1);
     /* A material no library defines: the default grey, with a warning. */
     material_is(scene, 12, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "material `nowhere` is defined "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "material `nowhere` is defined "
                                           "in no material library"), 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "materials.obj:20:8: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "materials.obj:20:8: warning"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
 
 START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
 {
-    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/missing-mtl.obj");
+    rt_scene *scene =
+        rt_test_load_source_scene("tests/data/obj/missing-mtl.obj");
     ck_assert_int_eq(facet_count(scene), 1);
     material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "material library "
                                           "`no-such-library.mtl` is not "
                                           "read"),
                      1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "missing-mtl.obj:2:8: warning"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "missing-mtl.obj:2:8: warning"),
                      1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "material `red`"), 1);
     rt_scene_destroy(scene);
@@ -356,7 +360,8 @@ END_TEST
 
 START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
 {
-    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
+    rt_scene *scene =
+        rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
@@ -366,7 +371,8 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "escaped-library.obj:2:8: warning: "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "escaped-library.obj:2:8: warning: "
                                           "material library `missing.mtl` "
                                           "is not read"), 1);
     rt_scene_destroy(scene);
@@ -409,7 +415,8 @@ START_TEST(a_file_without_faces_loads_with_a_warning)
 {
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nl 1 2\n");
     ck_assert_int_eq(facet_count(scene), 0);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>: warning: the file has "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "<memory>: warning: the file has "
                                           "no face to draw"), 1);
     rt_scene_destroy(scene);
     scene = obj("");

@@ -34,8 +34,8 @@ static rt_status serve(void *user, const char *scene_name,
     return RT_OK;
 }
 
-static rt_status parse(const rt_test_text *t, const rt_test_text *library, rt_scene **scene,
-                       rt_error *error)
+static rt_status parse(const rt_test_text *t, const rt_test_text *library,
+                       rt_scene **scene, rt_error *error)
 {
     rt_load_options options;
     rt_load_options_init(&options);
@@ -137,7 +137,8 @@ START_TEST(a_face_repeating_two_corners_gives_no_facet_and_one_warning)
     rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_eq(info.facet_count, 0);
     ck_assert_int_eq(info.warning_count, 2);   /* the faces, the picture */
-    ck_assert_int_eq(rt_test_count_warnings(scene, "hostile.obj:6:1: warning: this "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "hostile.obj:6:1: warning: this "
                                           "face has no area"),
                      1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "(and 2 more like it)"), 1);
@@ -192,7 +193,8 @@ START_TEST(a_large_non_convex_face_is_fanned_once_the_budget_is_spent)
     rt_test_text t = {NULL, 0, 0};
     rt_test_text_add(&t, "v %d 0 0\n", 2 * teeth);
     for (int k = teeth - 1; k >= 0; k--)
-        rt_test_text_add(&t, "v %d 6 0\nv %d 6 0\nv %d 1 0\nv %d 1 0\n", 2 * k + 2,
+        rt_test_text_add(&t, "v %d 6 0\nv %d 6 0\nv %d 1 0\nv %d 1 0\n",
+                         2 * k + 2,
             2 * k + 1, 2 * k + 1, 2 * k);
     rt_test_text_add(&t, "v 0 0 0\nf");
     int n = 4 * teeth + 2;
@@ -204,7 +206,8 @@ START_TEST(a_large_non_convex_face_is_fanned_once_the_budget_is_spent)
     ck_assert_int_le(info.facet_count, n - 2);
     ck_assert_int_gt(info.facet_count, n / 2);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "budget for cutting non-convex "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "budget for cutting non-convex "
                                           "polygons"),
                      1);
     rt_scene_destroy(scene);
@@ -230,14 +233,18 @@ START_TEST(warnings_that_could_repeat_per_element_are_said_once_with_a_count)
     ck_assert_int_eq(info.facet_count, 1);
     ck_assert_int_eq(info.warning_count, 5);
     ck_assert_int_eq(rt_test_count_warnings(scene, "has no area"), 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "fewer than 3 distinct corners"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "fewer than 3 distinct corners"),
                      1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "without a file name"), 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "m.mtl:2:4: warning: expected a "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "m.mtl:2:4: warning: expected a "
                                           "number, found `x`"),
                      1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "(and 9999 more like it)"), 4);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "(and 19999 more like it)"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "(and 9999 more like it)"),
+                     4);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "(and 19999 more like it)"),
+                     1);
     rt_scene_destroy(scene);
     free(t.data);
     free(library.data);

@@ -138,7 +138,8 @@ START_TEST(names_leading_out_of_the_folder_get_one_message_whether_or_not_the_fi
              up[0], triangle);
     write_text(f.scene_dir, "scene.obj", text);
     rt_scene *scene = load(f.scene_dir, "scene.obj");
-    ck_assert_int_eq(rt_test_count_warnings(scene, "must lie in the scene's folder"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "must lie in the scene's folder"),
                      3);
     ck_assert_int_eq(rt_test_count_warnings(scene, "Kd"), 0);
     ck_assert_int_eq(rt_test_count_warnings(scene, "root"), 0);
@@ -217,7 +218,7 @@ START_TEST(a_fifo_named_as_a_library_is_refused_without_blocking)
     free(fifo);
     char message[1024];
     int code = rt_test_in_child(resolve_fifo, f.scene_dir, message,
-                            sizeof message);
+                                sizeof message);
     ck_assert_msg(code == 0, "exit %d: %s", code, message);
     ck_assert_ptr_nonnull(strstr(message, "a FIFO, not a regular file"));
     remove_folders(&f);
@@ -268,7 +269,8 @@ START_TEST(names_in_messages_have_their_control_bytes_escaped)
                "f 1 2 3\n");
     rt_scene *scene = load(f.scene_dir, "scene.obj");
     ck_assert_int_eq(rt_test_count_warnings(scene, "\x1b"), 0);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "`\\x1B[31mgone.mtl` is not read"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "`\\x1B[31mgone.mtl` is not read"),
                      1);
     rt_scene_destroy(scene);
     free(scene_name);
@@ -302,7 +304,8 @@ START_TEST(one_library_under_a_thousand_spellings_is_read_once)
     folders f = make_folders();
     write_text(f.scene_dir, "m.mtl", red_library);
     make_link(f.scene_dir, "alias.mtl", "m.mtl");
-    char *m = rt_test_join(f.scene_dir, "m.mtl"), *hard = rt_test_join(f.scene_dir,
+    char *m = rt_test_join(f.scene_dir, "m.mtl"),
+          *hard = rt_test_join(f.scene_dir,
                                                          "hard.mtl");
     ck_assert_int_eq(link(m, hard), 0);
     /* 1,000 spellings: ./ repeated, doubled slashes, the link, the hard
@@ -410,12 +413,14 @@ START_TEST(an_obj_naming_itself_as_its_library_is_read_once_and_not_quoted)
                       RT_OK,
                   "%s", error.message);
     ck_assert_int_eq(c.calls, 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "is this OBJ file itself"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "is this OBJ file itself"),
+                     1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "SECRET"), 0);
     /* `Kd` once, as a statement the OBJ reader does not understand. */
     ck_assert_int_eq(rt_test_count_warnings(scene, "`Kd`"), 1);
     ck_assert_int_eq(facet_color(scene, 0).r, 204);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "material `a` is defined in no"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "material `a` is defined in no"),
                      1);
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
     struct stat st;
@@ -446,7 +451,8 @@ START_TEST(nothing_of_a_library_before_its_first_newmtl_is_quoted)
     ck_assert_int_eq(rt_test_count_warnings(scene, "SECRET"), 0);
     ck_assert_int_eq(rt_test_count_warnings(scene, "root"), 0);
     ck_assert_int_eq(rt_test_count_warnings(scene, "\x1b"), 0);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "notes.mtl:1:1: warning: defines "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "notes.mtl:1:1: warning: defines "
                                           "no material (it has no `newmtl`): "
                                           "its 3 statements are ignored"),
                      1);
@@ -475,7 +481,8 @@ START_TEST(a_usemtl_before_its_mtllib_gets_its_material)
     ck_assert_int_eq(facet_color(scene, 1).r, 204);
     ck_assert_int_eq(facet_color(scene, 2).r, 255);
     ck_assert_int_eq(rt_test_count_warnings(scene, "material `red`"), 0);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "scene.obj:6:8: warning: material "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "scene.obj:6:8: warning: material "
                                           "`nowhere` is defined in no"),
                      1);
     rt_scene_destroy(scene);
@@ -606,7 +613,8 @@ START_TEST(the_obj_corpus_replays_without_fault)
     DIR *dir = opendir(corpus_dir);
     ck_assert_msg(dir != NULL, "%s: %s", corpus_dir, strerror(errno));
     folders f = make_folders();
-    char *name = rt_test_join(f.scene_dir, "fuzz.obj"), *mtl = rt_test_join(f.scene_dir,
+    char *name = rt_test_join(f.scene_dir, "fuzz.obj"),
+          *mtl = rt_test_join(f.scene_dir,
                                                             "m.mtl");
     rt_load_options options;
     rt_load_options_init(&options);
@@ -624,7 +632,8 @@ START_TEST(the_obj_corpus_replays_without_fault)
         char *marker = strstr(text, "\n#mtl\n");
         unlink(mtl);
         if (marker != NULL) {
-            rt_test_write_bytes(mtl, marker + 6, size - (size_t)(marker + 6 - text));
+            rt_test_write_bytes(mtl, marker + 6,
+                                size - (size_t)(marker + 6 - text));
             size = (size_t)(marker - text) + 1;
         }
         rt_scene *scene = (rt_scene *)1;

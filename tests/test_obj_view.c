@@ -52,8 +52,8 @@ static void every_vertex_inside_the_image(const char *text, int width,
     options.height = height;
     rt_scene *scene = NULL;
     rt_error error;
-    ck_assert_msg(rt_test_parse_obj(text, &options, &scene, &error) == RT_OK, "%s",
-                  error.message);
+    ck_assert_msg(rt_test_parse_obj(text, &options, &scene, &error) == RT_OK,
+                  "%s", error.message);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, width > 0 ? width : height > 0 ? height : 512);
@@ -114,7 +114,7 @@ START_TEST(the_view_and_light_options_replace_the_automatic_ones)
     rt_scene *scene = NULL;
     rt_error error;
     ck_assert_int_eq(rt_test_parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                               &options, &scene, &error),
+                                       &options, &scene, &error),
                      RT_OK);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
@@ -176,12 +176,12 @@ START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
         rt_test_bytes b = {NULL, 0, 0};
         rt_error error;
         unsigned dropped = 0;
-        ck_assert_int_eq(rt_scene_write_scn(scene, 1, rt_test_bytes_add, &b, &dropped,
-                                            &error),
+        ck_assert_int_eq(rt_scene_write_scn(scene, 1, rt_test_bytes_add, &b,
+                                            &dropped, &error),
                          RT_OK);
         rt_scene *again = NULL;
-        ck_assert_msg(rt_scene_parse((const char *)b.data, b.size, "converted.scn",
-                                     &again, &error) == RT_OK,
+        ck_assert_msg(rt_scene_parse((const char *)b.data, b.size,
+                                     "converted.scn", &again, &error) == RT_OK,
                       "%s", error.message);
         rt_image direct = rt_test_render(scene, 5, 2);
         rt_image converted = rt_test_render(again, 5, 2);

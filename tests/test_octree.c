@@ -232,7 +232,8 @@ START_TEST(facets_all_in_one_spot_render_identically)
     soup_add(&s, (rt_vec3){-50, -50, -1}, (rt_vec3){50, -50, -1},
              (rt_vec3){0, 50, -1}, 0.3);
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
-                                 c, (rt_vec3){1, 1, 3}, rt_test_memcheck() ? 12 : 48);
+                                 c, (rt_vec3){1, 1, 3},
+                                     rt_test_memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "one spot");
     rt_scene_destroy(scene);
 }
@@ -250,7 +251,8 @@ START_TEST(a_few_facets_spanning_everything_render_identically)
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), 0.0);
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
-                                 (rt_vec3){3, -4, 12}, rt_test_memcheck() ? 12 : 48);
+                                 (rt_vec3){3, -4, 12},
+                                     rt_test_memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "spanning");
     rt_scene_destroy(scene);
 }
@@ -352,7 +354,8 @@ START_TEST(transparency_lights_and_lens_render_identically)
     rt_scene_desc desc = {
         .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
         .screen_right = {0.8, -3, 0.45},
-        .width = rt_test_memcheck() ? 12 : 48, .height = rt_test_memcheck() ? 12 : 48,
+        .width = rt_test_memcheck() ? 12 : 48,
+            .height = rt_test_memcheck() ? 12 : 48,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {30, 40, 50},
@@ -383,7 +386,8 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
     rt_scene_desc desc = {
         .observer = {0, -1e151, 5e150}, .screen_center = {0, 0, 4e150},
         .screen_right = {1e151, 0, 4e150},
-        .width = rt_test_memcheck() ? 8 : 32, .height = rt_test_memcheck() ? 8 : 32,
+        .width = rt_test_memcheck() ? 8 : 32,
+            .height = rt_test_memcheck() ? 8 : 32,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {20, 30, 40},

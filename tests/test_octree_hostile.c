@@ -82,8 +82,8 @@ static rt_scene *big_soup(void)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 20000 : 300000, 16, 16, &scene,
-                                &error),
+    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 20000 : 300000, 16, 16,
+                                &scene, &error),
                      RT_OK);
     return scene;
 }
@@ -285,7 +285,8 @@ START_TEST(a_fan_of_slivers_renders_identically_and_no_ray_tests_it_whole)
 {
     int corners = rt_test_memcheck() ? 3000 : 40000;
     double angle = 0.5;     /* conditions from about 12,000 */
-    rt_scene *scene = sliver_fan_scene(corners, angle, rt_test_memcheck() ? 12 : 64);
+    rt_scene *scene = sliver_fan_scene(corners, angle,
+                                       rt_test_memcheck() ? 12 : 64);
     rt_octree_info info;
     ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, &info),
                      RT_OK);
@@ -316,7 +317,8 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
 {
     rt_scene *soup;
     rt_error error;
-    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 300 : 3000, 8, 8, &soup, &error),
+    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 300 : 3000, 8, 8, &soup,
+                                &error),
                      RT_OK);
     rt_scene_info info;
     rt_scene_get_info(soup, &info);
@@ -343,7 +345,8 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
         mesh_facet(&m, base, base + i, base + i + 1, i % 5 ? 0.0 : 0.6);
     rt_scene *scene = mesh_scene(&m, (rt_vec3){1.0, -4.0, 1.5},
                                  (rt_vec3){0, 0, 0}, 0.45,
-                                 (rt_vec3){-2.5, -3, 4}, rt_test_memcheck() ? 12 : 48);
+                                 (rt_vec3){-2.5, -3, 4},
+                                     rt_test_memcheck() ? 12 : 48);
     rt_octree_info tree;
     ck_assert_int_eq(rt__kernel_d_octree_prepare(scene->kernel, NULL, &tree),
                      RT_OK);
@@ -470,7 +473,8 @@ START_TEST(a_model_far_from_the_coordinates_origin_renders_identically)
 {
     double offsets[] = {0x1p20, 0x1p30, 0x1p36};
     for (int i = 0; i < 3; i++) {
-        rt_scene *scene = offset_grid(16, offsets[i], rt_test_memcheck() ? 12 : 64);
+        rt_scene *scene = offset_grid(16, offsets[i],
+                                      rt_test_memcheck() ? 12 : 64);
         rt_render_stats stats;
         check_identical(scene, RT_PRECISION_DOUBLE, "offset grid", &stats);
         ck_assert_uint_eq(stats.accel_fallbacks, 0);

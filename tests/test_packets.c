@@ -75,8 +75,9 @@ static void random_facets(rt_test_spec *s, int count)
     int start = s->nf;
     if (count >= 6 && uniform(0, 1) < 0.5) {     /* a floor under them */
         double z = uniform(-2, -1);
-        rt_test_spec_quad(s, vec(-4, -4, z), vec(4, -4, z), vec(4, 4, z), vec(-4, 4, z),
-             uniform(0, 1) < 0.5 ? 0.0 : 0.4, 160, 160, 150);
+        rt_test_spec_quad(s, vec(-4, -4, z), vec(4, -4, z), vec(4, 4, z),
+                          vec(-4, 4, z),
+                          uniform(0, 1) < 0.5 ? 0.0 : 0.4, 160, 160, 150);
     }
     while (s->nf - start < count) {
         double k = reflections[below(6)];
@@ -94,8 +95,9 @@ static void random_facets(rt_test_spec *s, int count)
         rt_vec3 centre = random_point(1.8);
         double size = uniform(0.15, 1.8);
         rt_test_spec_triangle(s, add(centre, mul(random_direction(), size)),
-                 add(centre, mul(random_direction(), size)),
-                 add(centre, mul(random_direction(), size)), k, r, g, b);
+                              add(centre, mul(random_direction(), size)),
+                              add(centre, mul(random_direction(), size)), k,
+                              r, g, b);
     }
 }
 
@@ -119,13 +121,15 @@ static void random_camera(rt_test_spec *s, int kind)
         rt_vec3 d = diagonals[below(10)];
         rt_vec3 eye = sub(vec(below(3) - 1, below(3) - 1, below(3) - 1),
                           mul(d, 4));
-        rt_test_spec_aim(s, eye, d, uniform(0, 1) < 0.5 ? vec(0, 0, 1) : up, half_width);
+        rt_test_spec_aim(s, eye, d, uniform(0, 1) < 0.5 ? vec(0, 0, 1) : up,
+                         half_width);
         break;
     }
     case 2: {   /* a wide angle: spans cross the axis planes, some straddle
                    the sign of their axis */
         rt_vec3 eye = mul(random_direction(), uniform(3, 6));
-        rt_test_spec_aim(s, eye, sub(random_point(1), eye), up, uniform(5, 500));
+        rt_test_spec_aim(s, eye, sub(random_point(1), eye), up,
+                         uniform(5, 500));
         break;
     }
     default: {  /* inside the scene: facets all round and behind */
@@ -140,7 +144,7 @@ static void random_lights(rt_test_spec *s, int count)
 {
     for (int i = 0; i < count; i++)
         rt_test_spec_light(s, random_point(4), 80 + below(176), 80 + below(176),
-              80 + below(176));
+                           80 + below(176));
 }
 
 START_TEST(random_scenes_render_identically)
@@ -183,14 +187,15 @@ START_TEST(diagonal_views_render_identically)
                 rt_vec3 c = mul(random_direction(), uniform(2, 4));
                 double size = uniform(0.3, 1.5);
                 rt_test_spec_triangle(s, add(c, mul(random_direction(), size)),
-                         add(c, mul(random_direction(), size)),
-                         add(c, mul(random_direction(), size)),
-                         reflections[below(6)], below(256), below(256),
-                         below(256));
+                                      add(c, mul(random_direction(), size)),
+                                      add(c, mul(random_direction(), size)),
+                                      reflections[below(6)], below(256),
+                                      below(256), below(256));
             }
             random_lights(s, 2);
             rt_test_spec_light(s, vec(0.5, 0.25, 0.125), 200, 200, 200);
-            rt_test_spec_aim(s, vec(0, 0, 0), views[v], vec(0, 0, 1), widths[w]);
+            rt_test_spec_aim(s, vec(0, 0, 0), views[v], vec(0, 0, 1),
+                             widths[w]);
             s->width = rt_test_memcheck() ? 9 : 33;
             s->height = rt_test_memcheck() ? 7 : 25;
             char name[128];
@@ -214,63 +219,77 @@ START_TEST(facets_at_the_eye_render_identically)
     for (int variant = 0; variant < 8; variant++) {
         rt_test_spec *s = rt_test_spec_new();
         /* a backdrop: a wall ahead and a floor */
-        rt_test_spec_quad(s, vec(-6, 8, -3), vec(6, 8, -3), vec(6, 8, 5), vec(-6, 8, 5), 0,
-             200, 190, 170);
-        rt_test_spec_quad(s, vec(-6, -6, -1), vec(6, -6, -1), vec(6, 8, -1), vec(-6, 8, -1),
-             0.5, 120, 140, 160);
+        rt_test_spec_quad(s, vec(-6, 8, -3), vec(6, 8, -3), vec(6, 8, 5),
+                          vec(-6, 8, 5), 0,
+                          200, 190, 170);
+        rt_test_spec_quad(s, vec(-6, -6, -1), vec(6, -6, -1), vec(6, 8, -1),
+                          vec(-6, 8, -1),
+                          0.5, 120, 140, 160);
         const char *what = "";
         switch (variant) {
         case 0:     /* a large facet across the eye plane, beside the eye */
             what = "a facet across the eye plane";
-            rt_test_spec_triangle(s, add(e, vec(-2, -3, -0.5)), add(e, vec(0.5, 4, -0.25)),
-                     add(e, vec(-0.5, 2, 1.5)), 0.25, 250, 60, 60);
+            rt_test_spec_triangle(s, add(e, vec(-2, -3, -0.5)),
+                                  add(e, vec(0.5, 4, -0.25)),
+                                  add(e, vec(-0.5, 2, 1.5)), 0.25, 250, 60, 60);
             break;
         case 1:     /* facets wholly behind the eye, and one across */
             what = "facets behind the eye";
-            rt_test_spec_triangle(s, add(e, vec(-1, -2, -1)), add(e, vec(1, -2, -1)),
-                     add(e, vec(0, -2, 1)), 0, 250, 60, 60);
-            rt_test_spec_triangle(s, add(e, vec(-3, -0.5, -2)), add(e, vec(3, -0.5, -2)),
-                     add(e, vec(0, 1.5, 2)), 0.5, 60, 250, 60);
+            rt_test_spec_triangle(s, add(e, vec(-1, -2, -1)),
+                                  add(e, vec(1, -2, -1)),
+                                  add(e, vec(0, -2, 1)), 0, 250, 60, 60);
+            rt_test_spec_triangle(s, add(e, vec(-3, -0.5, -2)),
+                                  add(e, vec(3, -0.5, -2)),
+                                  add(e, vec(0, 1.5, 2)), 0.5, 60, 250, 60);
             break;
         case 2:     /* tiny facets just in front of the eye */
             what = "facets very near the eye";
             rt_test_spec_triangle(s, add(e, vec(-1e-6, 2e-6, -1e-6)),
-                     add(e, vec(1e-6, 2e-6, -1e-6)),
-                     add(e, vec(0, 2e-6, 1e-6)), 0.25, 250, 60, 60);
+                                  add(e, vec(1e-6, 2e-6, -1e-6)),
+                                  add(e, vec(0, 2e-6, 1e-6)), 0.25, 250, 60,
+                                  60);
             rt_test_spec_triangle(s, add(e, vec(1e-9, 1e-8, 1e-9)),
-                     add(e, vec(3e-9, 1.1e-8, -2e-9)),
-                     add(e, vec(-2e-9, 0.9e-8, 0)), 0, 60, 250, 60);
+                                  add(e, vec(3e-9, 1.1e-8, -2e-9)),
+                                  add(e, vec(-2e-9, 0.9e-8, 0)), 0, 60, 250,
+                                  60);
             break;
         case 3:     /* the eye inside a facet (its plane holds the eye) */
             what = "a facet through the eye";
-            rt_test_spec_triangle(s, add(e, vec(-1, -1, -1)), add(e, vec(2, 0, -0.5)),
-                     add(e, vec(-1, 1, 1.5)), 0.25, 250, 60, 60);
+            rt_test_spec_triangle(s, add(e, vec(-1, -1, -1)),
+                                  add(e, vec(2, 0, -0.5)),
+                                  add(e, vec(-1, 1, 1.5)), 0.25, 250, 60, 60);
             break;
         case 4:     /* a vertex at the eye, an edge pointing at it */
             what = "a vertex at the eye and an edge pointing at it";
-            rt_test_spec_triangle(s, e, add(e, vec(1, 3, 0.5)), add(e, vec(-0.5, 3, 1)), 0,
-                     250, 60, 60);
+            rt_test_spec_triangle(s, e, add(e, vec(1, 3, 0.5)),
+                                  add(e, vec(-0.5, 3, 1)), 0,
+                                  250, 60, 60);
             rt_test_spec_triangle(s, add(e, mul(d, 2)), add(e, mul(d, 4)),
-                     add(e, vec(1, 2, -1)), 0.5, 60, 250, 60);
+                                  add(e, vec(1, 2, -1)), 0.5, 60, 250, 60);
             break;
         case 5:     /* facets seen edge-on: their planes hold the eye */
             what = "facets seen edge-on";
-            rt_test_spec_triangle(s, add(e, vec(-1, 2, 0)), add(e, vec(1, 2, 0)),
-                     add(e, vec(0, 4, 0)), 0, 250, 60, 60);
-            rt_test_spec_triangle(s, add(e, vec(0, 2, -1)), add(e, vec(0, 3, 1)),
-                     add(e, vec(0, 5, 0)), 0.5, 60, 250, 60);
+            rt_test_spec_triangle(s, add(e, vec(-1, 2, 0)),
+                                  add(e, vec(1, 2, 0)),
+                                  add(e, vec(0, 4, 0)), 0, 250, 60, 60);
+            rt_test_spec_triangle(s, add(e, vec(0, 2, -1)),
+                                  add(e, vec(0, 3, 1)),
+                                  add(e, vec(0, 5, 0)), 0.5, 60, 250, 60);
             break;
         case 6:     /* a facet a hair off the eye, almost edge-on */
             what = "a facet a hair from the eye";
-            rt_test_spec_triangle(s, add(e, vec(-1, 1, 1e-13)), add(e, vec(1, 1, 1e-13)),
-                     add(e, vec(0, 4, -1e-12)), 0.25, 250, 60, 60);
-            rt_test_spec_triangle(s, add(e, vec(-2, -2, -2)), add(e, vec(2, -1, 2)),
-                     add(e, vec(0, 1e-12, 0)), 0, 60, 250, 60);
+            rt_test_spec_triangle(s, add(e, vec(-1, 1, 1e-13)),
+                                  add(e, vec(1, 1, 1e-13)),
+                                  add(e, vec(0, 4, -1e-12)), 0.25, 250, 60, 60);
+            rt_test_spec_triangle(s, add(e, vec(-2, -2, -2)),
+                                  add(e, vec(2, -1, 2)),
+                                  add(e, vec(0, 1e-12, 0)), 0, 60, 250, 60);
             break;
         default:    /* the eye inside a closed box */
             what = "the eye inside a closed box";
-            rt_test_spec_box(s, add(e, vec(-1, -1, -1)), add(e, vec(1.5, 2, 1)), 0.5, 200,
-                200, 60);
+            rt_test_spec_box(s, add(e, vec(-1, -1, -1)),
+                             add(e, vec(1.5, 2, 1)), 0.5, 200,
+                             200, 60);
             break;
         }
         rt_test_spec_light(s, vec(2, 1, 4), 255, 255, 255);
@@ -296,13 +315,16 @@ END_TEST
 static rt_test_spec *shadow_scene(void)
 {
     rt_test_spec *s = rt_test_spec_new();
-    rt_test_spec_quad(s, vec(-4, -4, 0), vec(4, -4, 0), vec(4, 4, 0), vec(-4, 4, 0), 0.25,
-         200, 200, 200);
-    rt_test_spec_quad(s, vec(2, -4, 0), vec(2, 4, 0), vec(2, 4, 3), vec(2, -4, 3), 0, 180,
-         200, 220);
+    rt_test_spec_quad(s, vec(-4, -4, 0), vec(4, -4, 0), vec(4, 4, 0),
+                      vec(-4, 4, 0), 0.25,
+                      200, 200, 200);
+    rt_test_spec_quad(s, vec(2, -4, 0), vec(2, 4, 0), vec(2, 4, 3),
+                      vec(2, -4, 3), 0, 180,
+                      200, 220);
     rt_test_spec_box(s, vec(-1, -1, 0.5), vec(0, 0, 1.5), 0, 220, 80, 80);
-    rt_test_spec_triangle(s, vec(0.5, 1, 0.25), vec(1.5, 1.5, 0.25), vec(1, 1, 2), 0.5,
-             80, 220, 80);
+    rt_test_spec_triangle(s, vec(0.5, 1, 0.25), vec(1.5, 1.5, 0.25),
+                          vec(1, 1, 2), 0.5,
+                          80, 220, 80);
     rt_test_spec_aim(s, vec(-6, -5, 4), vec(5.5, 5, -3.5), vec(0, 0, 1), 0.8);
     return s;
 }
@@ -331,20 +353,24 @@ START_TEST(lights_on_and_in_facets_render_identically)
         rt_test_spec_light(s, vec(-3, 2, 5), 90, 90, 140);
         s->width = rt_test_memcheck() ? 10 : 40;
         s->height = rt_test_memcheck() ? 8 : 30;
-        rt_test_spec_check(lights[i].what, s, 1, NULL, RT_TEST_BOTH_PRECISIONS, 0);
+        rt_test_spec_check(lights[i].what, s, 1, NULL, RT_TEST_BOTH_PRECISIONS,
+                           0);
         free(s);
     }
     /* the eye in the box with the light */
     rt_test_spec *s = rt_test_spec_new();
     rt_test_spec_box(s, vec(-1, -1, -1), vec(1, 1, 1), 0.25, 200, 200, 200);
-    rt_test_spec_box(s, vec(-0.25, 0.25, -0.5), vec(0.25, 0.5, 0), 0, 220, 80, 80);
+    rt_test_spec_box(s, vec(-0.25, 0.25, -0.5), vec(0.25, 0.5, 0), 0, 220, 80,
+                     80);
     rt_test_spec_light(s, vec(0.5, 0.5, 0.75), 255, 255, 255);
     rt_test_spec_light(s, vec(-0.75, 0.5, -0.9), 100, 100, 255);
-    rt_test_spec_aim(s, vec(0, -0.75, 0.25), vec(0.25, 1, -0.5), vec(0, 0, 1), 1.5);
+    rt_test_spec_aim(s, vec(0, -0.75, 0.25), vec(0.25, 1, -0.5), vec(0, 0, 1),
+                     1.5);
     s->width = rt_test_memcheck() ? 10 : 40;
     s->height = rt_test_memcheck() ? 8 : 30;
-    rt_test_spec_check("the eye and the lights inside a closed box", s, 1, NULL, RT_TEST_BOTH_PRECISIONS,
-               0);
+    rt_test_spec_check("the eye and the lights inside a closed box", s, 1,
+                       NULL, RT_TEST_BOTH_PRECISIONS,
+                       0);
     free(s);
     rt_test_kernels_finish("lights on and in facets");
 }
@@ -359,10 +385,12 @@ START_TEST(extreme_scales_render_identically)
         double scale;
         unsigned precisions;
     } scales[] = {
-        {1e-100, RT_TEST_DOUBLE_ONLY}, {1e100, RT_TEST_DOUBLE_ONLY}, {1e-20, RT_TEST_FLOAT_ONLY},
-        {1e20, RT_TEST_FLOAT_ONLY},    {1e-150, RT_TEST_DOUBLE_ONLY}, {1e150, RT_TEST_DOUBLE_ONLY},
-        {1e-15, RT_TEST_FLOAT_ONLY},   {1e15, RT_TEST_FLOAT_ONLY},   {1e160, RT_TEST_DOUBLE_ONLY},
-        {1e-160, RT_TEST_DOUBLE_ONLY}, {1e-22, RT_TEST_FLOAT_ONLY}, /* products subnormal */
+        {1e-100, RT_TEST_DOUBLE_ONLY}, {1e100, RT_TEST_DOUBLE_ONLY},
+        {1e-20, RT_TEST_FLOAT_ONLY},   {1e20, RT_TEST_FLOAT_ONLY},
+        {1e-150, RT_TEST_DOUBLE_ONLY}, {1e150, RT_TEST_DOUBLE_ONLY},
+        {1e-15, RT_TEST_FLOAT_ONLY},   {1e15, RT_TEST_FLOAT_ONLY},
+        {1e160, RT_TEST_DOUBLE_ONLY},  {1e-160, RT_TEST_DOUBLE_ONLY},
+        {1e-22, RT_TEST_FLOAT_ONLY},   /* products subnormal */
     };
     for (int scene = 0; scene < 2; scene++) {
         rt_test_spec *s;
@@ -384,8 +412,8 @@ START_TEST(extreme_scales_render_identically)
             snprintf(name, sizeof name, "%s scaled by %g",
                      scene ? "a random scene" : "the shadow scene",
                      scales[i].scale);
-            rt_test_spec_check(name, s, scales[i].scale, NULL, scales[i].precisions,
-                       1);
+            rt_test_spec_check(name, s, scales[i].scale, NULL,
+                               scales[i].precisions, 1);
         }
         free(s);
     }
@@ -412,8 +440,9 @@ START_TEST(light_counts_render_identically)
             }
             rng.state = 0x1167u + i;
             for (int l = 0; l < counts[i]; l++)
-                rt_test_spec_light(s, add(vec(0, 0, 2.5), random_point(3)), 30 + below(60),
-                      30 + below(60), 30 + below(60));
+                rt_test_spec_light(s, add(vec(0, 0, 2.5), random_point(3)),
+                                   30 + below(60),
+                                   30 + below(60), 30 + below(60));
             s->width = rt_test_memcheck() ? 10 : 36;
             s->height = rt_test_memcheck() ? 8 : 27;
             char name[128];
@@ -456,7 +485,8 @@ START_TEST(facet_counts_render_identically)
             ck_assert_int_eq(info.facet_count, 65);
             ck_assert_int_eq(info.live_facet_count, 64);
             rt_scene_destroy(scene);
-            rt_test_spec_check("65 facets, one of zero area", s, 1, NULL, RT_TEST_BOTH_PRECISIONS, 0);
+            rt_test_spec_check("65 facets, one of zero area", s, 1, NULL,
+                               RT_TEST_BOTH_PRECISIONS, 0);
         }
         free(s);
     }
@@ -507,7 +537,8 @@ START_TEST(sizes_and_regions_render_identically)
                      cases[i].width, cases[i].height, cases[i].region.x0,
                      cases[i].region.y0, cases[i].region.x1,
                      cases[i].region.y1);
-            rt_test_spec_check(name, s, 1, &options, RT_TEST_BOTH_PRECISIONS, 0);
+            rt_test_spec_check(name, s, 1, &options, RT_TEST_BOTH_PRECISIONS,
+                               0);
         }
         free(s);
     }

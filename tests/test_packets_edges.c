@@ -27,8 +27,8 @@ static rt_test_rng rng;
 /* An nx x ny grid of squares of side `side` (two facets each, diagonals
  * alternating or not) in the plane z = 0 from (x0, y0), heights from
  * `height` (NULL: flat). */
-static void grid(rt_test_spec *s, int nx, int ny, double side, double x0, double y0,
-                 const double *height, int alternate)
+static void grid(rt_test_spec *s, int nx, int ny, double side, double x0,
+                 double y0, const double *height, int alternate)
 {
     int first = s->nv;
     for (int y = 0; y <= ny; y++)
@@ -78,12 +78,13 @@ START_TEST(tessellated_grids_render_identically)
         rt_test_spec_check(name, s, 1, NULL, RT_TEST_BOTH_PRECISIONS, 0);
         /* the same grid at an angle, and from below */
         rt_test_spec_aim(s, vec(-3 * side, -5 * side, 4 * side), vec(3, 5, -4),
-            vec(0, 0, 1), 0.5);
+                         vec(0, 0, 1), 0.5);
         snprintf(name, sizeof name, "a flat grid at an angle%s",
                  alternate ? ", diagonals alternating" : "");
         rt_test_spec_check(name, s, 1, NULL, RT_TEST_BOTH_PRECISIONS, 0);
-        rt_test_spec_aim(s, vec(1 * side, 0.5 * side, -3 * side), vec(-1, -0.5, 3),
-            vec(0, 1, 0), 1);
+        rt_test_spec_aim(s, vec(1 * side, 0.5 * side, -3 * side),
+                         vec(-1, -0.5, 3),
+                         vec(0, 1, 0), 1);
         snprintf(name, sizeof name, "a flat grid from below%s",
                  alternate ? ", diagonals alternating" : "");
         rt_test_spec_check(name, s, 1, NULL, RT_TEST_BOTH_PRECISIONS, 0);
@@ -98,14 +99,16 @@ START_TEST(tessellated_grids_render_identically)
     for (int view = 0; view < 4; view++) {
         rt_test_spec *s = rt_test_spec_new();
         grid(s, 7, 4, 0.5, -1.75, -1, heights, view % 2);
-        rt_test_spec_triangle(s, vec(-0.5, 0, 0.3), vec(0.5, 0, 0.3), vec(0, 0.1, 1.5),
-                 0.25, 240, 200, 60);
+        rt_test_spec_triangle(s, vec(-0.5, 0, 0.3), vec(0.5, 0, 0.3),
+                              vec(0, 0.1, 1.5),
+                              0.25, 240, 200, 60);
         rt_test_spec_light(s, vec(-2, -1, 2.5), 255, 255, 255);
         rt_test_spec_light(s, vec(3, 2, 1.2), 120, 140, 160);
         static const rt_vec3 eyes[] = {
             {-3, -3, 2.5}, {0.25, 0.0, 4}, {3, -0.5, 0.8}, {-1, 3, 1.5}};
-        rt_test_spec_aim(s, eyes[view], sub(vec(0, 0, 0.3), eyes[view]), vec(0, 0, 1),
-            0.7);
+        rt_test_spec_aim(s, eyes[view], sub(vec(0, 0, 0.3), eyes[view]),
+                         vec(0, 0, 1),
+                         0.7);
         s->width = rt_test_memcheck() ? 10 : 37;
         s->height = rt_test_memcheck() ? 8 : 25;
         char name[64];
@@ -140,18 +143,22 @@ static rt_test_spec *fan_scene(rt_vec3 targets[TARGETS])
     int ring[6];
     for (int i = 0; i < 6; i++) {
         double angle = 2 * 3.14159265358979323846 * (i + 0.37) / 6;
-        ring[i] = rt_test_spec_vertex(s, add(v, vec(cos(angle), 0.3 * sin(angle),
+        ring[i] = rt_test_spec_vertex(s,
+                                      add(v, vec(cos(angle), 0.3 * sin(angle),
                                        sin(angle))));
     }
     for (int i = 0; i < 6; i++)
-        rt_test_spec_facet(s, centre, ring[i], ring[(i + 1) % 6], i % 2 ? 0.25 : 0,
-              40 * i + 30, 200 - 30 * i, 90 + 25 * i);
+        rt_test_spec_facet(s, centre, ring[i], ring[(i + 1) % 6],
+                           i % 2 ? 0.25 : 0,
+                           40 * i + 30, 200 - 30 * i, 90 + 25 * i);
     /* a wall behind the fan, and an occluder between it and a light */
-    rt_test_spec_quad(s, vec(-5, 5, -5), vec(5, 5, -5), vec(5, 5, 5), vec(-5, 5, 5), 0,
-         180, 180, 180);
+    rt_test_spec_quad(s, vec(-5, 5, -5), vec(5, 5, -5), vec(5, 5, 5),
+                      vec(-5, 5, 5), 0,
+                      180, 180, 180);
     const rt_vec3 corner = {3, 0.5, 1}, bright = {3.2, -2, 1.6};
-    rt_test_spec_triangle(s, corner, vec(3.6, 0.5, 1.1), vec(3.3, 0.6, 0.4), 0, 250, 250,
-             40);
+    rt_test_spec_triangle(s, corner, vec(3.6, 0.5, 1.1), vec(3.3, 0.6, 0.4), 0,
+                          250, 250,
+                          40);
     rt_test_spec_light(s, bright, 255, 255, 255);
     rt_test_spec_light(s, vec(-2, -3, -1), 80, 80, 120);
     targets[0] = v;
@@ -184,12 +191,14 @@ START_TEST(telephoto_views_render_identically)
             rt_vec3 targets[TARGETS];
             rt_test_spec *s = fan_scene(targets);
             rt_vec3 eye = vec(0.1, -3.3, 0.35);
-            rt_test_spec_aim(s, eye, sub(targets[t], eye), vec(0, 0, 1), fields[i].field);
+            rt_test_spec_aim(s, eye, sub(targets[t], eye), vec(0, 0, 1),
+                             fields[i].field);
             s->width = 16384;
             s->height = 16384;
             rt_render_options options;
             rt_render_options_init(&options);
-            int rw = rt_test_memcheck() ? 16 : 64, rh = rt_test_memcheck() ? 4 : 16;
+            int rw = rt_test_memcheck() ? 16 : 64,
+                rh = rt_test_memcheck() ? 4 : 16;
             options.region = (rt_region){8192 - rw / 2 + 1, 8192 - rh / 2,
                                          8192 + rw / 2 + 1, 8192 + rh / 2};
             char name[128];

@@ -268,7 +268,7 @@ START_TEST(parse_reports_status_position_and_token_of_each_broken_rule)
     const bad_case *c = &bad_cases[_i];
     char text[2048];
     rt_test_base_scene(text, sizeof text, c->replace, c->replacement, c->keep,
-                c->append, "\n");
+                       c->append, "\n");
     rt_scene *scene = (rt_scene *)&text; /* must be reset to NULL */
     rt_error error;
     memset(&error, 0, sizeof error);
@@ -284,7 +284,7 @@ START_TEST(parse_reports_the_same_errors_with_crlf_line_endings)
     const bad_case *c = &bad_cases[_i];
     char text[2048];
     rt_test_base_scene(text, sizeof text, c->replace, c->replacement, c->keep,
-                c->append, "\r\n");
+                       c->append, "\r\n");
     /* the appended text uses LF only: convert it too */
     char crlf[4096];
     size_t n = 0;
@@ -306,7 +306,8 @@ END_TEST
 START_TEST(parse_columns_do_not_count_the_byte_order_mark)
 {
     char text[2048] = "\xEF\xBB\xBF";
-    rt_test_base_scene(text + 3, sizeof text - 3, 1, "0 abc 5", ALL, NULL, "\n");
+    rt_test_base_scene(text + 3, sizeof text - 3, 1, "0 abc 5", ALL, NULL,
+                       "\n");
     rt_scene *scene = NULL;
     rt_error error;
     rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
@@ -395,7 +396,7 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
     rt_test_base_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
     rt_test_write_file(good.s, text);
     rt_test_base_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
-                "\n");
+                       "\n");
     rt_test_write_file(bad.s, text);
 
     rt_scene *scene = NULL;

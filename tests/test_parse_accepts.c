@@ -61,22 +61,26 @@ END_TEST
 START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
 {
     char text[2048];
-    rt_test_base_scene(text, sizeof text, 8, "1 2 3 1 255 0 0", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 8, "1 2 3 1 255 0 0", ALL, NULL,
+                       "\n");
     rt_scene *scene = parse_ok(text, strlen(text));
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);
     ck_assert_double_eq(facet.k, 1.0);
     rt_scene_destroy(scene);
-    rt_test_base_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL,
+                       "\n");
     rt_scene_destroy(parse_ok(text, strlen(text)));
-    rt_test_base_scene(text, sizeof text, 2, "0 0 4 1 0 0 16384 1", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 2, "0 0 4 1 0 0 16384 1", ALL, NULL,
+                       "\n");
     scene = parse_ok(text, strlen(text));
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, 16384);
     ck_assert_int_eq(info.height, 1);
     rt_scene_destroy(scene);
-    rt_test_base_scene(text, sizeof text, 2, "0 0 4 1 0 0 1 16384", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 2, "0 0 4 1 0 0 1 16384", ALL, NULL,
+                       "\n");
     rt_scene_destroy(parse_ok(text, strlen(text)));
 }
 END_TEST

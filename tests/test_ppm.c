@@ -64,8 +64,8 @@ static void round_trip(rt_ppm_format format, int w, int h)
     ck_assert_int_eq(out.bytes.data[1], format == RT_PPM_P3 ? '3' : '6');
     rt_image back;
     rt_error error;
-    rt_status status = rt_ppm_parse(out.bytes.data, out.bytes.size, "<sink>", &back,
-                                    &error);
+    rt_status status = rt_ppm_parse(out.bytes.data, out.bytes.size, "<sink>",
+                                    &back, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     assert_same_pixels(&image, &back);
     rt_image_release(&back);
@@ -134,7 +134,8 @@ START_TEST(p3_lines_are_at_most_70_characters)
             }
         }
         ck_assert_msg(longest <= 70, "a P3 line has %zu characters", longest);
-        ck_assert_msg(out.bytes.size > 0 && out.bytes.data[out.bytes.size - 1] == '\n',
+        ck_assert_msg(out.bytes.size > 0 &&
+                          out.bytes.data[out.bytes.size - 1] == '\n',
                       "P3 output does not end with a newline");
         /* 600 values of up to 4 characters need more than 5 lines */
         ck_assert_uint_gt(lines, 5);

@@ -65,7 +65,8 @@ static int save_with_umask(void *arg, char *note, size_t size)
     rt_error error = {0};
     rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P6, &error);
     rt_image_release(&image);
-    return status == RT_OK ? 0 : rt_test_say(1, note, size, "%s", error.message);
+    return status == RT_OK ? 0 : rt_test_say(1, note, size, "%s",
+                                             error.message);
 }
 
 START_TEST(a_new_file_gets_0666_minus_the_umask)
@@ -108,7 +109,8 @@ START_TEST(a_replaced_file_keeps_its_permission_bits)
     rt_test_bytes expected = rt_test_encode(&image, RT_IMAGE_P3);
     for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
         unlink(path.s);
-        rt_test_write_bytes(path.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+        rt_test_write_bytes(path.s, rt_test_previous_ppm,
+                            sizeof rt_test_previous_ppm - 1);
         ck_assert_int_eq(chmod(path.s, modes[i]), 0);
         rt_test_save_ok(path.s, &image, RT_IMAGE_P3);
         struct stat st;
@@ -130,7 +132,8 @@ END_TEST
 START_TEST(a_file_with_two_hard_links_stays_one_file_holding_the_image)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path first = rt_test_path_at(dir, "first.ppm"), second = rt_test_path_at(dir, "second.ppm");
+    rt_test_path first = rt_test_path_at(dir, "first.ppm"),
+                 second = rt_test_path_at(dir, "second.ppm");
     char long_old[5000];
     memset(long_old, '#', sizeof long_old);
     rt_test_write_bytes(first.s, long_old, sizeof long_old);
@@ -165,15 +168,18 @@ START_TEST(symbolic_links_stay_and_their_final_target_gets_the_image)
 {
     char *dir = rt_test_temp_dir();
     rt_test_path target = rt_test_path_at(dir, "target.ppm");
-    rt_test_path sub = rt_test_path_at(dir, "sub"), other = rt_test_path_at(dir, "other");
+    rt_test_path sub = rt_test_path_at(dir, "sub"),
+                 other = rt_test_path_at(dir, "other");
     rt_test_path final = rt_test_path_at(dir, "other/final.ppm");
     ck_assert_int_eq(mkdir(sub.s, 0755), 0);
     ck_assert_int_eq(mkdir(other.s, 0755), 0);
-    rt_test_write_bytes(target.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(target.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     ck_assert_int_eq(chmod(target.s, 0640), 0);
-    rt_test_write_bytes(final.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(final.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
 
-    /* link name, what it rt_test_file_holds, where the chain finally leads */
+    /* link name, what it holds, where the chain finally leads */
     struct {
         const char *name;
         char text[PATH_MAX];
@@ -190,18 +196,22 @@ START_TEST(symbolic_links_stay_and_their_final_target_gets_the_image)
     snprintf(links[1].text, sizeof links[1].text, "%s", target.s);
     size_t count = sizeof links / sizeof links[0];
     for (size_t i = 0; i < count; i++)
-        ck_assert_int_eq(symlink(links[i].text, rt_test_path_at(dir, links[i].name).s),
+        ck_assert_int_eq(symlink(links[i].text,
+                                 rt_test_path_at(dir, links[i].name).s),
                          0);
 
     for (size_t i = 0; i < count; i++) {
         rt_test_path link = rt_test_path_at(dir, links[i].name);
-        rt_image image = rt_test_pattern(4 + (int)i, 3);  /* a new image each time */
+        /* a new image each time */
+        rt_image image = rt_test_pattern(4 + (int)i, 3);
         rt_test_bytes expected = rt_test_encode(&image, RT_IMAGE_P6);
         rt_test_save_ok(link.s, &image, RT_IMAGE_P6);
         for (size_t j = 0; j < count; j++)
-            rt_test_assert_link(rt_test_path_at(dir, links[j].name).s, links[j].text);
+            rt_test_assert_link(rt_test_path_at(dir, links[j].name).s,
+                                links[j].text);
         ck_assert_msg(rt_test_file_kind(links[i].lands) == S_IFREG &&
-                          rt_test_file_holds(links[i].lands, expected.data, expected.size),
+                          rt_test_file_holds(links[i].lands, expected.data,
+                                             expected.size),
                       "saving through %s did not put the image in %s",
                       link.s, links[i].lands);
         free(expected.data);
@@ -221,7 +231,8 @@ END_TEST
 START_TEST(a_dangling_link_gets_its_target_created_in_the_existing_folder)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path sub = rt_test_path_at(dir, "sub"), link = rt_test_path_at(dir, "dangling");
+    rt_test_path sub = rt_test_path_at(dir, "sub"),
+                 link = rt_test_path_at(dir, "dangling");
     rt_test_path created = rt_test_path_at(dir, "sub/new.ppm");
     ck_assert_int_eq(mkdir(sub.s, 0755), 0);
     ck_assert_int_eq(symlink("sub/new.ppm", link.s), 0);
@@ -230,7 +241,8 @@ START_TEST(a_dangling_link_gets_its_target_created_in_the_existing_folder)
     rt_test_save_ok(link.s, &image, RT_IMAGE_P3);
     rt_test_assert_link(link.s, "sub/new.ppm");
     ck_assert_msg(rt_test_file_kind(created.s) == S_IFREG &&
-                      rt_test_file_holds(created.s, expected.data, expected.size),
+                      rt_test_file_holds(created.s, expected.data,
+                                         expected.size),
                   "%s does not hold the image", created.s);
     rt_test_assert_dir_holds(dir, "dangling sub");
     rt_test_assert_dir_holds(sub.s, "new.ppm");
@@ -243,7 +255,8 @@ END_TEST
 START_TEST(a_loop_of_links_is_an_io_error_naming_the_path)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path one = rt_test_path_at(dir, "one"), two = rt_test_path_at(dir, "two");
+    rt_test_path one = rt_test_path_at(dir, "one"),
+                 two = rt_test_path_at(dir, "two");
     rt_test_path self = rt_test_path_at(dir, "self");
     ck_assert_int_eq(symlink("two", one.s), 0);
     ck_assert_int_eq(symlink("one", two.s), 0);
@@ -268,7 +281,7 @@ END_TEST
 /* Streams: FIFO and socket                                             */
 
 /*
- * Saves a 300 x 200 P6 image (180 KB, more than a pipe rt_test_file_holds, so the save
+ * Saves a 300 x 200 P6 image (180 KB, more than a pipe holds, so the save
  * must stream while the other side reads) to dir/`name`, a FIFO or socket
  * made by the caller, which `job` (given `arg`) reads into `received`.  The
  * save must succeed, the reader get exactly the image's bytes, and `name`
@@ -306,7 +319,8 @@ static void assert_streamed(const char *dir, const char *name,
 START_TEST(a_fifo_is_streamed_to_its_reader_and_stays_a_fifo)
 {
     char *dir = rt_test_temp_dir(), *elsewhere = rt_test_temp_dir();
-    rt_test_path fifo = rt_test_path_at(dir, "fifo"), received = rt_test_path_at(elsewhere, "received");
+    rt_test_path fifo = rt_test_path_at(dir, "fifo"),
+                 received = rt_test_path_at(elsewhere, "received");
     ck_assert_int_eq(mkfifo(fifo.s, 0600), 0);
     rt_test_copy copy = {fifo.s, -1, -1, received.s};
     assert_streamed(dir, "fifo", rt_test_copy_job, &copy, received.s);
@@ -342,7 +356,8 @@ END_TEST
 START_TEST(a_directory_is_refused_as_a_directory_and_nothing_is_created)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path folder = rt_test_path_at(dir, "image.ppm"), link = rt_test_path_at(dir, "link");
+    rt_test_path folder = rt_test_path_at(dir, "image.ppm"),
+                 link = rt_test_path_at(dir, "link");
     ck_assert_int_eq(mkdir(folder.s, 0755), 0);
     rt_test_write_bytes(rt_test_path_at(folder.s, "keep").s, "k", 1);
     ck_assert_int_eq(symlink("image.ppm", link.s), 0);
@@ -359,14 +374,17 @@ END_TEST
 START_TEST(a_missing_folder_is_named_in_the_error_and_nothing_is_created)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path missing = rt_test_path_at(dir, "missing"), deep = rt_test_path_at(dir, "a/b/c");
+    rt_test_path missing = rt_test_path_at(dir, "missing"),
+                 deep = rt_test_path_at(dir, "a/b/c");
     rt_test_path link = rt_test_path_at(dir, "link");
     ck_assert_int_eq(symlink("nowhere/new.ppm", link.s), 0);
     rt_error error;
-    rt_test_save_refused(rt_test_path_at(missing.s, "out.ppm").s, "does not exist", &error);
+    rt_test_save_refused(rt_test_path_at(missing.s, "out.ppm").s,
+                         "does not exist", &error);
     ck_assert_msg(strstr(error.message, missing.s) != NULL,
                   "the message does not name the folder: %s", error.message);
-    rt_test_save_refused(rt_test_path_at(deep.s, "out.ppm").s, "does not exist", &error);
+    rt_test_save_refused(rt_test_path_at(deep.s, "out.ppm").s,
+                         "does not exist", &error);
     ck_assert_msg(strstr(error.message, deep.s) != NULL,
                   "the message does not name the folder: %s", error.message);
     rt_test_save_refused(link.s, "does not exist", &error);
@@ -384,10 +402,11 @@ END_TEST
 static int save_without_permission(void *arg, char *note, size_t size)
 {
     const char *dir = arg;
-    if (geteuid() == 0 && (setgroups(0, NULL) != 0 || setgid(RT_TEST_NOBODY) != 0 ||
-                           setuid(RT_TEST_NOBODY) != 0))
+    if (geteuid() == 0 &&
+        (setgroups(0, NULL) != 0 || setgid(RT_TEST_NOBODY) != 0 ||
+         setuid(RT_TEST_NOBODY) != 0))
         return rt_test_say(3, note, size, "cannot become user %d: %s",
-                   RT_TEST_NOBODY, strerror(errno));
+                           RT_TEST_NOBODY, strerror(errno));
     rt_image image;
     if (rt_test_make_pattern(&image, 4, 4) != RT_OK)
         return rt_test_say(1, note, size, "no memory for the image");
@@ -417,12 +436,14 @@ START_TEST(a_folder_without_write_permission_is_refused_and_left_as_it_was)
 {
     char *dir = rt_test_temp_dir();
     rt_test_path old = rt_test_path_at(dir, "old.ppm");
-    rt_test_write_bytes(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(old.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     if (geteuid() == 0)
         ck_assert_int_eq(chown(dir, RT_TEST_NOBODY, RT_TEST_NOBODY), 0);
     ck_assert_int_eq(chmod(dir, 0555), 0);
     char note[1024];
-    int code = rt_test_in_child(save_without_permission, dir, note, sizeof note);
+    int code = rt_test_in_child(save_without_permission, dir, note,
+                                sizeof note);
     chmod(dir, 0700);
     if (code == 3) {
         fprintf(stderr, "test_save: read-only folder skipped here (%s); "
@@ -431,7 +452,8 @@ START_TEST(a_folder_without_write_permission_is_refused_and_left_as_it_was)
     } else {
         ck_assert_msg(code == 0, "%s", note);
     }
-    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1));
+    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm,
+                                 sizeof rt_test_previous_ppm - 1));
     rt_test_assert_dir_holds(dir, "old.ppm");
     rt_test_remove_dir(dir);
 }
@@ -443,21 +465,26 @@ END_TEST
 START_TEST(save_check_accepts_what_can_be_written_and_creates_nothing)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path old = rt_test_path_at(dir, "old.ppm"), fifo = rt_test_path_at(dir, "fifo");
-    rt_test_path dangling = rt_test_path_at(dir, "dangling"), linked = rt_test_path_at(dir, "linked");
-    rt_test_write_bytes(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_path old = rt_test_path_at(dir, "old.ppm"),
+                 fifo = rt_test_path_at(dir, "fifo");
+    rt_test_path dangling = rt_test_path_at(dir, "dangling"),
+                 linked = rt_test_path_at(dir, "linked");
+    rt_test_write_bytes(old.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     ck_assert_int_eq(link(old.s, linked.s), 0);
     ck_assert_int_eq(mkfifo(fifo.s, 0600), 0);
     ck_assert_int_eq(symlink("new.ppm", dangling.s), 0);
     /* a FIFO without a reader must not make the check wait */
-    rt_test_path paths[] = {rt_test_path_at(dir, "new.ppm"), old, linked, fifo, dangling};
+    rt_test_path paths[] = {rt_test_path_at(dir, "new.ppm"), old, linked, fifo,
+                            dangling};
     for (int i = 0; i < 5; i++) {
         rt_error error = {0};
         rt_status status = rt_image_save_check(paths[i].s, &error);
         ck_assert_msg(status == RT_OK, "checking %s: %s", paths[i].s,
                       error.message);
     }
-    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1));
+    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm,
+                                 sizeof rt_test_previous_ppm - 1));
     ck_assert_int_eq(rt_test_file_kind(fifo.s), S_IFIFO);
     rt_test_assert_link(dangling.s, "new.ppm");
     rt_test_assert_dir_holds(dir, "dangling fifo linked old.ppm");
@@ -468,12 +495,14 @@ END_TEST
 START_TEST(save_check_refuses_what_the_save_refuses_with_its_message)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path folder = rt_test_path_at(dir, "folder"), plain = rt_test_path_at(dir, "plain");
+    rt_test_path folder = rt_test_path_at(dir, "folder"),
+                 plain = rt_test_path_at(dir, "plain");
     rt_test_path loop = rt_test_path_at(dir, "loop");
     ck_assert_int_eq(mkdir(folder.s, 0755), 0);
     rt_test_write_bytes(plain.s, "x", 1);
     ck_assert_int_eq(symlink("loop", loop.s), 0);
-    rt_test_path paths[] = {rt_test_path_at(dir, "missing/out.ppm"), folder, loop,
+    rt_test_path paths[] = {rt_test_path_at(dir, "missing/out.ppm"), folder,
+                            loop,
                       rt_test_path_at(dir, "plain/out.ppm")};
     rt_image image = rt_test_pattern(3, 3);
     for (int i = 0; i < 4; i++) {

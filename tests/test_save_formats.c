@@ -24,7 +24,8 @@
 #if RT_TEST_HAVE_LIBPNG
 /* Decodes PNG bytes as 8-bit RGB with libpng's simplified API; the pixels
  * are malloc'd, rows packed. */
-static unsigned char *decode_png(const rt_test_bytes *png, int *width, int *height)
+static unsigned char *decode_png(const rt_test_bytes *png, int *width,
+                                 int *height)
 {
     png_image decoded;
     memset(&decoded, 0, sizeof decoded);

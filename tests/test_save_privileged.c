@@ -35,7 +35,7 @@ static int private_mounts(char *note, size_t size)
     if (unshare(CLONE_NEWNS) != 0 ||
         mount("none", "/", "none", MS_REC | MS_PRIVATE, NULL) != 0)
         return rt_test_say(3, note, size, "no private mount namespace: %s",
-                   strerror(errno));
+                           strerror(errno));
     return 0;
 }
 
@@ -48,7 +48,7 @@ static int private_dev(char *note, size_t size)
     if (mount("rt-test-save", "/dev", "tmpfs", MS_NOSUID,
               "size=64k,mode=0755") != 0)
         return rt_test_say(3, note, size, "no tmpfs on /dev: %s",
-                   strerror(errno));
+                           strerror(errno));
     if (mknod("/dev/null", S_IFCHR | 0666, makedev(1, 3)) != 0 ||
         mknod("/dev/full", S_IFCHR | 0666, makedev(1, 7)) != 0)
         return rt_test_say(3, note, size, "mknod: %s", strerror(errno));
@@ -81,7 +81,8 @@ static int privileges_job(void *arg, char *note, size_t size)
     if (mkdir("/dev/probe", 0755) != 0 ||
         mount("rt-test-save", "/dev/probe", "tmpfs", MS_RDONLY,
               "size=16k") != 0)
-        return rt_test_say(1, note, size, "no read-only tmpfs: %s", strerror(errno));
+        return rt_test_say(1, note, size, "no read-only tmpfs: %s",
+                           strerror(errno));
     if (close(open("/dev/owned", O_WRONLY | O_CREAT, 0600)) != 0 ||
         chown("/dev/owned", RT_TEST_NOBODY, RT_TEST_NOBODY) != 0)
         return rt_test_say(1, note, size, "cannot give a file to user %d: %s",
@@ -131,13 +132,15 @@ static int save_to_device(void *arg, char *note, size_t size)
         (status != RT_OK && (error.status != status ||
                              !strstr(error.message, c->path) ||
                              !strstr(error.message, c->reason))))
-        return rt_test_say(1, note, size, "saving to %s returned %s: %s", c->path,
-                   rt_status_string(status), error.message);
+        return rt_test_say(1, note, size, "saving to %s returned %s: %s",
+                           c->path,
+                           rt_status_string(status), error.message);
     if (checked != RT_OK)
-        return rt_test_say(1, note, size, "checking %s: %s", c->path, check.message);
+        return rt_test_say(1, note, size, "checking %s: %s", c->path,
+                           check.message);
     if (!is_device(c->path, c->major_number, c->minor_number))
         return rt_test_say(1, note, size, "%s is no longer the device %u, %u",
-                   c->path, c->major_number, c->minor_number);
+                           c->path, c->major_number, c->minor_number);
     if (!dir_holds("/dev", dev_listing, note, size))
         return 1;
     return 0;
@@ -162,7 +165,7 @@ START_TEST(saving_to_dev_full_says_no_space_and_leaves_the_device)
 END_TEST
 
 /* Standard output is a pipe read by a copier into `arg` (a file); the
- * image (larger than a pipe rt_test_file_holds) goes to /dev/stdout. */
+ * image (larger than a pipe holds) goes to /dev/stdout. */
 static int save_to_dev_stdout(void *arg, char *note, size_t size)
 {
     const char *received = arg;
@@ -187,7 +190,8 @@ static int save_to_dev_stdout(void *arg, char *note, size_t size)
     close(1);
     char reader_note[1024];
     int wait_status = reader.pid > 0
-                          ? rt_test_child_finish(&reader, reader_note, sizeof reader_note)
+                          ? rt_test_child_finish(&reader, reader_note,
+                                                 sizeof reader_note)
                           : -1;
     rt_image_release(&image);
     int same = rt_test_file_holds(received, expected.data, expected.size);
@@ -216,7 +220,8 @@ START_TEST(saving_to_dev_stdout_sends_the_bytes_through_the_pipe)
     char *dir = rt_test_temp_dir();
     rt_test_path received = rt_test_path_at(dir, "received");
     char note[1024];
-    int code = rt_test_in_child(save_to_dev_stdout, received.s, note, sizeof note);
+    int code = rt_test_in_child(save_to_dev_stdout, received.s, note,
+                                sizeof note);
     rt_test_remove_dir(dir);
     ck_assert_msg(code == 0, "%s", note);
 }
@@ -226,7 +231,8 @@ START_TEST(a_file_of_another_owner_keeps_its_owner_group_and_mode)
 {
     char *dir = rt_test_temp_dir();
     rt_test_path path = rt_test_path_at(dir, "theirs.ppm");
-    rt_test_write_bytes(path.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(path.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     ck_assert_int_eq(chown(path.s, RT_TEST_NOBODY, RT_TEST_NOBODY), 0);
     ck_assert_int_eq(chmod(path.s, 0640), 0);
     rt_image image = rt_test_pattern(12, 8);
@@ -236,7 +242,8 @@ START_TEST(a_file_of_another_owner_keeps_its_owner_group_and_mode)
     ck_assert_int_eq(lstat(path.s, &st), 0);
     ck_assert_msg(st.st_uid == RT_TEST_NOBODY && st.st_gid == RT_TEST_NOBODY,
                   "owner %u:%u after the save, was %d:%d",
-                  (unsigned)st.st_uid, (unsigned)st.st_gid, RT_TEST_NOBODY, RT_TEST_NOBODY);
+                  (unsigned)st.st_uid, (unsigned)st.st_gid, RT_TEST_NOBODY,
+                      RT_TEST_NOBODY);
     ck_assert_uint_eq(st.st_mode & 07777, 0640);
     ck_assert(rt_test_file_holds(path.s, expected.data, expected.size));
     rt_test_assert_dir_holds(dir, "theirs.ppm");
@@ -275,7 +282,8 @@ static int save_on_read_only_mounts(void *arg, char *note, size_t size)
     int code = private_mounts(note, size);
     if (code != 0)
         return code;
-    rt_test_path ro = rt_test_path_at(dir, "ro"), bound = rt_test_path_at(dir, "bound");
+    rt_test_path ro = rt_test_path_at(dir, "ro"),
+                 bound = rt_test_path_at(dir, "bound");
     if (mount("rt-test-save", ro.s, "tmpfs", MS_RDONLY, "size=16k") != 0 ||
         mount(bound.s, bound.s, "none", MS_BIND, NULL) != 0 ||
         mount("none", bound.s, "none", MS_REMOUNT | MS_BIND | MS_RDONLY,
@@ -292,15 +300,19 @@ static int save_on_read_only_mounts(void *arg, char *note, size_t size)
 START_TEST(a_read_only_mount_is_refused_and_left_as_it_was)
 {
     char *dir = rt_test_temp_dir();
-    rt_test_path ro = rt_test_path_at(dir, "ro"), bound = rt_test_path_at(dir, "bound");
+    rt_test_path ro = rt_test_path_at(dir, "ro"),
+                 bound = rt_test_path_at(dir, "bound");
     rt_test_path old = rt_test_path_at(bound.s, "old.ppm");
     ck_assert_int_eq(mkdir(ro.s, 0755), 0);
     ck_assert_int_eq(mkdir(bound.s, 0755), 0);
-    rt_test_write_bytes(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(old.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char note[1024];
-    int code = rt_test_in_child(save_on_read_only_mounts, dir, note, sizeof note);
+    int code = rt_test_in_child(save_on_read_only_mounts, dir, note,
+                                sizeof note);
     ck_assert_msg(code == 0, "%s", note);
-    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1));
+    ck_assert(rt_test_file_holds(old.s, rt_test_previous_ppm,
+                                 sizeof rt_test_previous_ppm - 1));
     rt_test_assert_dir_holds(bound.s, "old.ppm");
     rt_test_assert_dir_holds(ro.s, "");
     rt_test_remove_dir(dir);
@@ -327,7 +339,8 @@ int main(void)
 {
     char note[1024] = "";
     rt_test_child probe = rt_test_child_start(privileges_job, NULL);
-    int status = probe.pid > 0 ? rt_test_child_finish(&probe, note, sizeof note) : -1;
+    int status = probe.pid > 0 ? rt_test_child_finish(&probe, note,
+                                                      sizeof note) : -1;
     if (status != 0) {
         printf("test_save_privileged: skipped: needs root in a private "
                "mount namespace (%s)\n",

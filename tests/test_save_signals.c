@@ -119,14 +119,16 @@ typedef struct signal_run {
     char note[1024];
 } signal_run;
 
-/* Starts a child saving over dir/out.ppm (which holds rt_test_previous_ppm), sends
- * it `number` once its temporary file exists, and waits for it. */
+/* Starts a child saving over dir/out.ppm (which holds
+ * rt_test_previous_ppm), sends it `number` once its temporary file exists,
+ * and waits for it. */
 static signal_run save_and_signal(int number, disposition d)
 {
     signal_run run;
     run.dir = rt_test_temp_dir();
     run.out = rt_test_path_at(run.dir, "out.ppm");
-    rt_test_write_bytes(run.out.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1);
+    rt_test_write_bytes(run.out.s, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     signal_case c = {run.out.s, number, d, signal_side()};
     rt_test_child saver = rt_test_child_start(save_while_signalled, &c);
     ck_assert_int_gt(saver.pid, 0);
@@ -140,7 +142,8 @@ static signal_run save_and_signal(int number, disposition d)
 
 static void assert_left_as_it_was(signal_run *run)
 {
-    ck_assert_msg(rt_test_file_holds(run->out.s, rt_test_previous_ppm, sizeof rt_test_previous_ppm - 1),
+    ck_assert_msg(rt_test_file_holds(run->out.s, rt_test_previous_ppm,
+                                     sizeof rt_test_previous_ppm - 1),
                   "the previous file was changed");
     rt_test_assert_dir_holds(run->dir, "out.ppm");
     rt_test_remove_dir(run->dir);

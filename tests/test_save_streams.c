@@ -244,7 +244,7 @@ START_TEST(dev_fd_to_a_positioned_file_writes_at_its_offset_truncating_nothing)
     int fd = open(file, O_RDWR);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 7, SEEK_SET), 7);
-    rt_image image = rt_test_pattern(6, 4);         /* 83 bytes, inside the 300 */
+    rt_image image = rt_test_pattern(6, 4); /* 83 bytes, inside the 300 */
     bytes expected = encode(&image);
     save_ok(fd_name("/dev/fd/%d", fd).s, &image);
     ck_assert_int_eq(lseek(fd, 0, SEEK_CUR), 7 + (off_t)expected.size);

@@ -205,7 +205,8 @@ START_TEST(the_loader_names_a_facet_in_a_plane_through_the_eye)
         "2\n1,2,3, 0, 255,0,0\n4,5,6, 0, 0,255,0\n"
         "0,0,0\n0,0,5, 255,255,255\n");
     ck_assert_int_eq(rt_test_count_warnings(scene, "plane through the eye"), 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "facet 1 lies in a plane"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "facet 1 lies in a plane"),
+                     1);
     rt_scene_destroy(scene);
 }
 END_TEST

@@ -138,7 +138,8 @@ START_TEST(finished_window_equals_rt_export_image_pixel_for_pixel)
                   "%s", error.message);
     remove("viewer-cubes-export.ppm");
 
-    rt_image frame = show_until_done(rt_test_load_source_scene("scenes/cubes.scn"), 0);
+    rt_image frame =
+        show_until_done(rt_test_load_source_scene("scenes/cubes.scn"), 0);
     ck_assert_int_eq(frame.width, exported.width);
     ck_assert_int_eq(frame.height, exported.height);
     rt_test_assert_same_image(&frame, &exported, "viewer-cubes");
@@ -155,7 +156,8 @@ START_TEST(finished_window_equals_library_render_for_each_scene)
         rt_scene *reference_scene = rt_test_load_source_scene(scenes[i]);
         rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
         rt_scene_destroy(reference_scene);
-        rt_image frame = show_until_done(rt_test_load_source_scene(scenes[i]), (int)i % 3);
+        rt_image frame = show_until_done(rt_test_load_source_scene(scenes[i]),
+                                         (int)i % 3);
         rt_test_assert_same_image(&frame, &expected, "viewer-scene");
         rt_image_release(&frame);
         rt_image_release(&expected);
@@ -199,9 +201,10 @@ START_TEST(intermediate_frames_show_only_finished_rows)
     gate g;
     ck_assert_int_eq(sem_init(&g.paused, 0, 0), 0);
     ck_assert_int_eq(sem_init(&g.resume, 0, 0), 0);
-    view_window *window = rt_test_view_window_open(expected.width, expected.height);
+    view_window *window = rt_test_view_window_open(expected.width,
+                                                   expected.height);
     view_session *session = rt_test_view_session(heavy_scene(300, 96, 72), 2,
-                                        gate_notify, &g);
+                                                 gate_notify, &g);
     ck_assert(view_window_attach(window, session, NULL, 0));
 
     rt_image first = rt_test_view_window_read(window);
@@ -256,7 +259,7 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
 {
     int threads_before = rt_test_baseline_thread_count();
     view_session *session = rt_test_view_session(heavy_scene(2000, 48, 1500), 0,
-                                        NULL, NULL);
+                                                 NULL, NULL);
     ck_assert_int_eq(view_session_start(session), RT_OK);
 
     view_progress progress;
@@ -277,7 +280,8 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
         fprintf(stderr, "cancel: %.4f s after %d rows\n", took,
                 progress.rows_done);
     ck_assert_msg(took < 0.5, "cancelling took %.3f s", took);
-    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2),
+                     threads_before);
 
     view_session_get_progress(session, &progress);
     ck_assert_int_eq(progress.state, VIEW_CANCELLED);
@@ -294,7 +298,8 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
     ck_assert_int_eq(marked, progress.rows_done);
 
     view_session_destroy(session);
-    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2),
+                     threads_before);
 }
 END_TEST
 
@@ -303,14 +308,15 @@ START_TEST(destroying_a_rendering_session_joins_its_thread)
     int threads_before = rt_test_baseline_thread_count();
     for (int i = 0; i < 5; i++) {
         view_session *session = rt_test_view_session(heavy_scene(1500, 64, 400),
-                                            i % 3, NULL, NULL);
+                                                     i % 3, NULL, NULL);
         ck_assert_int_eq(view_session_start(session), RT_OK);
         rt_test_sleep_ms(i * 7);
         double started = rt_test_now();
         view_session_destroy(session);
         double took = rt_test_now() - started;
         ck_assert_msg(took < 0.5, "destroying took %.3f s", took);
-        ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2), threads_before);
+        ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2),
+                         threads_before);
     }
 }
 END_TEST
@@ -322,8 +328,9 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
     rt_scene_destroy(reference_scene);
 
     view_window *window = rt_test_view_window_open(80, 60);
-    view_session *session = rt_test_view_session(heavy_scene(400, 80, 60), 0, NULL,
-                                        NULL);
+    view_session *session = rt_test_view_session(heavy_scene(400, 80, 60), 0,
+                                                 NULL,
+                                                 NULL);
     ck_assert(view_window_attach(window, session, NULL, 0));
     ck_assert_int_eq(view_session_start(session), RT_OK);
     rt_test_view_wait(session);
@@ -370,8 +377,9 @@ END_TEST
 
 START_TEST(taking_rows_returns_each_finished_row_once_in_order)
 {
-    view_session *session = rt_test_view_session(heavy_scene(50, 32, 300), 0, NULL,
-                                        NULL);
+    view_session *session = rt_test_view_session(heavy_scene(50, 32, 300), 0,
+                                                 NULL,
+                                                 NULL);
     const rt_image *image = view_session_image(session);
     int *rows = malloc(sizeof *rows * (size_t)image->height);
     char *seen = calloc((size_t)image->height, 1);
@@ -505,8 +513,8 @@ START_TEST(size_beyond_the_image_limit_is_refused_with_a_reason)
     options.render.height = 10;
     view_session *session = (view_session *)1;
     rt_error error;
-    ck_assert_int_eq(view_session_create(rt_test_load_source_scene("scenes/cubes.scn"),
-                                         &options, &session, &error),
+    rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
+    ck_assert_int_eq(view_session_create(scene, &options, &session, &error),
                      RT_ERR_ARGUMENT);
     ck_assert_ptr_null(session);
     ck_assert_msg(error.message[0] != '\0', "no reason given");

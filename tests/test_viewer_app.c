@@ -233,7 +233,8 @@ START_TEST(a_scene_that_never_loaded_exits_1_when_the_window_closes)
     ck_assert_int_eq(SDL_PushEvent(&quit), 1);
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 0);
-    ck_assert(rt_test_view_app_load(app, rt_test_source_path("scenes/empty.scn")));
+    ck_assert(rt_test_view_app_load(app,
+                                    rt_test_source_path("scenes/empty.scn")));
     ck_assert_int_eq(view_app_exit_status(app), 0);
     rt_test_view_app_close(app);
 }

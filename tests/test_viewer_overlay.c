@@ -212,7 +212,8 @@ END_TEST
 static view_app *open_cubes_app(void)
 {
     view_app *app = rt_test_view_app(NULL, 0, 1);
-    ck_assert(rt_test_view_app_load(app, rt_test_source_path("scenes/cubes.scn")));
+    ck_assert(rt_test_view_app_load(app,
+                                    rt_test_source_path("scenes/cubes.scn")));
     rt_test_view_app_image(app);
     view_window_sync(view_app_window(app));
     return app;
@@ -379,7 +380,8 @@ START_TEST(view_option_starts_in_that_debug_view)
     char error[256];
     view_app *app = view_app_create(&options, error, sizeof error);
     ck_assert_msg(app != NULL, "%s", error);
-    ck_assert(rt_test_view_app_load(app, rt_test_source_path("scenes/cubes.scn")));
+    ck_assert(rt_test_view_app_load(app,
+                                    rt_test_source_path("scenes/cubes.scn")));
     ck_assert_ptr_nonnull(strstr(view_app_title(app), "facet view"));
     /* A light the scene does not have: the picture, and the reason. */
     ck_assert(!view_app_set_view(app, RT_VIEW_SHADOW, 7));

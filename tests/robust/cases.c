@@ -40,7 +40,8 @@ int rb_is_double(rt_precision p) { return p == RT_PRECISION_DOUBLE; }
 rt_vec3 rb_random_in_ball(rt_test_rng *rng, double radius)
 {
     for (;;) {
-        rt_vec3 p = rb_v(rt_test_rng_range(rng, -1, 1), rt_test_rng_range(rng, -1, 1),
+        rt_vec3 p = rb_v(rt_test_rng_range(rng, -1, 1),
+                         rt_test_rng_range(rng, -1, 1),
                          rt_test_rng_range(rng, -1, 1));
         if (rb_dot(p, p) <= 1)
             return rb_scale(p, radius);
@@ -114,7 +115,8 @@ rt_vec3 rb_shared_point(const rb_mesh *m, const rb_shared *sh, rt_test_rng *rng,
     if (sh->vertex_count > 0 && rt_test_rng_uniform(rng) < vertex_share)
         return m->vertices[sh->vertices[(int)(rt_test_rng_uniform(rng) * sh->vertex_count)]];
     const int *e = sh->edges[(int)(rt_test_rng_uniform(rng) * sh->edge_count)];
-    return rb_lerp(m->vertices[e[0]], m->vertices[e[1]], rt_test_rng_uniform(rng));
+    return rb_lerp(m->vertices[e[0]], m->vertices[e[1]],
+                   rt_test_rng_uniform(rng));
 }
 
 int rb_hit_is_nan(const rb_hit *h)
@@ -128,8 +130,10 @@ int rb_hit_is_nan(const rb_hit *h)
 
 const rb_case rb_cases[] = {
     {"W1", "watertightness", "Closed icosphere (320 facets), radius 1e-3; 100,000 rays from inside aimed at shared edges (70%) and vertices (30%)", "a ray that hits nothing", rb_case_w1},
-    {"W2", "watertightness", "The same sphere at radius 1", "a ray that hits nothing", rb_case_w2},
-    {"W3", "watertightness", "The same sphere at radius 1e3", "a ray that hits nothing", rb_case_w3},
+    {"W2", "watertightness", "The same sphere at radius 1",
+     "a ray that hits nothing", rb_case_w2},
+    {"W3", "watertightness", "The same sphere at radius 1e3",
+     "a ray that hits nothing", rb_case_w3},
     {"W4", "watertightness", "Cone of 64 thin facets around one apex; 50,000 rays from all around aimed at the apex and along the spokes", "a ray that hits nothing", rb_case_w4},
     {"W5", "watertightness", "Tilted 16x16 grid near (1e6, 1e6, 5e5), integer vertices, windings alternating; 100,000 rays from above aimed at shared edges and vertices", "a ray that hits nothing", rb_case_w5},
     {"D1", "degenerate facets", "Seven zero-area facets (repeated and exactly collinear vertices, at 1e-9 to 1e15); 70,000 rays aimed at their segments", "any hit (zero-area facets are never hit); ours also: live count 0 and one warning each", rb_case_d1},
@@ -141,7 +145,8 @@ const rb_case rb_cases[] = {
     {"T2", "invariance", "The same scene scaled by 1e-6", "as T1", rb_case_t2},
     {"T3", "invariance", "The same scene scaled by 1e6", "as T1", rb_case_t3},
     {"T4", "invariance", "The same scene scaled by 1e-150 (float: 1e-15)", "as T1", rb_case_t4},
-    {"T5", "invariance", "The same scene scaled by 1e150 (float: 1e15)", "as T1", rb_case_t5},
+    {"T5", "invariance", "The same scene scaled by 1e150 (float: 1e15)",
+     "as T1", rb_case_t5},
     {"S1", "self-intersection", "Tessellated floor, slab box lifted 2e-3 over it (1e-3 of the size), light above; all scaled by 1e-6; 50,000 rays from the gap to the floor under the slab, 50,000 from above to the open floor", "under the slab: any light (a leak); open floor: N.S off by more than 1e-3 (acne)", rb_case_s1},
     {"S2", "self-intersection", "The same at scale 1e-3", "as S1", rb_case_s2},
     {"S3", "self-intersection", "The same at scale 1", "as S1", rb_case_s3},

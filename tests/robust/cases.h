@@ -66,8 +66,10 @@ typedef void rb_case_fn(rb_method method, rt_precision precision,
 rb_case_fn rb_case_w1, rb_case_w2, rb_case_w3, rb_case_w4, rb_case_w5;
 rb_case_fn rb_case_d1, rb_case_d2, rb_case_d3, rb_case_d4, rb_case_d5;
 rb_case_fn rb_case_t1, rb_case_t2, rb_case_t3, rb_case_t4, rb_case_t5;
-rb_case_fn rb_case_s1, rb_case_s2, rb_case_s3, rb_case_s4, rb_case_s5, rb_case_s6;
-rb_case_fn rb_case_l1, rb_case_l2, rb_case_l3, rb_case_l4, rb_case_l5, rb_case_l6;
+rb_case_fn rb_case_s1, rb_case_s2, rb_case_s3, rb_case_s4, rb_case_s5,
+           rb_case_s6;
+rb_case_fn rb_case_l1, rb_case_l2, rb_case_l3, rb_case_l4, rb_case_l5,
+           rb_case_l6;
 rb_case_fn rb_case_c1, rb_case_c2, rb_case_c3;
 rb_case_fn rb_case_r1, rb_case_r2;
 rb_case_fn rb_case_v1, rb_case_v2, rb_case_v3, rb_case_v4, rb_case_v5;

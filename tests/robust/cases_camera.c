@@ -74,9 +74,11 @@ void rb_case_c2(rb_method method, rt_precision precision, rb_result *r)
     rt_test_rng rng = {21};
     rb_shared sh = rb_shared_of(&m);
     for (int i = 0; i < rb_scaled(100000); i++) {
-        rt_vec3 origin = rb_v(rt_test_rng_range(&rng, -3, 3), rt_test_rng_range(&rng, -3, 3), 0);
+        rt_vec3 origin = rb_v(rt_test_rng_range(&rng, -3, 3),
+                              rt_test_rng_range(&rng, -3, 3), 0);
         rt_vec3 target = i % 2 ? rb_shared_point(&m, &sh, &rng, 0.3)
-                               : rb_v(rt_test_rng_range(&rng, -1, 1), rt_test_rng_range(&rng, -1, 1), 0);
+                               : rb_v(rt_test_rng_range(&rng, -1, 1),
+                                      rt_test_rng_range(&rng, -1, 1), 0);
         rt_vec3 d = rb_sub(target, origin);
         if (d.x == 0 && d.y == 0)
             d.x = 1;

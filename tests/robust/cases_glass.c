@@ -280,7 +280,7 @@ static void glass_run(rb_method method, rt_precision precision, rb_result *r,
         for (int i = 0; i < local.vertex_count; i++)
             m.vertices[i] = glass_place(local.vertices[i], rotate, scale);
         rb_view view = rb_ray_view(scale, glass_place(fl.light, rotate, scale),
-                                SKY);
+                                   SKY);
         rt_scene *scene = rb_scene(&m, &view);
         rb_engine *e = scene ? rb_engine_create(scene, method, precision) : NULL;
         rt_test_rng rng = {seed + (uint64_t)k};
@@ -384,7 +384,8 @@ static void slab_aim(const rb_mesh *m, rt_test_rng *rng, int i, double crit,
                          : 90 - pow(10, rt_test_rng_range(rng, -1, 1));
     theta *= RB_PI / 180;
     double phi = rt_test_rng_range(rng, 0, 2 * RB_PI);
-    double radius = 2 * sqrt(rt_test_rng_uniform(rng)), around = rt_test_rng_range(rng, 0, 2 * RB_PI);
+    double radius = 2 * sqrt(rt_test_rng_uniform(rng)),
+           around = rt_test_rng_range(rng, 0, 2 * RB_PI);
     rt_vec3 f = rb_v(radius * cos(around), radius * sin(around), -2);
     rt_vec3 in = rb_v(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta));
     rt_vec3 x = rb_sub(f, rb_scale(in, 1 / cos(theta)));
@@ -457,7 +458,8 @@ static void prism_aim(const rb_mesh *m, rt_test_rng *rng, int i, double crit,
     }
     double phi = i % 4 < 2 ? 0 : rt_test_rng_range(rng, -0.4, 0.4);
     rt_vec3 in = rb_v(sin(beta) * cos(phi), sin(beta) * sin(phi), -cos(beta));
-    rt_vec3 entry = rb_v(rt_test_rng_range(rng, 0.02, 0.98), rt_test_rng_range(rng, -1, 1), 0);
+    rt_vec3 entry = rb_v(rt_test_rng_range(rng, 0.02, 0.98),
+                         rt_test_rng_range(rng, -1, 1), 0);
     *aim = (glass_aim){rb_sub(entry, rb_scale(in, rt_test_rng_range(rng, 0.5, 1.5))),
                        in, -1, -1, 0, 0, {-1, -1}};
 }
@@ -605,20 +607,22 @@ void rb_case_g4(rb_method method, rt_precision precision, rb_result *r)
             const double *color;
             int lit = 1;
             if (i % 2 == 0) {       /* inside, on the plate */
-                p = rb_v(rt_test_rng_range(&rng, -0.79, -0.21), rt_test_rng_range(&rng, -0.79, 0.79),
-                         -0.5);
-                o = rb_v(rt_test_rng_range(&rng, -0.95, 0.95), rt_test_rng_range(&rng, -0.95, 0.95),
+                p = rb_v(rt_test_rng_range(&rng, -0.79, -0.21),
+                         rt_test_rng_range(&rng, -0.79, 0.79), -0.5);
+                o = rb_v(rt_test_rng_range(&rng, -0.95, 0.95),
+                         rt_test_rng_range(&rng, -0.95, 0.95),
                          rt_test_rng_range(&rng, -0.45, 0.95));
                 light = light_in, color = in_color;
             } else {                /* outside, on the floor */
                 light = light_out, color = out_color;
                 for (;;) {
-                    p = rb_v(rt_test_rng_range(&rng, -7.9, 7.9), rt_test_rng_range(&rng, -7.9, 7.9),
-                             -1.5);
+                    p = rb_v(rt_test_rng_range(&rng, -7.9, 7.9),
+                             rt_test_rng_range(&rng, -7.9, 7.9), -1.5);
                     rt_vec3 up = rb_random_unit(&rng);
                     if (up.z < 0.05)
                         continue;
-                    o = rb_add(p, rb_scale(up, rt_test_rng_range(&rng, 0.3, 3)));
+                    o = rb_add(p,
+                               rb_scale(up, rt_test_rng_range(&rng, 0.3, 3)));
                     double s0, s1;
                     int plane;
                     if (glass_clip(&big, o, rb_sub(p, o), &s0, &s1, &plane) &&

@@ -132,8 +132,10 @@ static void invariance(rb_method method, rt_precision precision, rb_result *r,
     rt_scene *reference_scene = rb_scene(&m, &view);
     unsigned char *mask = edge_mask(reference_scene);
     long nans_a, nans_b;
-    rt_image a = rb_render_view(&m, &view, 1, rb_v(0, 0, 0), method, precision, &nans_a);
-    rt_image b = rb_render_view(&m, &view, scale, shift, method, precision, &nans_b);
+    rt_image a = rb_render_view(&m, &view, 1, rb_v(0, 0, 0), method, precision,
+                                &nans_a);
+    rt_image b = rb_render_view(&m, &view, scale, shift, method, precision,
+                                &nans_b);
     long differ = 0, off_edge = 0, edges = 0;
     r->total = (long)view.width * view.height;
     if (b.pixels == NULL || nans_b < 0) {
@@ -209,8 +211,11 @@ static void duplicates(rb_method method, rt_precision precision, rb_result *r,
     rb_engine *e = rb_engine_create(scene, method, precision);
     rt_test_rng rng = {66};
     for (int i = 0; i < rb_scaled(50000); i++) {
-        rt_vec3 target = rb_v(rt_test_rng_range(&rng, -0.98, 0.98), rt_test_rng_range(&rng, -0.98, 0.98), 0);
-        rt_vec3 origin = rb_add(target, rb_add(rb_random_in_ball(&rng, 0.8), rb_v(0, 0, 1)));
+        rt_vec3 target = rb_v(rt_test_rng_range(&rng, -0.98, 0.98),
+                              rt_test_rng_range(&rng, -0.98, 0.98), 0);
+        rt_vec3 origin = rb_add(target,
+                                rb_add(rb_random_in_ball(&rng, 0.8),
+                                       rb_v(0, 0, 1)));
         target = rb_rotate(target), origin = rb_rotate(origin);
         rb_hit h;
         r->total++;

@@ -37,17 +37,22 @@ static void contact(rb_method method, rt_precision precision, rb_result *r,
         int under = i % 2;
         rt_vec3 origin, target;
         if (under) {
-            origin = rb_v(rt_test_rng_range(&rng, -0.45, 0.45), rt_test_rng_range(&rng, -0.45, 0.45), h / 2);
-            target = rb_v(rt_test_rng_range(&rng, -0.4, 0.4), rt_test_rng_range(&rng, -0.4, 0.4), 0);
+            origin = rb_v(rt_test_rng_range(&rng, -0.45, 0.45),
+                          rt_test_rng_range(&rng, -0.45, 0.45), h / 2);
+            target = rb_v(rt_test_rng_range(&rng, -0.4, 0.4),
+                          rt_test_rng_range(&rng, -0.4, 0.4), 0);
         } else {
-            double x = rt_test_rng_range(&rng, 0.7, 0.98) * (rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1);
+            double x = rt_test_rng_range(&rng, 0.7,
+                                         0.98) * (rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1);
             double y = rt_test_rng_range(&rng, -0.98, 0.98);
             if (i % 4 == 0) {
                 double s = x;
                 x = y, y = s;
             }
             target = rb_v(x, y, 0);
-            origin = rb_add(target, rb_v(rt_test_rng_range(&rng, -0.1, 0.1), rt_test_rng_range(&rng, -0.1, 0.1), 1));
+            origin = rb_add(target,
+                            rb_v(rt_test_rng_range(&rng, -0.1, 0.1),
+                                 rt_test_rng_range(&rng, -0.1, 0.1), 1));
         }
         rt_vec3 to_light = rb_sub(light, target);
         double expected = 200 * to_light.z / rb_length(to_light);
@@ -123,7 +128,8 @@ static void floor_rays(rb_method method, rt_precision precision, rb_result *r,
         if (skip_wall && fabs(target.x) < 0.05)
             target.x = 0.05 + target.x;
         rt_vec3 origin = rb_add(target, rb_v(rt_test_rng_range(&rng, -0.2, 0.2),
-                                             rt_test_rng_range(&rng, -0.2, 0.2), 0.5));
+                                             rt_test_rng_range(&rng, -0.2,
+                                                               0.2), 0.5));
         if (skip_wall && origin.x * target.x <= 0)
             origin.x = target.x;
         double expected = expect(target, light);

@@ -154,7 +154,8 @@ void rb_case_v3(rb_method method, rt_precision precision, rb_result *r)
     rt_image images[2];
     for (int k = 0; k < 2; k++) {
         view.light = rb_scale(dir, k ? 1e200 : 1e30);
-        images[k] = rb_render_view(&m, &view, 1, rb_v(0, 0, 0), method, precision, &nans[k]);
+        images[k] = rb_render_view(&m, &view, 1, rb_v(0, 0, 0), method,
+                                   precision, &nans[k]);
     }
     r->total = 64 * 64;
     if (method == RB_OURS && !rb_is_double(precision) && nans[1] < 0 &&
@@ -195,7 +196,8 @@ void rb_case_v4(rb_method method, rt_precision precision, rb_result *r)
         const rt_facet_desc *f = &m.facets[i % m.facet_count];
         rt_vec3 target = rb_lerp(m.vertices[f->vertex[0]],
                                  rb_lerp(m.vertices[f->vertex[1]],
-                                         m.vertices[f->vertex[2]], rt_test_rng_uniform(&rng)),
+                                         m.vertices[f->vertex[2]],
+                                             rt_test_rng_uniform(&rng)),
                                  rt_test_rng_uniform(&rng));
         rt_vec3 origin = rb_add(target, rb_random_in_ball(&rng, 60));
         rt_ray ray = {origin, rb_sub(target, origin)};
@@ -231,7 +233,7 @@ void rb_case_v5(rb_method method, rt_precision precision, rb_result *r)
     long nans;
     double scale = rb_is_double(precision) ? 1e-310 : 1e-40;
     rt_image image = rb_render_view(&m, &view, scale, rb_v(0, 0, 0), method,
-                                 precision, &nans);
+                                    precision, &nans);
     r->total = 64 * 64;
     if (image.pixels == NULL) {
         snprintf(r->note, sizeof r->note, "refused by rt_scene_create");

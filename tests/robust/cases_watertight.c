@@ -70,11 +70,13 @@ void rb_case_w4(rb_method method, rt_precision precision, rb_result *r)
                              rt_test_rng_uniform(&rng));
         /* From within 60 degrees of the axis, above or below: there the
          * fan covers the apex and the spokes from the ray's view. */
-        rt_vec3 axis = rb_rotate(rb_v(0, 0, rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1));
+        rt_vec3 axis = rb_rotate(rb_v(0, 0,
+                                      rt_test_rng_uniform(&rng) < 0.5 ? -1 : 1));
         rt_vec3 d = rb_random_unit(&rng);
         while (rb_dot(d, axis) < 0.5)
             d = rb_random_unit(&rng);
-        rt_vec3 origin = rb_add(target, rb_scale(d, rt_test_rng_range(&rng, 0.5, 3)));
+        rt_vec3 origin = rb_add(target,
+                                rb_scale(d, rt_test_rng_range(&rng, 0.5, 3)));
         rb_hit h;
         r->total++;
         if (!rb_engine_hit(e, (rt_ray){origin, rb_sub(target, origin)}, &h))
@@ -119,7 +121,8 @@ void rb_case_w5(rb_method method, rt_precision precision, rb_result *r)
         rt_vec3 d = rb_random_unit(&rng);
         if (rb_dot(d, normal) < 0.1)
             d = rb_add(d, rb_scale(normal, 1.1 - rb_dot(d, normal)));
-        rt_vec3 origin = rb_add(target, rb_scale(d, rt_test_rng_range(&rng, 1, 5)));
+        rt_vec3 origin = rb_add(target,
+                                rb_scale(d, rt_test_rng_range(&rng, 1, 5)));
         /* An origin float holds exactly: the same ray in both precisions. */
         origin = rb_v((float)origin.x, (float)origin.y, (float)origin.z);
         rb_hit h;
@@ -226,7 +229,8 @@ static void slivers(rb_method method, rt_precision precision, rb_result *r,
         const rt_facet_desc *f = &m.facets[s];
         rt_vec3 a = m.vertices[f->vertex[0]], b = m.vertices[f->vertex[1]],
                 c = m.vertices[f->vertex[2]];
-        double wu = rt_test_rng_range(&rng, 0.05, 0.9), wv = rt_test_rng_range(&rng, 0.05, 0.95 - wu);
+        double wu = rt_test_rng_range(&rng, 0.05, 0.9),
+               wv = rt_test_rng_range(&rng, 0.05, 0.95 - wu);
         rt_vec3 target = rb_add(a, rb_add(rb_scale(rb_sub(b, a), wu),
                                           rb_scale(rb_sub(c, a), wv)));
         rt_vec3 d = rb_random_unit(&rng);
@@ -313,7 +317,8 @@ void rb_case_d5(rb_method method, rt_precision precision, rb_result *r)
         random_frame(&rng, &u, &v, &n);
         rt_vec3 a = rb_random_in_ball(&rng, 5), b = rb_add(a, u);
         rt_vec3 c = i % 2 ? rb_add(b, rb_scale(v, 1 / aspect))
-                          : rb_add(a, rb_add(rb_scale(u, rt_test_rng_range(&rng, 0.1, 0.9)),
+                          : rb_add(a, rb_add(rb_scale(u, rt_test_rng_range(
+                                                            &rng, 0.1, 0.9)),
                                              rb_scale(v, 1 / aspect)));
         rb_mesh_triangle(&m, a, b, c, 0, GREY);
     }

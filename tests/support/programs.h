@@ -2,12 +2,12 @@
  * programs.h - running the project's programs as a user does: in a folder,
  * with standard input from a file (or /dev/null), standard output and error
  * captured (or standard output to a file the test names), the termination
- * signals and SIGPIPE at their default action, and the exit status read back; or
- * started, watched while it runs (its standard error line by line, its CPU
- * time) and finished later.  Captured streams go to unlinked temporary
- * files, so a run adds nothing to the folder it runs in.  Part of the
- * support library (tests/support/); every function fails the test (Check)
- * when it cannot do its job.
+ * signals and SIGPIPE at their default action, and the exit status read
+ * back; or started, watched while it runs (its standard error line by
+ * line, its CPU time) and finished later.  Captured streams go to
+ * unlinked temporary files, so a run adds nothing to the folder it runs
+ * in.  Part of the support library (tests/support/); every function fails
+ * the test (Check) when it cannot do its job.
  */
 #ifndef RAYTRACE_TEST_PROGRAMS_H
 #define RAYTRACE_TEST_PROGRAMS_H

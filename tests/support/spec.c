@@ -34,26 +34,30 @@ int rt_test_spec_vertex(rt_test_spec *s, rt_vec3 p)
     return s->nv++;
 }
 
-void rt_test_spec_facet(rt_test_spec *s, int a, int b, int c, double k, int r, int g,
+void rt_test_spec_facet(rt_test_spec *s, int a, int b, int c, double k, int r,
+                        int g,
                   int bl)
 {
     ck_assert_int_lt(s->nf, RT_TEST_SPEC_MAX_FACETS);
     s->f[s->nf++] = (rt_test_spec_facet_t){{a, b, c}, k, {r, g, bl}};
 }
 
-void rt_test_spec_triangle(rt_test_spec *s, rt_vec3 a, rt_vec3 b, rt_vec3 c, double k,
+void rt_test_spec_triangle(rt_test_spec *s, rt_vec3 a, rt_vec3 b, rt_vec3 c,
+                           double k,
                      int r, int g, int bl)
 {
-    int ia = rt_test_spec_vertex(s, a), ib = rt_test_spec_vertex(s, b), ic = rt_test_spec_vertex(s, c);
+    int ia = rt_test_spec_vertex(s, a), ib = rt_test_spec_vertex(s, b),
+        ic = rt_test_spec_vertex(s, c);
     rt_test_spec_facet(s, ia, ib, ic, k, r, g, bl);
 }
 
 /* The square a, b, c, d (in order round it) as two facets. */
-void rt_test_spec_quad(rt_test_spec *s, rt_vec3 a, rt_vec3 b, rt_vec3 c, rt_vec3 d,
+void rt_test_spec_quad(rt_test_spec *s, rt_vec3 a, rt_vec3 b, rt_vec3 c,
+                       rt_vec3 d,
                  double k, int r, int g, int bl)
 {
-    int ia = rt_test_spec_vertex(s, a), ib = rt_test_spec_vertex(s, b), ic = rt_test_spec_vertex(s, c),
-        id = rt_test_spec_vertex(s, d);
+    int ia = rt_test_spec_vertex(s, a), ib = rt_test_spec_vertex(s, b),
+        ic = rt_test_spec_vertex(s, c), id = rt_test_spec_vertex(s, d);
     rt_test_spec_facet(s, ia, ib, ic, k, r, g, bl);
     rt_test_spec_facet(s, ia, ic, id, k, r, g, bl);
 }
@@ -67,7 +71,8 @@ void rt_test_spec_light(rt_test_spec *s, rt_vec3 p, int r, int g, int b)
 /* The camera at `eye` looking along `direction` (A = eye + direction, as
  * given: an exact diagonal stays exact), the screen's half-width
  * `half_width` |direction|, right-handed with `up` roughly up. */
-void rt_test_spec_aim(rt_test_spec *s, rt_vec3 eye, rt_vec3 direction, rt_vec3 up,
+void rt_test_spec_aim(rt_test_spec *s, rt_vec3 eye, rt_vec3 direction,
+                      rt_vec3 up,
                 double half_width)
 {
     rt_vec3 right = cross(direction, up);
@@ -79,24 +84,29 @@ void rt_test_spec_aim(rt_test_spec *s, rt_vec3 eye, rt_vec3 direction, rt_vec3 u
 }
 
 /* A closed box [lo, hi] of 12 facets wound outwards. */
-void rt_test_spec_box(rt_test_spec *s, rt_vec3 lo, rt_vec3 hi, double k, int r, int g,
+void rt_test_spec_box(rt_test_spec *s, rt_vec3 lo, rt_vec3 hi, double k, int r,
+                      int g,
                 int b)
 {
     int c[8];
     for (int i = 0; i < 8; i++)
-        c[i] = rt_test_spec_vertex(s, vec(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y,
+        c[i] = rt_test_spec_vertex(s,
+                                   vec(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y,
                              i & 4 ? hi.z : lo.z));
     static const int face[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (int f = 0; f < 6; f++) {
-        rt_test_spec_facet(s, c[face[f][0]], c[face[f][1]], c[face[f][2]], k, r, g, b);
-        rt_test_spec_facet(s, c[face[f][0]], c[face[f][2]], c[face[f][3]], k, r, g, b);
+        rt_test_spec_facet(s, c[face[f][0]], c[face[f][1]], c[face[f][2]], k,
+                           r, g, b);
+        rt_test_spec_facet(s, c[face[f][0]], c[face[f][2]], c[face[f][3]], k,
+                           r, g, b);
     }
 }
 
 static void put_point(rt_test_text *t, rt_vec3 p, double scale)
 {
-    rt_test_text_add(t, "%.17g, %.17g, %.17g", p.x * scale, p.y * scale, p.z * scale);
+    rt_test_text_add(t, "%.17g, %.17g, %.17g", p.x * scale, p.y * scale,
+                     p.z * scale);
 }
 
 /* The .scn text of *s with every coordinate (camera, vertices, lights)
@@ -118,14 +128,16 @@ char *rt_test_spec_text(const rt_test_spec *s, double scale)
     rt_test_text_add(&t, "%d\n", s->nf);
     for (int i = 0; i < s->nf; i++) {
         const rt_test_spec_facet_t *f = &s->f[i];
-        rt_test_text_add(&t, "%d, %d, %d, %.17g, %d, %d, %d\n", f->v[0] + 1, f->v[1] + 1,
+        rt_test_text_add(&t, "%d, %d, %d, %.17g, %d, %d, %d\n", f->v[0] + 1,
+                         f->v[1] + 1,
             f->v[2] + 1, f->k, f->color[0], f->color[1], f->color[2]);
     }
     rt_test_text_add(&t, "%d, %d, %d\n", s->background[0], s->background[1],
         s->background[2]);
     for (int i = 0; i < s->nl; i++) {
         put_point(&t, s->l[i].p, scale);
-        rt_test_text_add(&t, ", %d, %d, %d\n", s->l[i].color[0], s->l[i].color[1],
+        rt_test_text_add(&t, ", %d, %d, %d\n", s->l[i].color[0],
+                         s->l[i].color[1],
             s->l[i].color[2]);
     }
     return t.data;
@@ -160,7 +172,8 @@ void rt_test_kernels_finish(const char *test)
 {
     printf("%s: %s: %d cases, %d renders compared, %d skipped, "
            "%d mismatches\n",
-           program_invocation_short_name, test, tally.cases, tally.renders, tally.skipped,
+           program_invocation_short_name, test, tally.cases, tally.renders,
+               tally.skipped,
            tally.mismatches);
     fflush(stdout);
     ck_assert_msg(tally.mismatches == 0,
@@ -324,7 +337,8 @@ void rt_test_spec_check(const char *name, const rt_test_spec *s, double scale,
     }
     rt_render_options defaults;
     rt_render_options_init(&defaults);
-    rt_test_kernels_check(name, scene, base != NULL ? base : &defaults, precisions);
+    rt_test_kernels_check(name, scene, base != NULL ? base : &defaults,
+                          precisions);
     rt_scene_destroy(scene);
 }
 
