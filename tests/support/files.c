@@ -88,6 +88,13 @@ char *rt_test_read_file(const char *path, size_t *size)
     FILE *file = fopen(path, "rb");
     if (file == NULL)
         return NULL;
+    char *data = rt_test_read_stream(file, size);
+    fclose(file);
+    return data;
+}
+
+char *rt_test_read_stream(FILE *file, size_t *size)
+{
     size_t capacity = 1 << 16, used = 0;
     char *data = malloc(capacity + 1);
     ck_assert_ptr_nonnull(data);
@@ -100,7 +107,6 @@ char *rt_test_read_file(const char *path, size_t *size)
             ck_assert_ptr_nonnull(data);
         }
     }
-    fclose(file);
     data[used] = '\0';
     if (size != NULL)
         *size = used;

@@ -11,6 +11,7 @@
 
 #include <limits.h>
 #include <stddef.h>
+#include <stdio.h>
 
 /* A new empty folder of mode 0700 under $TMPDIR (or /tmp), named
  * rt-test-XXXXXX; malloc'd, and freed by rt_test_remove_dir. */
@@ -40,6 +41,10 @@ const char *rt_test_in_dir(const char *dir, const char *name);
  * counted), its length through *size when not NULL; NULL when it cannot
  * be opened. */
 char *rt_test_read_file(const char *path, size_t *size);
+
+/* The rest of `file` from where it stands, read the same way (the file
+ * stays open). */
+char *rt_test_read_stream(FILE *file, size_t *size);
 
 /* Writes `size` bytes, or the string `text`, to the file at `path`,
  * replacing it. */

@@ -18,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "files.h"
+
 /* Arguments a test may pass, argv[0] and the NULL not counted. */
 #define MAX_ARGS 62
 
@@ -247,21 +249,8 @@ double rt_test_cpu_seconds(const rt_test_process *process)
 static char *read_back(FILE *file, size_t *size)
 {
     ck_assert_int_eq(fseek(file, 0, SEEK_SET), 0);
-    size_t capacity = 1 << 16, used = 0, n;
-    char *data = malloc(capacity + 1);
-    ck_assert_ptr_nonnull(data);
-    while ((n = fread(data + used, 1, capacity - used, file)) > 0) {
-        used += n;
-        if (used == capacity) {
-            capacity *= 2;
-            data = realloc(data, capacity + 1);
-            ck_assert_ptr_nonnull(data);
-        }
-    }
+    char *data = rt_test_read_stream(file, size);
     fclose(file);
-    data[used] = '\0';
-    if (size != NULL)
-        *size = used;
     return data;
 }
 
