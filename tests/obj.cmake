@@ -5,6 +5,12 @@ raytrace_add_suite(test_obj)
 # What the reader gives a render: the automatic camera, the view options,
 # renders (tests/test_obj_view.c).
 raytrace_add_suite(test_obj_view)
+# Models from elsewhere, when RAYTRACE_OBJ_MODELS names a folder of them;
+# without it a visible skip (77).
+add_test(NAME test_obj_view_models COMMAND raytrace_test_obj_view models
+         WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+set_tests_properties(test_obj_view_models PROPERTIES SKIP_RETURN_CODE 77
+                     TIMEOUT 600)
 # The files an OBJ names: the resolver's rule, the budget, each file read
 # once, what is never quoted (tests/test_obj_files.c).
 raytrace_add_suite(test_obj_files)

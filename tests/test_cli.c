@@ -17,10 +17,8 @@
 #include "cli.h"
 #include "testutil.h"
 
-#define SKIPPED 77
-
 /* ------------------------------------------------------------------ */
-/* Files and programs (program_util.h)                                 */
+/* Files and programs (support/programs.h)                              */
 
 static const char *cubes(void)
 {
@@ -633,7 +631,7 @@ int main(int argc, char **argv)
         if (!rt_test_have_python_json()) {
             fprintf(stderr, "test_cli: python3 with its json module is "
                             "not installed; --stats=json not checked\n");
-            return SKIPPED;
+            return RT_TEST_SKIPPED;
         }
         return rt_test_run_suite(cli_json_suite());
     }

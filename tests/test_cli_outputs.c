@@ -596,6 +596,5 @@ static Suite *sources_suite(void)
  * while the loader lists none. */
 int main(int argc, char **argv)
 {
-    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite,
-                                     "test_cli_outputs");
+    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite);
 }

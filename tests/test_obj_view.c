@@ -3,8 +3,9 @@
  * gives a render: the automatic camera (every vertex inside the image, at
  * any image shape), the view and light options in its place, a small cube
  * rendered framed and lit, an OBJ written as .scn rendering the same
- * bytes.  Models from elsewhere are rendered when the folder named by
- * RAYTRACE_OBJ_MODELS holds some (the test says when it skips).
+ * bytes.  Models from elsewhere are the entry `models`
+ * (test_obj_view_models), run when the folder named by RAYTRACE_OBJ_MODELS
+ * holds some, a visible skip (77) otherwise.
  */
 #include <check.h>
 #include <dirent.h>
@@ -201,14 +202,8 @@ END_TEST
 START_TEST(real_models_in_raytrace_obj_models_load_and_render)
 {
     const char *folder = getenv("RAYTRACE_OBJ_MODELS");
-    DIR *dir = folder ? opendir(folder) : NULL;
-    if (dir == NULL) {
-        printf("test_obj_view: SKIPPED real_models_in_raytrace_obj_models_load_"
-               "and_render: set RAYTRACE_OBJ_MODELS to a folder of .obj "
-               "files (e.g. github.com/alecjacobson/common-3d-test-models "
-               "data/) to run it\n");
-        return;
-    }
+    DIR *dir = opendir(folder);
+    ck_assert_msg(dir != NULL, "cannot read %s", folder);
     int models = 0;
     struct dirent *entry;
     while ((entry = readdir(dir)) != NULL) {
@@ -242,8 +237,7 @@ START_TEST(real_models_in_raytrace_obj_models_load_and_render)
         models++;
     }
     closedir(dir);
-    if (models == 0)
-        printf("test_obj_view: SKIPPED: no .obj file in %s\n", folder);
+    ck_assert_msg(models > 0, "no .obj file in %s", folder);
 }
 END_TEST
 
@@ -256,9 +250,43 @@ static Suite *obj_view_suite(void)
     tcase_add_test(c, the_view_and_light_options_replace_the_automatic_ones);
     tcase_add_test(c, a_cube_renders_framed_with_its_red_top_lit);
     tcase_add_test(c, an_obj_written_as_scn_renders_the_same_bytes);
+    suite_add_tcase(s, c);
+    return s;
+}
+
+/* Models from elsewhere: their own ctest entry, test_obj_view_models. */
+static Suite *models_suite(void)
+{
+    Suite *s = suite_create("obj_view, models");
+    TCase *c = tcase_create("models");
+    tcase_set_timeout(c, 600);
     tcase_add_test(c, real_models_in_raytrace_obj_models_load_and_render);
     suite_add_tcase(s, c);
     return s;
 }
 
-RT_CHECK_MAIN(obj_view_suite)
+/* Why the models cannot be checked, or NULL. */
+static const char *no_models(void)
+{
+    const char *folder = getenv("RAYTRACE_OBJ_MODELS");
+    DIR *dir = folder && *folder ? opendir(folder) : NULL;
+    int models = 0;
+    struct dirent *entry;
+    while (dir != NULL && (entry = readdir(dir)) != NULL) {
+        size_t n = strlen(entry->d_name);
+        models += n >= 5 && strcmp(entry->d_name + n - 4, ".obj") == 0;
+    }
+    if (dir != NULL)
+        closedir(dir);
+    if (models == 0)
+        return "set RAYTRACE_OBJ_MODELS to a folder of .obj files (e.g. "
+               "github.com/alecjacobson/common-3d-test-models data/) to run "
+               "real_models_in_raytrace_obj_models_load_and_render";
+    return NULL;
+}
+
+int main(int argc, char **argv)
+{
+    return rt_test_main_with_entry(argc, argv, obj_view_suite, "models",
+                                   models_suite, no_models);
+}

@@ -49,8 +49,8 @@ static fd_path fd_name(const char *format, int fd)
     return p;
 }
 
-/* A scratch folder (hostile_util's) and the names made in it, freed with
- * it. */
+/* A scratch folder (the support library's) and the names made in it,
+ * freed with it. */
 typedef struct folder {
     char *dir;
     char *names[4];

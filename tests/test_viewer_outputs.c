@@ -143,6 +143,5 @@ static Suite *sources_suite(void)
 
 int main(int argc, char **argv)
 {
-    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite,
-                                     "test_viewer_outputs");
+    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite);
 }

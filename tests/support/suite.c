@@ -20,35 +20,50 @@ int rt_test_run_suite(Suite *suite)
     return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
-int rt_test_main_with_shared(int argc, char **argv, Suite *(*main_fn)(void),
-                             Suite *(*shared_fn)(void))
+int rt_test_main_with_entry(int argc, char **argv, Suite *(*main_fn)(void),
+                            const char *entry, Suite *(*entry_fn)(void),
+                            const char *(*missing)(void))
 {
-    if (argc > 1 && strcmp(argv[1], "shared") == 0) {
-        if (rt_test_shared_path("") == NULL) {
-            printf("%s: SKIPPED: ../shared is absent, the course's scenes "
-                   "are not checked\n", argv[0]);
+    if (argc > 1 && strcmp(argv[1], entry) == 0) {
+        const char *why = missing();
+        if (why != NULL) {
+            printf("%s: SKIPPED: %s\n", argv[0], why);
             return RT_TEST_SKIPPED;
         }
-        return rt_test_run_suite(shared_fn());
+        return rt_test_run_suite(entry_fn());
     }
     return rt_test_run_suite(main_fn());
 }
 
+static const char *shared_missing(void)
+{
+    return rt_test_shared_path("") == NULL
+               ? "../shared is absent, the course's scenes are not checked"
+               : NULL;
+}
+
+int rt_test_main_with_shared(int argc, char **argv, Suite *(*main_fn)(void),
+                             Suite *(*shared_fn)(void))
+{
+    return rt_test_main_with_entry(argc, argv, main_fn, "shared", shared_fn,
+                                   shared_missing);
+}
+
+static const char *sources_missing(void)
+{
+    return rt_test_loader_lists_its_files()
+               ? NULL
+               : "the loader does not list the files a load read yet "
+                 "(rt_scene_source_count is 0); the material-library cases "
+                 "are not checked";
+}
+
 int rt_test_main_with_sources(int argc, char **argv,
                               Suite *(*main_fn)(void),
-                              Suite *(*sources_fn)(void), const char *prog)
+                              Suite *(*sources_fn)(void))
 {
-    if (argc > 1 && strcmp(argv[1], "sources") == 0) {
-        if (!rt_test_loader_lists_its_files()) {
-            fprintf(stderr, "%s: the loader does not list the files a load "
-                            "read yet (rt_scene_source_count is 0); the "
-                            "material-library cases are not checked\n",
-                    prog);
-            return RT_TEST_SKIPPED;
-        }
-        return rt_test_run_suite(sources_fn());
-    }
-    return rt_test_run_suite(main_fn());
+    return rt_test_main_with_entry(argc, argv, main_fn, "sources",
+                                   sources_fn, sources_missing);
 }
 
 const char *rt_test_source_path(const char *relative)

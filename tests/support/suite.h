@@ -18,6 +18,14 @@ int rt_test_run_suite(Suite *suite);
 #define RT_CHECK_MAIN(suite_fn)                                              \
     int main(void) { return rt_test_run_suite(suite_fn()); }
 
+/* The main of a suite with a second ctest entry: `prog` runs main_fn's
+ * suite; `prog <entry>` runs entry_fn's, or, when `missing()` gives a
+ * reason (its input is absent), prints "<prog>: SKIPPED: <reason>" and
+ * exits RT_TEST_SKIPPED, a skip ctest shows (SKIP_RETURN_CODE 77). */
+int rt_test_main_with_entry(int argc, char **argv, Suite *(*main_fn)(void),
+                            const char *entry, Suite *(*entry_fn)(void),
+                            const char *(*missing)(void));
+
 /* The main of a suite whose checks on the course's scenes (../shared) are a
  * ctest entry of their own: `prog` runs main_fn's suite; `prog shared` runs
  * shared_fn's suite, or exits RT_TEST_SKIPPED when ../shared is absent. */
@@ -31,12 +39,11 @@ int rt_test_main_with_shared(int argc, char **argv, Suite *(*main_fn)(void),
     }
 
 /* The main of a suite with a `sources` entry: `prog` runs main_fn's suite;
- * `prog sources` runs sources_fn's, or exits RT_TEST_SKIPPED (with a line
- * naming `prog`) while the loader lists no files
- * (rt_test_loader_lists_its_files). */
+ * `prog sources` runs sources_fn's, or exits RT_TEST_SKIPPED while the
+ * loader lists no files (rt_test_loader_lists_its_files). */
 int rt_test_main_with_sources(int argc, char **argv,
                               Suite *(*main_fn)(void),
-                              Suite *(*sources_fn)(void), const char *prog);
+                              Suite *(*sources_fn)(void));
 
 /* "<source dir>/<relative>" in a static buffer (one at a time). */
 const char *rt_test_source_path(const char *relative);
