@@ -6,13 +6,11 @@ raytrace_add_suite(test_explain INTERNAL)
 # reflection included, in rt-export's --explain and (when the viewer is
 # built) rt-view's click (tests/test_explain_terms.c).
 if(TARGET raytrace_viewer)
-  raytrace_add_suite(test_explain_terms SOURCES support/program_util.c
-    LIBS raytrace_cli raytrace_viewer)
+  raytrace_add_suite(test_explain_terms LIBS raytrace_cli raytrace_viewer)
   target_compile_definitions(raytrace_test_explain_terms PRIVATE
     RT_TEST_HAVE_VIEWER=1)
 else()
-  raytrace_add_suite(test_explain_terms SOURCES support/program_util.c
-    LIBS raytrace_cli)
+  raytrace_add_suite(test_explain_terms LIBS raytrace_cli)
   target_compile_definitions(raytrace_test_explain_terms PRIVATE
     RT_TEST_HAVE_VIEWER=0)
 endif()
@@ -21,7 +19,7 @@ set_tests_properties(test_explain_terms PROPERTIES TIMEOUT 120)
 # --explain's, byte for byte (tests/test_explain_same.c; SDL's dummy
 # driver for the click).
 if(TARGET raytrace_viewer)
-  raytrace_add_suite(test_explain_same SOURCES support/program_util.c
+  raytrace_add_suite(test_explain_same
     LIBS raytrace_viewer)
   set_tests_properties(test_explain_same PROPERTIES TIMEOUT 120
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")

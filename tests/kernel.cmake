@@ -7,9 +7,12 @@ target_include_directories(raytrace_test_kernel PRIVATE
 raytrace_add_shared_test(test_kernel)
 
 # The camera-ray packets (src/kernel/packet_impl.h) against the scalar
-# loops: scenes built in memory to stress the tile and shadow culls.
+# loops: scenes built in memory (support/spec.h) to stress the tile and
+# shadow culls; the exact geometry (grids, telephoto, a far eye) in
+# test_packets_edges.
 raytrace_add_suite(test_packets INTERNAL)
+raytrace_add_suite(test_packets_edges INTERNAL)
 
 # What a render prepares once and reuses: the scene's eye, the team of
 # threads (src/base/workers.c), the statistics generated from RT_STATS_MAP.
-raytrace_add_suite(test_prepared INTERNAL SOURCES support/viewer_testutil.c)
+raytrace_add_suite(test_prepared INTERNAL)

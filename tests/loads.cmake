@@ -3,5 +3,5 @@
 # cones, the facet budget, lights, Ks + T, cancellation) and
 # tests/test_load_warnings.c (warnings stored as needed and summarised,
 # repeated facets, names shown escaped).  Included from tests/CMakeLists.txt.
-raytrace_add_suite(test_load_budgets INTERNAL SOURCES support/load_util.c)
-raytrace_add_suite(test_load_warnings INTERNAL SOURCES support/load_util.c)
+raytrace_add_suite(test_load_budgets INTERNAL)
+raytrace_add_suite(test_load_warnings INTERNAL)

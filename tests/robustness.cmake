@@ -4,9 +4,17 @@
 # docs/robustness.md.
 add_library(raytrace_robust STATIC
   robust/cases.c
+  robust/cases_camera.c
+  robust/cases_glass.c
+  robust/cases_invariance.c
+  robust/cases_shadows.c
+  robust/cases_special.c
+  robust/cases_watertight.c
   robust/engine.c
   robust/scenes.c)
-target_link_libraries(raytrace_robust PUBLIC raytrace_internal)
+# The cases use the support library's generator, probe and children.
+target_link_libraries(raytrace_robust PUBLIC raytrace_test_support
+                      raytrace_internal)
 target_include_directories(raytrace_robust PUBLIC
   "${CMAKE_CURRENT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/src")
 target_compile_definitions(raytrace_robust PRIVATE _POSIX_C_SOURCE=200809L)

@@ -13,15 +13,6 @@
 
 #include "testutil.h"
 
-/* One facet filling the middle of a 40 x 30 image. */
-static const char *const small_scene =
-    "0,0,-5\n"
-    "0,0,0, 1,0,0, 40,30\n"
-    "3\n-1,-1,2\n1,-1,2\n0,1,2\n"
-    "1\n1,2,3, 0, 200,100,50\n"
-    "10,20,30\n"
-    "0,0,-5, 255,255,255\n";
-
 /* Fails the test unless `error` reports `status` with `text` in its
  * message. */
 static void assert_reported(const rt_error *error, rt_status status,
@@ -46,7 +37,7 @@ END_TEST
 
 START_TEST(old_caller_without_size_fields_renders_at_scene_size)
 {
-    rt_scene *scene = rt_test_scene_from_string(small_scene);
+    rt_scene *scene = rt_test_scene_from_string(rt_test_centred_facet_scene);
     rt_render_options options;
     rt_render_options_init(&options);
     /* A caller built before width, height and region existed: its struct
@@ -77,7 +68,7 @@ END_TEST
 
 START_TEST(options_of_size_zero_or_too_large_are_refused)
 {
-    rt_scene *scene = rt_test_scene_from_string(small_scene);
+    rt_scene *scene = rt_test_scene_from_string(rt_test_centred_facet_scene);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     rt_render_options options;
@@ -97,7 +88,8 @@ START_TEST(options_of_size_zero_or_too_large_are_refused)
     rt_load_options load;
     memset(&load, 0, sizeof load);
     rt_scene *loaded = (rt_scene *)&load;       /* must become NULL */
-    ck_assert_int_eq(rt_scene_parse_with(small_scene, strlen(small_scene),
+    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
+                                         strlen(rt_test_centred_facet_scene),
                                          "a.scn", &load, &loaded, &error),
                      RT_ERR_ARGUMENT);
     ck_assert_ptr_null(loaded);
@@ -116,7 +108,8 @@ START_TEST(old_load_options_read_only_their_fields)
     load.fov = -1.0;                    /* refused if it were read */
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse_with(small_scene, strlen(small_scene),
+    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
+                                         strlen(rt_test_centred_facet_scene),
                                          "a.scn", &load, &scene, &error),
                      RT_OK);
     rt_scene_destroy(scene);
@@ -125,7 +118,7 @@ END_TEST
 
 START_TEST(render_into_image_of_wrong_size_names_both_sizes)
 {
-    rt_scene *scene = rt_test_scene_from_string(small_scene);
+    rt_scene *scene = rt_test_scene_from_string(rt_test_centred_facet_scene);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 400, 300, NULL), RT_OK);
     rt_render_options options;
@@ -146,7 +139,7 @@ END_TEST
 
 START_TEST(bad_render_options_say_what_is_wrong)
 {
-    rt_scene *scene = rt_test_scene_from_string(small_scene);
+    rt_scene *scene = rt_test_scene_from_string(rt_test_centred_facet_scene);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     rt_render_options options;
@@ -181,7 +174,7 @@ END_TEST
 
 START_TEST(cancelled_render_says_so)
 {
-    rt_scene *scene = rt_test_scene_from_string(small_scene);
+    rt_scene *scene = rt_test_scene_from_string(rt_test_centred_facet_scene);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     rt_cancel *cancel;

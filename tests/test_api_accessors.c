@@ -16,30 +16,21 @@
  * with NDEBUG.
  */
 #include <check.h>
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include "testutil.h"
-
-/* One facet filling the middle of a 40 x 30 image, one light, no
- * warning, no source file. */
-static const char scene_text[] =
-    "0,0,-5\n"
-    "0,0,0, 1,0,0, 40,30\n"
-    "3\n-1,-1,2\n1,-1,2\n0,1,2\n"
-    "1\n1,2,3, 0, 200,100,50\n"
-    "10,20,30\n"
-    "0,0,-5, 255,255,255\n";
 
 static rt_scene *scene;
 
 static void setup(void)
 {
-    ck_assert_int_eq(rt_scene_parse(scene_text, sizeof scene_text - 1, NULL,
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene), NULL,
                                      &scene, NULL), RT_OK);
 }
 
@@ -165,33 +156,24 @@ ACCESSOR_CASES(ACCESSOR)
 static const accessor_case accessor_cases[] = {ACCESSOR_CASES(ACCESSOR_ROW)};
 #define ACCESSOR_COUNT (sizeof accessor_cases / sizeof accessor_cases[0])
 
+/* The job of a child that makes the bad call (an abort ends it). */
+static int make_the_call(void *arg, char *note, size_t size)
+{
+    (void)note, (void)size;
+    const accessor_case *c = arg;
+    signal(SIGABRT, SIG_DFL);
+    (void)c->zero();
+    return 0;
+}
+
 /* Makes the bad call in a child with its standard error in a pipe:
  * returns the wait status and what the child wrote. */
 static int call_in_child(const accessor_case *c, char *said, size_t size)
 {
-    int fds[2];
-    ck_assert_int_eq(pipe(fds), 0);
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        close(fds[0]);
-        dup2(fds[1], 2);
-        signal(SIGABRT, SIG_DFL);
-        (void)c->zero();
-        _exit(0);
-    }
-    close(fds[1]);
-    size_t used = 0;
-    ssize_t n;
-    while (used + 1 < size && (n = read(fds[0], said + used,
-                                        size - used - 1)) > 0)
-        used += (size_t)n;
-    said[used] = '\0';
-    close(fds[0]);
-    int status;
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    return status;
+    rt_test_child child =
+        rt_test_child_start_with_stderr(make_the_call, (void *)c);
+    ck_assert_msg(child.pid > 0, "fork: %s", strerror(errno));
+    return rt_test_child_finish(&child, said, size);
 }
 
 START_TEST(each_accessor_asserts_its_index_and_pointers)

@@ -21,15 +21,6 @@
 
 #include "testutil.h"
 
-/* One facet filling the middle of a 40 x 30 image, one light. */
-static const char scene_text[] =
-    "0,0,-5\n"
-    "0,0,0, 1,0,0, 40,30\n"
-    "3\n-1,-1,2\n1,-1,2\n0,1,2\n"
-    "1\n1,2,3, 0, 200,100,50\n"
-    "10,20,30\n"
-    "0,0,-5, 255,255,255\n";
-
 static const char ppm_text[] = "P3\n1 1\n255\n1 2 3\n";
 
 /* What the calls of the tables use: a scene, an image of its size, a
@@ -40,7 +31,8 @@ static FILE *sink_file;
 
 static void setup(void)
 {
-    ck_assert_int_eq(rt_scene_parse(scene_text, sizeof scene_text - 1, NULL,
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene), NULL,
                                      &scene, NULL), RT_OK);
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     sink_file = fopen("/dev/null", "wb");
@@ -180,7 +172,9 @@ static rt_status save_view(rt_image view, rt_error *error)
       rt_scene_create(&(rt_scene_desc){0}, NULL, error))                     \
     X(n37, RT_ERR_ARGUMENT, rt_scene_parse(NULL, 5, NULL, &out_scene, error))\
     X(n38, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse(scene_text, sizeof scene_text - 1, NULL, NULL, error))  \
+      rt_scene_parse(rt_test_centred_facet_scene,                            \
+                     strlen(rt_test_centred_facet_scene), NULL, NULL,        \
+                     error))                                                 \
     X(n39, RT_ERR_ARGUMENT, rt_scene_load(NULL, &out_scene, error))          \
     X(n40, RT_ERR_ARGUMENT, rt_scene_load("x.scn", NULL, error))             \
     X(n41, RT_ERR_ARGUMENT,                                                  \
@@ -191,7 +185,8 @@ static rt_status save_view(rt_image view, rt_error *error)
     X(n44, RT_ERR_ARGUMENT,                                                  \
       rt_scene_parse_with(NULL, 5, "a.obj", NULL, &out_scene, error))        \
     X(n45, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse_with(scene_text, 5, NULL, NULL, NULL, error))           \
+      rt_scene_parse_with(rt_test_centred_facet_scene, 5, NULL, NULL, NULL,  \
+                          error))                                            \
     X(n46, RT_ERR_ARGUMENT,                                                  \
       rt_scene_load_with(NULL, NULL, &out_scene, error))                     \
     X(n47, RT_ERR_ARGUMENT, rt_scene_load_with("x.scn", NULL, NULL, error))  \
@@ -493,7 +488,7 @@ static const struct {
     const char *name;
     const char *text;
 } load_inputs[] = {
-    {"edge.scn", scene_text},
+    {"edge.scn", rt_test_centred_facet_scene},
     {"edge.nff", "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\n"
                  "hither 1\nresolution 40 30\nl 1 1 -5\n"
                  "p 3 -1 -1 2 1 -1 2 0 1 2\n"},

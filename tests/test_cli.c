@@ -15,13 +15,10 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "program_util.h"
 #include "testutil.h"
 
-#define SKIPPED 77
-
 /* ------------------------------------------------------------------ */
-/* Files and programs (program_util.h)                                 */
+/* Files and programs (support/programs.h)                              */
 
 static const char *cubes(void)
 {
@@ -43,10 +40,10 @@ static char *export_image(const char *dir, const char *const *args,
     all[n++] = "out.ppm";
     all[n++] = "-q";
     all[n] = NULL;
-    run r = run_in(dir, RT_EXPORT_PATH, all);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, all);
     ck_assert_msg(r.code == 0, "rt-export failed (%d): %s", r.code, r.err);
-    run_free(&r);
-    char *image = rt_test_read_file(in_dir(dir, "out.ppm"), size);
+    rt_test_output_free(&r);
+    char *image = rt_test_read_file(rt_test_in_dir(dir, "out.ppm"), size);
     ck_assert_ptr_nonnull(image);
     return image;
 }
@@ -218,7 +215,7 @@ END_TEST
 
 START_TEST(bad_values_print_the_option_the_limits_and_the_value)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const struct {
         const char *args[5];
         const char *message;
@@ -244,7 +241,7 @@ START_TEST(bad_values_print_the_option_the_limits_and_the_value)
         {{NULL}, "expected a scene file"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
-        run r = run_in(dir, RT_EXPORT_PATH, cases[i].args);
+        rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, cases[i].args);
         char expected[512];
         snprintf(expected, sizeof expected,
                  "rt-export: %s\nTry 'rt-export --help'.\n",
@@ -252,9 +249,9 @@ START_TEST(bad_values_print_the_option_the_limits_and_the_value)
         ck_assert_msg(r.code == 2, "case %zu: exit %d", i, r.code);
         ck_assert_str_eq(r.err, expected);
         ck_assert_str_eq(r.out, "");
-        run_free(&r);
+        rt_test_output_free(&r);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -277,7 +274,7 @@ static const char *base_name(const char *path)
 
 START_TEST(every_program_has_the_same_limits_and_words)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const struct {
         const char *args[4];
         const char *message;
@@ -292,17 +289,17 @@ START_TEST(every_program_has_the_same_limits_and_words)
     for (size_t p = 0; p < sizeof programs / sizeof *programs; p++) {
         const char *name = base_name(programs[p]);
         for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
-            run r = run_in(dir, programs[p], cases[i].args);
+            rt_test_output r = rt_test_run(dir, programs[p], cases[i].args);
             char expected[512];
             snprintf(expected, sizeof expected, "%s: %s\nTry '%s --help'.\n",
                      name, cases[i].message, name);
             ck_assert_msg(r.code == 2, "%s case %zu: exit %d", name, i,
                           r.code);
             ck_assert_str_eq(r.err, expected);
-            run_free(&r);
+            rt_test_output_free(&r);
         }
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -320,11 +317,11 @@ static char *line_starting(const char *text, const char *start)
 
 START_TEST(every_help_comes_from_the_one_table)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     const char *const help[] = {"--help", NULL};
     char *first_line = NULL;
     for (size_t p = 0; p < sizeof programs / sizeof *programs; p++) {
-        run r = run_in(dir, programs[p], help);
+        rt_test_output r = rt_test_run(dir, programs[p], help);
         ck_assert_int_eq(r.code, 0);
         ck_assert_str_eq(r.err, "");
         char usage[256];
@@ -341,10 +338,10 @@ START_TEST(every_help_comes_from_the_one_table)
             free(line);
         }
         ck_assert_ptr_nonnull(strstr(r.out, "--size=WxH"));
-        run_free(&r);
+        rt_test_output_free(&r);
     }
     free(first_line);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -389,14 +386,14 @@ static void write_cubes_at(const char *dir, const char *name, int width,
             out[used++] = *line++;
     }
     out[used] = '\0';
-    rt_test_write_file(in_dir(dir, name), out);
+    rt_test_write_file(rt_test_in_dir(dir, name), out);
     free(out);
     free(text);
 }
 
 START_TEST(size_equals_a_scene_edited_to_that_size)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const struct {
         const char *option, *value;
         int width, height;
@@ -426,7 +423,7 @@ START_TEST(size_equals_a_scene_edited_to_that_size)
         free(a);
         free(b);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -486,40 +483,40 @@ static void check_regions(const char *dir, const char *samples,
 
 START_TEST(region_equals_the_crop_of_the_whole_image)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     check_regions(dir, "1", "regular");
     check_regions(dir, "4", "stratified");
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(region_outside_the_image_is_a_usage_error_before_rendering)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     const char *args[] = {cubes(), "--size=40x30", "--region=0,0,41,30",
                           "-o", "out.ppm", NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, args);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
     ck_assert_int_eq(r.code, 2);
     ck_assert_msg(strncmp(r.err, "rt-export: --region: ", 21) == 0, "%s",
                   r.err);
     ck_assert_ptr_nonnull(strstr(r.err, "40 x 30"));
     ck_assert_ptr_nonnull(strstr(r.err, "Try 'rt-export --help'."));
-    ck_assert_int_eq(access(in_dir(dir, "out.ppm"), F_OK), -1);
-    run_free(&r);
-    remove_dir(dir);
+    ck_assert_int_eq(access(rt_test_in_dir(dir, "out.ppm"), F_OK), -1);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(no_progress_line_off_a_terminal_unless_asked)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     const char *args[] = {cubes(), "--size=16x12", "-o", "out.ppm", NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, args);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
     ck_assert_int_eq(r.code, 0);
     ck_assert_str_eq(r.err, "");
     ck_assert_str_eq(r.out, "out.ppm\n");
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -556,8 +553,8 @@ static void check_json(const char *dir, const char *err, const char *w,
                        const char *h, const char *samples,
                        const char *region, const char *scene)
 {
-    rt_test_write_file(in_dir(dir, "check.py"), json_check);
-    rt_test_write_file(in_dir(dir, "stats.txt"), err);
+    rt_test_write_file(rt_test_in_dir(dir, "check.py"), json_check);
+    rt_test_write_file(rt_test_in_dir(dir, "stats.txt"), err);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 check.py %s %s 40 30 %s '%s' '%s' "
@@ -568,26 +565,26 @@ static void check_json(const char *dir, const char *err, const char *w,
 
 START_TEST(stats_json_is_one_object_a_json_parser_reads)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     /* a name that needs escaping: a quote and a backslash */
     char *text = rt_test_read_file(cubes(), NULL);
-    rt_test_write_file(in_dir(dir, "cu\"b\\es.scn"), text);
+    rt_test_write_file(rt_test_in_dir(dir, "cu\"b\\es.scn"), text);
     free(text);
     const char *whole[] = {"cu\"b\\es.scn", "--size=40x30", "--stats=json",
                            "-q", "-o", "out.ppm", NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, whole);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, whole);
     ck_assert_msg(r.code == 0, "%s", r.err);
     ck_assert_int_eq(strchr(r.err, '\n') - r.err + 1, (long)strlen(r.err));
     check_json(dir, r.err, "40", "30", "1", "null", "cu\"b\\es.scn");
-    run_free(&r);
+    rt_test_output_free(&r);
     const char *region[] = {cubes(), "--size=40x30", "--region=2,3,12,9",
                             "--samples=4", "--stats=json", "-o", "out.ppm",
                             NULL};
-    r = run_in(dir, RT_EXPORT_PATH, region);
+    r = rt_test_run(dir, RT_EXPORT_PATH, region);
     ck_assert_msg(r.code == 0, "%s", r.err);
     check_json(dir, r.err, "10", "6", "4", "2,3,12,9", cubes());
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -631,10 +628,10 @@ static Suite *cli_json_suite(void)
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "json") == 0) {
-        if (!python_has_json()) {
+        if (!rt_test_have_python_json()) {
             fprintf(stderr, "test_cli: python3 with its json module is "
                             "not installed; --stats=json not checked\n");
-            return SKIPPED;
+            return RT_TEST_SKIPPED;
         }
         return rt_test_run_suite(cli_json_suite());
     }

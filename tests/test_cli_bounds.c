@@ -13,7 +13,6 @@
 
 #include "cli.h"
 #include "cli_values.h"
-#include "program_util.h"
 #include "testutil.h"
 
 START_TEST(a_closed_maximum_is_in_the_interval)
@@ -95,38 +94,38 @@ END_TEST
 
 #ifdef RT_VIEW_PATH
 /* rt-view with `args`, no display named (it then never opens a window). */
-static run view(const char *dir, const char *const *args)
+static rt_test_output view(const char *dir, const char *const *args)
 {
     unsetenv("DISPLAY");
     unsetenv("WAYLAND_DISPLAY");
     unsetenv("SDL_VIDEODRIVER");
-    return run_in(dir, RT_VIEW_PATH, args);
+    return rt_test_run(dir, RT_VIEW_PATH, args);
 }
 
 START_TEST(rt_view_takes_scale_64_as_its_help_says)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     /* 64 passes the table: the next check, --scale with --width, speaks */
     const char *with_width[] = {"--scale", "64", "--width", "10", NULL};
-    run r = view(dir, with_width);
+    rt_test_output r = view(dir, with_width);
     ck_assert_int_eq(r.code, 2);
     ck_assert_str_eq(r.err, "rt-view: --scale: not with --size, --width or "
                             "--height\nTry 'rt-view --help'.\n");
-    run_free(&r);
+    rt_test_output_free(&r);
     /* alone, it goes as far as the display */
     const char *alone[] = {"--scale", "64", NULL};
     r = view(dir, alone);
     ck_assert_int_eq(r.code, 1);
     ck_assert_msg(strstr(r.err, "rt-view: cannot open a window: ") == r.err,
                   "%s", r.err);
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(rt_view_refuses_a_scale_past_either_end)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const struct {
         const char *value, *message;
     } cases[] = {
@@ -137,13 +136,13 @@ START_TEST(rt_view_refuses_a_scale_past_either_end)
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         const char *args[] = {"--scale", cases[i].value, NULL};
-        run r = view(dir, args);
+        rt_test_output r = view(dir, args);
         ck_assert_int_eq(r.code, 2);
         ck_assert_msg(strncmp(r.err, cases[i].message,
                               strlen(cases[i].message)) == 0, "%s", r.err);
-        run_free(&r);
+        rt_test_output_free(&r);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 #endif

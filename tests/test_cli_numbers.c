@@ -15,7 +15,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "program_util.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------------ */
@@ -201,7 +200,7 @@ END_TEST
 
 START_TEST(range_messages_give_the_bound_and_the_value)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const struct {
         const char *option, *value, *message;
     } cases[] = {
@@ -244,7 +243,7 @@ START_TEST(range_messages_give_the_bound_and_the_value)
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         const char *args[] = {cases[i].option, cases[i].value, "s.scn",
                               NULL};
-        run r = run_in(dir, RT_EXPORT_PATH, args);
+        rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
         char expected[512];
         snprintf(expected, sizeof expected,
                  "rt-export: %s\nTry 'rt-export --help'.\n",
@@ -252,15 +251,15 @@ START_TEST(range_messages_give_the_bound_and_the_value)
         ck_assert_msg(r.code == 2, "%s %s: exit %d", cases[i].option,
                       cases[i].value, r.code);
         ck_assert_str_eq(r.err, expected);
-        run_free(&r);
+        rt_test_output_free(&r);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(values_the_scene_format_takes_render)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char scene[4096];
     snprintf(scene, sizeof scene, "%s",
              rt_test_source_path("scenes/cubes.scn"));
@@ -273,19 +272,20 @@ START_TEST(values_the_scene_format_takes_render)
                               "--size=16x12", "-q", "-o", "out.ppm", NULL};
         if (strcmp(options[i][0], "--size") == 0)
             args[3] = "-q";
-        run r = run_in(dir, RT_EXPORT_PATH, args);
+        rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
         ck_assert_msg(r.code == 0, "%s %s: exit %d: %s", options[i][0],
                       options[i][1], r.code, r.err);
         ck_assert_str_eq(r.out, "out.ppm\n");
-        run_free(&r);
+        rt_test_output_free(&r);
         rt_image image;
-        ck_assert_int_eq(rt_ppm_load(in_dir(dir, "out.ppm"), &image, NULL),
+        ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &image,
+                                     NULL),
                          RT_OK);
         ck_assert_int_eq(image.width, 16);
         ck_assert_int_eq(image.height, 12);
         rt_image_release(&image);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 

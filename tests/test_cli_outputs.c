@@ -29,7 +29,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "program_util.h"
 #include "testutil.h"
 
 static const char *cubes(void)
@@ -44,7 +43,7 @@ static void copy_in(const char *dir, const char *relative, const char *name)
 {
     char *text = rt_test_read_file(rt_test_source_path(relative), NULL);
     ck_assert_ptr_nonnull(text);
-    rt_test_write_file(in_dir(dir, name), text);
+    rt_test_write_file(rt_test_in_dir(dir, name), text);
     free(text);
 }
 
@@ -53,7 +52,7 @@ static void assert_intact(const char *dir, const char *name,
                           const char *relative)
 {
     size_t a_size, b_size;
-    char *a = rt_test_read_file(in_dir(dir, name), &a_size);
+    char *a = rt_test_read_file(rt_test_in_dir(dir, name), &a_size);
     char *b = rt_test_read_file(rt_test_source_path(relative), &b_size);
     ck_assert_msg(a != NULL && b != NULL && a_size == b_size &&
                       memcmp(a, b, a_size) == 0,
@@ -65,7 +64,7 @@ static void assert_intact(const char *dir, const char *name,
 /* Fails unless r refused with exit 1 and, as the last line of its
  * messages (after the scene's warnings), exactly "PROGRAM: OUT: refusing
  * to write WHAT over IN, WHICH (the same file)". */
-static void assert_refused(const run *r, const char *program,
+static void assert_refused(const rt_test_output *r, const char *program,
                            const char *out, const char *what,
                            const char *in, const char *which)
 {
@@ -89,8 +88,9 @@ static void assert_refused(const run *r, const char *program,
 static void scene_with_links(const char *dir)
 {
     copy_in(dir, "scenes/cubes.scn", "s.scn");
-    ck_assert_int_eq(symlink("s.scn", in_dir(dir, "link.scn")), 0);
-    ck_assert_int_eq(link(in_dir(dir, "s.scn"), in_dir(dir, "hard.scn")), 0);
+    ck_assert_int_eq(symlink("s.scn", rt_test_in_dir(dir, "link.scn")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"),
+                          rt_test_in_dir(dir, "hard.scn")), 0);
 }
 
 /* Where the output's name goes in assert_every_name_refused's args. */
@@ -110,31 +110,31 @@ static void assert_every_name_refused(const char *dir, const char *program,
         for (; args[n] != NULL && n < 15; n++)
             with[n] = strcmp(args[n], NAME) ? args[n] : names[i];
         with[n] = NULL;
-        run r = run_in(dir, program, with);
+        rt_test_output r = rt_test_run(dir, program, with);
         assert_refused(&r, convert ? "rt-convert" : "rt-export", names[i],
                        convert ? "the scene" : "the image", "s.scn",
                        "the scene it comes from");
         ck_assert_str_eq(r.out, "");
-        run_free(&r);
+        rt_test_output_free(&r);
         assert_intact(dir, "s.scn", "scenes/cubes.scn");
     }
 }
 
 START_TEST(export_refuses_its_scene_by_every_name)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     scene_with_links(dir);
     const char *names[] = {"s.scn", "./s.scn", "link.scn", "hard.scn",
                            NULL};
     const char *args[] = {"s.scn", "-o", NAME, "--format", "p6", "-q", NULL};
     assert_every_name_refused(dir, RT_EXPORT_PATH, args, names);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(export_refuses_a_standard_output_that_is_its_scene)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     copy_in(dir, "scenes/cubes.scn", "s.scn");
     /* `rt-export s.scn -o - >> s.scn`, and -o /dev/stdout the same */
     const char *outputs[] = {"-", "/dev/stdout"};
@@ -142,29 +142,29 @@ START_TEST(export_refuses_a_standard_output_that_is_its_scene)
     for (size_t i = 0; i < 2; i++) {
         const char *args[] = {"s.scn", "-o", outputs[i], "--format", "p3",
                               "-q", NULL};
-        run_setup setup = {NULL, in_dir(dir, "s.scn"), NULL};
-        run r = run_with(dir, RT_EXPORT_PATH, args, &setup);
+        rt_test_setup setup = {NULL, rt_test_in_dir(dir, "s.scn"), NULL};
+        rt_test_output r = rt_test_run_with(dir, RT_EXPORT_PATH, args, &setup);
         assert_refused(&r, "rt-export", shown[i], "the image", "s.scn",
                        "the scene it comes from");
-        run_free(&r);
+        rt_test_output_free(&r);
         assert_intact(dir, "s.scn", "scenes/cubes.scn");
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(export_refuses_the_standard_input_its_scene_came_from)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     copy_in(dir, "scenes/cubes.scn", "s.scn");
     const char *args[] = {"-", "-o", "s.scn", "--format", "p6", "-q", NULL};
-    run_setup setup = {in_dir(dir, "s.scn"), NULL, NULL};
-    run r = run_with(dir, RT_EXPORT_PATH, args, &setup);
+    rt_test_setup setup = {rt_test_in_dir(dir, "s.scn"), NULL, NULL};
+    rt_test_output r = rt_test_run_with(dir, RT_EXPORT_PATH, args, &setup);
     assert_refused(&r, "rt-export", "s.scn", "the image", "standard input",
                    "where the scene was read from");
-    run_free(&r);
+    rt_test_output_free(&r);
     assert_intact(dir, "s.scn", "scenes/cubes.scn");
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -177,14 +177,14 @@ static void write_obj(const char *dir)
     char *at = strstr(obj, "mtllib cube.mtl");
     ck_assert_ptr_nonnull(at);
     memcpy(at, "mtllib    m.mtl", 15);
-    rt_test_write_file(in_dir(dir, "m.obj"), obj);
+    rt_test_write_file(rt_test_in_dir(dir, "m.obj"), obj);
     free(obj);
     copy_in(dir, "tests/data/obj/cube.mtl", "m.mtl");
 }
 
 static void assert_obj_intact(const char *dir)
 {
-    char *obj = rt_test_read_file(in_dir(dir, "m.obj"), NULL);
+    char *obj = rt_test_read_file(rt_test_in_dir(dir, "m.obj"), NULL);
     ck_assert_ptr_nonnull(obj);
     ck_assert_ptr_nonnull(strstr(obj, "mtllib    m.mtl"));
     free(obj);
@@ -193,27 +193,27 @@ static void assert_obj_intact(const char *dir)
 
 START_TEST(convert_refuses_its_scene_by_every_name)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     write_obj(dir);
     /* m.obj m.obj: refused by its name first, then by what it is */
     const char *by_name[] = {"m.obj", "m.obj", NULL};
-    run r = run_in(dir, RT_CONVERT_PATH, by_name);
+    rt_test_output r = rt_test_run(dir, RT_CONVERT_PATH, by_name);
     ck_assert_int_eq(r.code, 2);
     ck_assert_ptr_nonnull(strstr(r.err, "expected an output named .scn"));
-    run_free(&r);
+    rt_test_output_free(&r);
     assert_obj_intact(dir);
     const char *forced[] = {"m.obj", "m.obj", "--force-name", NULL};
-    r = run_in(dir, RT_CONVERT_PATH, forced);
+    r = rt_test_run(dir, RT_CONVERT_PATH, forced);
     assert_refused(&r, "rt-convert", "m.obj", "the scene", "m.obj",
                    "the scene it comes from");
-    run_free(&r);
+    rt_test_output_free(&r);
     assert_obj_intact(dir);
     /* a .scn over itself, through a link named .scn */
     scene_with_links(dir);
     const char *names[] = {"s.scn", "link.scn", "hard.scn", NULL};
     const char *args[] = {"s.scn", NAME, "--extended", NULL};
     assert_every_name_refused(dir, RT_CONVERT_PATH, args, names);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -222,14 +222,15 @@ END_TEST
 
 START_TEST(export_refuses_the_material_library_its_obj_read)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     write_obj(dir);
-    ck_assert_int_eq(link(in_dir(dir, "m.mtl"), in_dir(dir, "hard.mtl")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "m.mtl"),
+                          rt_test_in_dir(dir, "hard.mtl")), 0);
     const char *names[] = {"m.mtl", "./m.mtl", "hard.mtl"};
     for (size_t i = 0; i < 3; i++) {
         const char *args[] = {"m.obj", "--format", "p6", "-o", names[i],
                               "-q", NULL};
-        run r = run_in(dir, RT_EXPORT_PATH, args);
+        rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
         ck_assert_msg(r.code == 1, "-o %s: exit %d", names[i], r.code);
         char expected[256];
         snprintf(expected, sizeof expected, "rt-export: %s: refusing to "
@@ -240,33 +241,33 @@ START_TEST(export_refuses_the_material_library_its_obj_read)
                           strstr(line, "m.mtl, a file the scene read (the "
                                        "same file)\n"),
                       "%s", r.err);
-        run_free(&r);
+        rt_test_output_free(&r);
         assert_obj_intact(dir);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(convert_refuses_the_material_library_its_obj_read)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     write_obj(dir);
     const char *plain[] = {"m.obj", "m.mtl", NULL};
-    run r = run_in(dir, RT_CONVERT_PATH, plain);
+    rt_test_output r = rt_test_run(dir, RT_CONVERT_PATH, plain);
     ck_assert_int_ne(r.code, 0);
-    run_free(&r);
+    rt_test_output_free(&r);
     assert_obj_intact(dir);
     const char *forced[] = {"m.obj", "m.mtl", "--force-name", NULL};
-    r = run_in(dir, RT_CONVERT_PATH, forced);
+    r = rt_test_run(dir, RT_CONVERT_PATH, forced);
     ck_assert_int_eq(r.code, 1);
     const char *line = strstr(r.err, "rt-convert: m.mtl: refusing to write "
                                      "the scene over ");
     ck_assert_msg(line != NULL && strstr(line, "m.mtl, a file the scene read "
                                                "(the same file)\n"),
                   "%s", r.err);
-    run_free(&r);
+    rt_test_output_free(&r);
     assert_obj_intact(dir);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -275,30 +276,30 @@ END_TEST
 
 START_TEST(convert_takes_the_tables_forms_and_words)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     copy_in(dir, "scenes/cubes.scn", "-weird.scn");
     const char *help[] = {"--help", NULL};
-    run r = run_in(dir, RT_CONVERT_PATH, help);
+    rt_test_output r = rt_test_run(dir, RT_CONVERT_PATH, help);
     ck_assert_int_eq(r.code, 0);
     ck_assert_msg(strncmp(r.out, "usage: rt-convert [OPTION]... IN OUT.scn",
                           40) == 0, "%s", r.out);
     ck_assert_ptr_nonnull(strstr(r.out, "--force-name"));
     ck_assert_ptr_nonnull(strstr(r.out, "--input-format=F"));
     ck_assert_ptr_null(strstr(r.out, "--look-from"));
-    run_free(&r);
+    rt_test_output_free(&r);
     const char *version[] = {"--version", NULL};
-    r = run_in(dir, RT_CONVERT_PATH, version);
+    r = rt_test_run(dir, RT_CONVERT_PATH, version);
     ck_assert_int_eq(r.code, 0);
     ck_assert_msg(strncmp(r.out, "rt-convert (libraytrace) ", 25) == 0, "%s",
                   r.out);
-    run_free(&r);
+    rt_test_output_free(&r);
     /* `--' ends the options; --opt=value */
     const char *weird[] = {"--input-format=scn", "--", "-weird.scn",
                            "out.scn", NULL};
-    r = run_in(dir, RT_CONVERT_PATH, weird);
+    r = rt_test_run(dir, RT_CONVERT_PATH, weird);
     ck_assert_msg(r.code == 0, "%s", r.err);
     ck_assert_str_eq(r.out, "out.scn\n");
-    run_free(&r);
+    rt_test_output_free(&r);
     /* the same limits and words as rt-export */
     static const struct {
         const char *args[4];
@@ -315,7 +316,7 @@ START_TEST(convert_takes_the_tables_forms_and_words)
         const char *const programs[] = {RT_CONVERT_PATH, RT_EXPORT_PATH};
         for (int p = 0; p < 2; p++) {
             const char *name = p ? "rt-export" : "rt-convert";
-            r = run_in(dir, programs[p], cases[i].args);
+            r = rt_test_run(dir, programs[p], cases[i].args);
             char expected[512];
             snprintf(expected, sizeof expected,
                      "%s: %s\nTry '%s --help'.\n", name, cases[i].message,
@@ -324,62 +325,62 @@ START_TEST(convert_takes_the_tables_forms_and_words)
                           r.code);
             if (p == 0 || i != 2) /* rt-export: a.scn b.scn is also wrong */
                 ck_assert_str_eq(r.err, expected);
-            run_free(&r);
+            rt_test_output_free(&r);
         }
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(convert_refuses_a_name_not_ending_in_scn_unless_forced)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     const char *png[] = {cubes(), "out.png", NULL};
-    run r = run_in(dir, RT_CONVERT_PATH, png);
+    rt_test_output r = rt_test_run(dir, RT_CONVERT_PATH, png);
     ck_assert_int_eq(r.code, 2);
     ck_assert_str_eq(r.err, "rt-convert: expected an output named .scn "
                             "(rt-convert writes .scn text), found 'out.png'; "
                             "--force-name writes it there anyway\n"
                             "Try 'rt-convert --help'.\n");
-    run_free(&r);
-    ck_assert_int_eq(access(in_dir(dir, "out.png"), F_OK), -1);
+    rt_test_output_free(&r);
+    ck_assert_int_eq(access(rt_test_in_dir(dir, "out.png"), F_OK), -1);
     const char *forced[] = {cubes(), "out.png", "--force-name", NULL};
     const char *upper[] = {cubes(), "OUT.SCN", NULL};
     const char *device[] = {cubes(), "/dev/null", NULL};
     const char *const *accepted[] = {forced, upper, device};
     for (size_t i = 0; i < 3; i++) {
-        r = run_in(dir, RT_CONVERT_PATH, accepted[i]);
+        r = rt_test_run(dir, RT_CONVERT_PATH, accepted[i]);
         ck_assert_msg(r.code == 0, "%s: %s", accepted[i][1], r.err);
-        run_free(&r);
+        rt_test_output_free(&r);
     }
-    char *text = rt_test_read_file(in_dir(dir, "out.png"), NULL);
+    char *text = rt_test_read_file(rt_test_in_dir(dir, "out.png"), NULL);
     ck_assert_ptr_nonnull(text);
     ck_assert_msg(strncmp(text, "# written by libraytrace", 24) == 0, "%s",
                   text);
     free(text);
-    ck_assert_int_eq(access(in_dir(dir, "OUT.SCN"), F_OK), 0);
-    remove_dir(dir);
+    ck_assert_int_eq(access(rt_test_in_dir(dir, "OUT.SCN"), F_OK), 0);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(convert_calls_what_it_writes_the_scene)
 {
-    char *dir = fresh_dir();
-    ck_assert_int_eq(mkdir(in_dir(dir, "folder.scn"), 0755), 0);
+    char *dir = rt_test_temp_dir();
+    ck_assert_int_eq(mkdir(rt_test_in_dir(dir, "folder.scn"), 0755), 0);
     const char *missing[] = {cubes(), "no/such/x.scn", NULL};
-    run r = run_in(dir, RT_CONVERT_PATH, missing);
+    rt_test_output r = rt_test_run(dir, RT_CONVERT_PATH, missing);
     ck_assert_int_eq(r.code, 1);
     ck_assert_str_eq(r.err, "rt-convert: no/such/x.scn: cannot write the "
                             "scene: the folder no/such/ does not exist\n");
-    run_free(&r);
+    rt_test_output_free(&r);
     const char *folder[] = {cubes(), "folder.scn", NULL};
-    r = run_in(dir, RT_CONVERT_PATH, folder);
+    r = rt_test_run(dir, RT_CONVERT_PATH, folder);
     ck_assert_int_eq(r.code, 1);
     ck_assert_str_eq(r.err, "rt-convert: folder.scn: cannot write the "
                             "scene: is a directory\n");
     ck_assert_ptr_null(strstr(r.err, "image"));
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -391,7 +392,7 @@ END_TEST
  * before its end - about 2 s optimised, and the same work would take
  * minutes under AddressSanitizer, whose programs run some 30 times slower:
  * there a sixteenth of it does. */
-#if UNDER_ASAN
+#if RT_TEST_UNDER_ASAN
 #define SLOW "--samples", "4", "-j", "1"
 #else
 #define SLOW "--samples", "64", "-j", "1"
@@ -428,12 +429,12 @@ static void assert_same_as_a_normal_render(const char *dir, const char *kept,
     all[n++] = "-o";
     all[n++] = "ref.img";
     all[n] = NULL;
-    run r = run_in(dir, RT_EXPORT_PATH, all);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, all);
     ck_assert_msg(r.code == 0, "%s", r.err);
-    run_free(&r);
+    rt_test_output_free(&r);
     size_t a_size, b_size;
     char *a = bytes_of(kept, &a_size);
-    char *b = bytes_of(in_dir(dir, "ref.img"), &b_size);
+    char *b = bytes_of(rt_test_in_dir(dir, "ref.img"), &b_size);
     ck_assert_msg(a_size == b_size && memcmp(a, b, a_size) == 0,
                   "%s is not the image a normal render writes", kept);
     free(a);
@@ -442,20 +443,20 @@ static void assert_same_as_a_normal_render(const char *dir, const char *kept,
 
 START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
 {
-    char *dir = fresh_dir();
-    ck_assert_int_eq(mkdir(in_dir(dir, "tmp"), 0755), 0);
-    ck_assert_int_eq(mkdir(in_dir(dir, "sub"), 0755), 0);
+    char *dir = rt_test_temp_dir();
+    ck_assert_int_eq(mkdir(rt_test_in_dir(dir, "tmp"), 0755), 0);
+    ck_assert_int_eq(mkdir(rt_test_in_dir(dir, "sub"), 0755), 0);
     const char *args[] = {cubes(), SLOW, "--progress", "--format", "p6",
                           "-o", "sub/out.ppm", NULL};
-    run_setup setup = {NULL, NULL, in_dir(dir, "tmp")};
-    started s = start_piped(dir, RT_EXPORT_PATH, args, &setup);
+    rt_test_setup setup = {NULL, NULL, rt_test_in_dir(dir, "tmp")};
+    rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, &setup);
     /* the output was checked before the render: its folder is there */
-    ck_assert_msg(wait_for_line(&s, "rendering "), "no progress line: %s",
-                  s.err ? s.err : "");
+    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
+                  "no progress line: %s", s.err ? s.err : "");
     ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
-    ck_assert_int_eq(rmdir(in_dir(dir, "sub")), 0);
+    ck_assert_int_eq(rmdir(rt_test_in_dir(dir, "sub")), 0);
     ck_assert_int_eq(kill(s.pid, SIGCONT), 0);
-    run r = finish_piped(&s);
+    rt_test_output r = rt_test_finish(&s);
     ck_assert_int_eq(r.code, 1);
     ck_assert_msg(strstr(r.err, "rt-export: sub/out.ppm: cannot write the "
                                 "image: the folder sub/ does not exist\n"),
@@ -463,7 +464,8 @@ START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
     ck_assert_str_eq(r.out, "");
     char *kept = kept_name(r.err, "rt-export");
     char prefix[4200];
-    snprintf(prefix, sizeof prefix, "%s/out.rescue-", in_dir(dir, "tmp"));
+    snprintf(prefix, sizeof prefix, "%s/out.rescue-",
+             rt_test_in_dir(dir, "tmp"));
     ck_assert_msg(strncmp(kept, prefix, strlen(prefix)) == 0 &&
                       strlen(kept) == strlen(prefix) + 6 + 4 &&
                       strcmp(kept + strlen(kept) - 4, ".ppm") == 0,
@@ -471,25 +473,26 @@ START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
     const char *normal[] = {cubes(), SLOW, "-q", "--format", "p6", NULL};
     assert_same_as_a_normal_render(dir, kept, normal);
     free(kept);
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(export_keeps_the_image_when_its_output_becomes_the_scene)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     copy_in(dir, "scenes/cubes.scn", "s.scn");
     const char *args[] = {"s.scn", SLOW, "--progress", "--format", "png",
                           "-o", "out.png", NULL};
-    started s = start_piped(dir, RT_EXPORT_PATH, args, NULL);
-    ck_assert_msg(wait_for_line(&s, "rendering "), "no progress line: %s",
-                  s.err ? s.err : "");
+    rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, NULL);
+    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
+                  "no progress line: %s", s.err ? s.err : "");
     ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
     /* out.png is now the scene itself, under another name */
-    ck_assert_int_eq(link(in_dir(dir, "s.scn"), in_dir(dir, "out.png")), 0);
+    ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"),
+                          rt_test_in_dir(dir, "out.png")), 0);
     ck_assert_int_eq(kill(s.pid, SIGCONT), 0);
-    run r = finish_piped(&s);
+    rt_test_output r = rt_test_finish(&s);
     ck_assert_int_eq(r.code, 1);
     ck_assert_msg(strstr(r.err, "rt-export: out.png: refusing to write the "
                                 "image over s.scn, the scene it comes from "
@@ -500,13 +503,13 @@ START_TEST(export_keeps_the_image_when_its_output_becomes_the_scene)
                       strcmp(kept + strlen(kept) - 4, ".png") == 0,
                   "%s", kept);
     const char *normal[] = {"s.scn", SLOW, "-q", "--format", "png", NULL};
-    assert_same_as_a_normal_render(dir, in_dir(dir, kept), normal);
+    assert_same_as_a_normal_render(dir, rt_test_in_dir(dir, kept), normal);
     struct stat st;
-    ck_assert_int_eq(stat(in_dir(dir, kept), &st), 0);
+    ck_assert_int_eq(stat(rt_test_in_dir(dir, kept), &st), 0);
     ck_assert_int_eq(st.st_mode & 0777, 0600);
     free(kept);
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -516,8 +519,8 @@ START_TEST(export_keeps_the_image_a_full_device_did_not_take)
         fprintf(stderr, "test_cli_outputs: no /dev/full: not checked\n");
         return;
     }
-    char *dir = fresh_dir();
-    ck_assert_int_eq(mkdir(in_dir(dir, "tmp"), 0755), 0);
+    char *dir = rt_test_temp_dir();
+    ck_assert_int_eq(mkdir(rt_test_in_dir(dir, "tmp"), 0755), 0);
     /* -o /dev/full, and -o - into /dev/full */
     static const struct {
         const char *output, *stdout_path, *failure, *stem;
@@ -529,14 +532,15 @@ START_TEST(export_keeps_the_image_a_full_device_did_not_take)
     for (size_t i = 0; i < 2; i++) {
         const char *args[] = {cubes(), "--size", "64x48", "--format", "p3",
                               "-q", "-o", cases[i].output, NULL};
-        run_setup setup = {NULL, cases[i].stdout_path, in_dir(dir, "tmp")};
-        run r = run_with(dir, RT_EXPORT_PATH, args, &setup);
+        rt_test_setup setup = {NULL, cases[i].stdout_path,
+                               rt_test_in_dir(dir, "tmp")};
+        rt_test_output r = rt_test_run_with(dir, RT_EXPORT_PATH, args, &setup);
         ck_assert_int_eq(r.code, 1);
         ck_assert_msg(strncmp(r.err, cases[i].failure,
                               strlen(cases[i].failure)) == 0, "%s", r.err);
         char *kept = kept_name(r.err, "rt-export");
         char prefix[4200];
-        snprintf(prefix, sizeof prefix, "%s/%s", in_dir(dir, "tmp"),
+        snprintf(prefix, sizeof prefix, "%s/%s", rt_test_in_dir(dir, "tmp"),
                  cases[i].stem);
         ck_assert_msg(strncmp(kept, prefix, strlen(prefix)) == 0, "%s",
                       kept);
@@ -545,9 +549,9 @@ START_TEST(export_keeps_the_image_a_full_device_did_not_take)
         assert_same_as_a_normal_render(dir, kept, normal);
         unlink(kept);
         free(kept);
-        run_free(&r);
+        rt_test_output_free(&r);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -592,6 +596,5 @@ static Suite *sources_suite(void)
  * while the loader lists none. */
 int main(int argc, char **argv)
 {
-    return main_with_sources(argc, argv, outputs_suite, sources_suite,
-                             "test_cli_outputs");
+    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite);
 }

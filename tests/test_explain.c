@@ -19,22 +19,6 @@ static const char *const scenes[] = {
     "scenes/two-facets.scn"};
 #define SCENE_COUNT (int)(sizeof scenes / sizeof scenes[0])
 
-static int memcheck(void)
-{
-    const char *v = getenv("RT_TEST_MEMCHECK");
-    return v != NULL && strcmp(v, "1") == 0;
-}
-
-static rt_scene *load(const char *relative)
-{
-    rt_scene *scene;
-    rt_error error;
-    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
-                                     &error);
-    ck_assert_msg(status == RT_OK, "%s: %s", relative, error.message);
-    return scene;
-}
-
 /*
  * Every pixel of a `width` x `height` render with `options`: the explained
  * value is bit for bit what the render path computes without a recorder,
@@ -92,9 +76,9 @@ static int check_every_pixel(const rt_scene *scene, rt_render_options *o,
 
 START_TEST(explained_value_is_the_rendered_pixel_in_every_scene)
 {
-    int fast = memcheck();
+    int fast = rt_test_memcheck();
     for (int s = 0; s < SCENE_COUNT; s++) {
-        rt_scene *scene = load(scenes[s]);
+        rt_scene *scene = rt_test_load_source_scene(scenes[s]);
         for (int precision = 0; precision < 2; precision++)
             for (int depth = 0; depth <= 5; depth += fast ? 5 : 1) {
                 rt_render_options o;
@@ -116,11 +100,11 @@ END_TEST
 
 START_TEST(explained_value_is_the_rendered_pixel_with_samples_and_lens)
 {
-    int fast = memcheck();
+    int fast = rt_test_memcheck();
     const char *names[] = {"scenes/cubes.scn", "scenes/focus.scn",
                            "scenes/glass.scn"};
     for (int s = 0; s < 3; s++) {
-        rt_scene *scene = load(names[s]);
+        rt_scene *scene = rt_test_load_source_scene(names[s]);
         for (int precision = 0; precision < 2; precision++) {
             rt_render_options o;
             rt_render_options_init(&o);
@@ -144,7 +128,7 @@ END_TEST
 
 START_TEST(a_region_explains_its_own_pixels)
 {
-    rt_scene *scene = load("scenes/cubes.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
     rt_render_options o;
     rt_render_options_init(&o);
     o.width = 40;
@@ -167,7 +151,7 @@ END_TEST
 
 START_TEST(one_sample_is_explained_alone_and_the_samples_add_up)
 {
-    rt_scene *scene = load("scenes/cubes.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
     rt_render_options o;
     rt_render_options_init(&o);
     o.width = 40;
@@ -202,7 +186,7 @@ END_TEST
 
 START_TEST(the_reported_blocker_really_blocks)
 {
-    rt_scene *scene = load("scenes/cubes.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
     rt_render_options o;
     rt_render_options_init(&o);
     o.width = 40;
@@ -246,7 +230,7 @@ START_TEST(the_tree_says_what_the_formula_adds)
 {
     /* one-facet.scn, pixel (32, 23): 0.5 * 20 + 0.5 * 1 * 255 * 201 / 255
      * = 110.5 in red (the scene's comment), N.S = 1 exactly. */
-    rt_scene *scene = load("scenes/one-facet.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/one-facet.scn");
     rt_ray_tree *tree;
     ck_assert_int_eq(rt_explain_pixel(scene, NULL, 32, 23, -1, &tree, NULL),
                      RT_OK);
@@ -312,7 +296,7 @@ static void assert_near(const unsigned char *p, double r, double g, double b,
 
 START_TEST(debug_views_of_one_facet_match_its_geometry)
 {
-    rt_scene *scene = load("scenes/one-facet.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/one-facet.scn");
     rt_image normal = view_of(scene, RT_VIEW_NORMAL),
              depth = view_of(scene, RT_VIEW_DEPTH),
              facet = view_of(scene, RT_VIEW_FACET),
@@ -365,7 +349,7 @@ END_TEST
 
 START_TEST(render_view_refuses_bad_arguments)
 {
-    rt_scene *scene = load("scenes/one-facet.scn");
+    rt_scene *scene = rt_test_load_source_scene("scenes/one-facet.scn");
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 64, 48, NULL), RT_OK);
     rt_error error;

@@ -14,13 +14,12 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
-#include "program_util.h"
 #include "testutil.h"
 #include "view_app.h"
 #include "view_explain.h"
 
 /* rt-export's --explain X,Y of `scene` with `extra` (NULL-terminated, at
- * most 6), run in `dir`. */
+ * most 6), rt_test_output in `dir`. */
 static char *export_text(const char *dir, const char *scene, int x, int y,
                          const char *const *extra)
 {
@@ -31,10 +30,10 @@ static char *export_text(const char *dir, const char *scene, int x, int y,
     for (int i = 0; extra[i] != NULL && n < 9; i++)
         args[n++] = extra[i];
     args[n] = NULL;
-    run r = run_in(dir, RT_EXPORT_PATH, args);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
     ck_assert_msg(r.code == 0, "%s", r.err);
     char *out = strdup(r.out);
-    run_free(&r);
+    rt_test_output_free(&r);
     return out;
 }
 
@@ -57,7 +56,7 @@ static char *view_text(const char *path, const rt_render_options *options,
 
 START_TEST(rt_view_explains_a_pixel_in_rt_exports_words)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char tir[4200], cubes[4200], glass[4200], mirror[4200];
     /* pixel 4,4 is totally reflected (see the file) */
     snprintf(tir, sizeof tir, "%s",
@@ -111,7 +110,7 @@ START_TEST(rt_view_explains_a_pixel_in_rt_exports_words)
         free(expected);
         free(shown);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -133,12 +132,12 @@ START_TEST(a_click_names_the_scene_as_it_was_given)
     ck_assert(view_app_explain(app, 268, 124));
     const view_explanation *e = view_app_explanation(app);
     ck_assert_ptr_nonnull(e);
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     static const char *const none[] = {NULL};
     char *expected = export_text(dir, cubes, 268, 124, none);
     ck_assert_str_eq(e->text, expected);
     free(expected);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
     view_app_destroy(app);
     SDL_Quit();
 }

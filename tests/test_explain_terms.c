@@ -22,7 +22,6 @@
 #include <string.h>
 
 #include "cli_explain.h"
-#include "program_util.h"
 #include "testutil.h"
 #if RT_TEST_HAVE_VIEWER
 #include "view_explain.h"
@@ -53,17 +52,17 @@ static void write_tir_scene(const char *path, const char *k, const char *t)
 static char *explain(const char *dir, const char *extra)
 {
     const char *args[] = {"tir.scn", "--explain", "4,4", extra, NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, args);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
     ck_assert_msg(r.code == 0, "%s", r.err);
     char *out = strdup(r.out);
-    run_free(&r);
+    rt_test_output_free(&r);
     return out;
 }
 
 START_TEST(explain_names_a_total_internal_reflection_the_t_ct_term)
 {
-    char *dir = fresh_dir();
-    write_tir_scene(in_dir(dir, "tir.scn"), "0", "1");
+    char *dir = rt_test_temp_dir();
+    write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0", "1");
     char *text = explain(dir, NULL);
     ck_assert_msg(strstr(text, "hits facet 0 (line 9) at t 5, point (0, 0, "
                                "0), normal as used (-0.866025, -0, 0.5); "
@@ -88,32 +87,32 @@ START_TEST(explain_names_a_total_internal_reflection_the_t_ct_term)
     ck_assert_msg(strstr(json, "\"total_internal_reflection\":true"), "%s",
                   json);
     free(json);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(explain_splits_the_mirror_ray_k_to_t_when_both_are_there)
 {
-    char *dir = fresh_dir();
-    write_tir_scene(in_dir(dir, "tir.scn"), "0.25", "0.75");
+    char *dir = rt_test_temp_dir();
+    write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0.25", "0.75");
     char *text = explain(dir, NULL);
     ck_assert_msg(strstr(text, "terms: direct light 0 0 0 + reflection k C_R "
                                "2.5 5 7.5 + refraction t C_T 7.5 15 22.5 = "
                                "10 20 30 (total internal reflection"),
                   "%s", text);
     free(text);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(explain_of_an_opaque_mirror_is_unchanged)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char scene[4096];
     snprintf(scene, sizeof scene, "%s",
              rt_test_source_path("scenes/cubes.scn"));
     const char *args[] = {scene, "--explain", "269,172", NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, args);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
     ck_assert_int_eq(r.code, 0);
     /* docs/teaching.md's example, line for line */
     ck_assert_msg(strstr(r.out, "    reflected ray (weight 0.5) from "),
@@ -122,16 +121,16 @@ START_TEST(explain_of_an_opaque_mirror_is_unchanged)
                                 "k C_R 5 5 5 + refraction t C_T 0 0 0 = 5 5 "
                                 "5\n"), "%s", r.out);
     ck_assert_ptr_null(strstr(r.out, "totally"));
-    run_free(&r);
+    rt_test_output_free(&r);
     const char *json[] = {scene, "--explain", "269,172", "--explain-json",
                           NULL};
-    r = run_in(dir, RT_EXPORT_PATH, json);
+    r = rt_test_run(dir, RT_EXPORT_PATH, json);
     ck_assert_int_eq(r.code, 0);
     ck_assert_ptr_nonnull(strstr(r.out, "\"total_internal_reflection\":"
                                         "false"));
     ck_assert_ptr_null(strstr(r.out, "\"total_internal_reflection\":true"));
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -184,9 +183,9 @@ static int check_terms(const char *path, int step)
 
 START_TEST(terms_add_up_to_what_each_hit_carries)
 {
-    char *dir = fresh_dir();
-    write_tir_scene(in_dir(dir, "tir.scn"), "0", "1");
-    ck_assert_int_gt(check_terms(in_dir(dir, "tir.scn"), 1), 0);
+    char *dir = rt_test_temp_dir();
+    write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0", "1");
+    ck_assert_int_gt(check_terms(rt_test_in_dir(dir, "tir.scn"), 1), 0);
     static const char *const scenes[] = {"scenes/cubes.scn",
                                          "scenes/mirror.scn",
                                          "scenes/glass.scn"};
@@ -200,19 +199,19 @@ START_TEST(terms_add_up_to_what_each_hit_carries)
         else
             ck_assert_int_eq(total, 0);
     }
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 #if RT_TEST_HAVE_VIEWER
 START_TEST(viewer_names_a_total_internal_reflection_the_t_ct_term)
 {
-    char *dir = fresh_dir();
-    write_tir_scene(in_dir(dir, "tir.scn"), "0", "1");
+    char *dir = rt_test_temp_dir();
+    write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0", "1");
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_load_with(in_dir(dir, "tir.scn"), NULL, &scene,
-                                        &error), RT_OK);
+    ck_assert_int_eq(rt_scene_load_with(rt_test_in_dir(dir, "tir.scn"), NULL,
+                                        &scene, &error), RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     view_explanation e;
@@ -225,7 +224,7 @@ START_TEST(viewer_names_a_total_internal_reflection_the_t_ct_term)
     ck_assert_ptr_null(strstr(e.text, "    reflected ray"));
     view_explanation_release(&e);
     rt_scene_destroy(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 #endif

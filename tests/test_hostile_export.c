@@ -4,111 +4,56 @@
  * that cannot be written and SIGKILL mid-render each keep the previous
  * image.
  *
- * Tests that need a child process fork one themselves, so that they also
- * hold under CK_FORK=no (valgrind).
+ * The programs run through the support library (support/programs.h), so
+ * that the tests also hold under CK_FORK=no (valgrind).
  */
 #define _GNU_SOURCE 1
 
-#include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <math.h>
-#include <sched.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 /* ------------------------------------------------------------------ */
 /* rt-export: exit codes, refusals, interruptions                        */
 
 /*
- * Runs rt-export with `args` (NULL-terminated) in `dir`, stdout and stderr
- * to files there (removed afterwards, their text in *out and *err).  A
+ * Runs `program` with `args` (NULL-terminated) in `dir`, its standard
+ * output and error captured (their text in *out and *err, malloc'd).  A
  * non-negative `kill_after` sends SIGKILL once the process has used that
- * much CPU time.  Returns the exit status, or 128 + signal.
+ * much CPU time (or after 30 seconds); `file_size_limit` other than
+ * RLIM_INFINITY is its RLIMIT_FSIZE.  Returns the exit status, or 128 +
+ * the signal.
  */
 static int run_program(const char *program, const char *dir,
                        const char *const *args, double kill_after,
                        rlim_t file_size_limit, char **out, char **err)
 {
-    char *out_path = join(dir, "..stdout"), *err_path = join(dir, "..stderr");
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        if (chdir(dir) != 0)
-            _exit(126);
-        int o = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int e = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0)
-            _exit(126);
-        if (file_size_limit != RLIM_INFINITY) {
-            signal(SIGXFSZ, SIG_IGN);
-            struct rlimit limit = {file_size_limit, file_size_limit};
-            if (setrlimit(RLIMIT_FSIZE, &limit) != 0)
-                _exit(126);
-        }
-        char *argv[16];
-        int argc = 0;
-        argv[argc++] = (char *)program;
-        for (int i = 0; args[i] && argc < 15; i++)
-            argv[argc++] = (char *)args[i];
-        argv[argc] = NULL;
-        execv(program, argv);
-        _exit(127);
-    }
-    int status;
+    rt_test_setup setup = {NULL};
+    if (file_size_limit != RLIM_INFINITY)
+        setup.file_size_limit = (long long)file_size_limit;
+    rt_test_process process = rt_test_start(dir, program, args, &setup);
     if (kill_after >= 0) {
-        char stat_path[64];
-        snprintf(stat_path, sizeof stat_path, "/proc/%d/stat", (int)pid);
-        long ticks = sysconf(_SC_CLK_TCK);
-        double start = now_seconds();
-        for (;;) {
-            if (waitpid(pid, &status, WNOHANG) == pid)
-                goto finished;
-            FILE *file = fopen(stat_path, "r");
-            unsigned long user = 0, system = 0;
-            if (file != NULL) {
-                /* fields 14 and 15; the name (2) is in parentheses */
-                char line[1024];
-                if (fgets(line, sizeof line, file)) {
-                    char *p = strrchr(line, ')');
-                    if (p == NULL ||
-                        sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u "
-                                      "%*u %*u %lu %lu", &user, &system) != 2)
-                        user = system = 0;
-                }
-                fclose(file);
-            }
-            double cpu = (double)(user + system) / (double)ticks;
-            if (cpu >= kill_after || now_seconds() - start > 30)
-                break;
-            struct timespec pause = {0, 5000000};
-            nanosleep(&pause, NULL);
-        }
-        kill(pid, SIGKILL);
+        double start = rt_test_now();
+        while (rt_test_running(&process) &&
+               rt_test_cpu_seconds(&process) < kill_after &&
+               rt_test_now() - start <= 30)
+            rt_test_sleep_ms(5);
+        if (!process.reaped)
+            kill(process.pid, SIGKILL);
     }
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-finished:
-    *out = rt_test_read_file(out_path, NULL);
-    *err = rt_test_read_file(err_path, NULL);
-    ck_assert_ptr_nonnull(*out);
-    ck_assert_ptr_nonnull(*err);
-    unlink(out_path);
-    unlink(err_path);
-    free(out_path);
-    free(err_path);
-    return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
+    rt_test_output r = rt_test_finish(&process);
+    *out = r.out;
+    *err = r.err;
+    return r.code;
 }
 
 static int run_export(const char *dir, const char *const *args,
@@ -121,13 +66,14 @@ static int run_export(const char *dir, const char *const *args,
 
 START_TEST(export_refuses_to_write_over_its_own_scene)
 {
-    char *dir = make_temp_dir();
-    char *scene = join(dir, "scene.scn");
-    write_bytes(scene, small_scene, strlen(small_scene));
+    char *dir = rt_test_temp_dir();
+    char *scene = rt_test_join(dir, "scene.scn");
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     char *out, *err;
     /* the same file by its name, another spelling, and a symbolic link */
     const char *outputs[] = {"scene.scn", "./scene.scn", "link.scn"};
-    char *link_path = join(dir, "link.scn");
+    char *link_path = rt_test_join(dir, "link.scn");
     ck_assert_int_eq(symlink("scene.scn", link_path), 0);
     for (int i = 0; i < 3; i++) {
         const char *args[] = {"scene.scn", "-o", outputs[i], "--format",
@@ -145,23 +91,24 @@ START_TEST(export_refuses_to_write_over_its_own_scene)
         free(err);
         size_t size;
         char *data = rt_test_read_file(scene, &size);
-        ck_assert_str_eq(data, small_scene);
+        ck_assert_str_eq(data, rt_test_small_scene);
         free(data);
-        assert_dir_holds(dir, "link.scn scene.scn");
+        rt_test_assert_dir_holds(dir, "link.scn scene.scn");
     }
     free(link_path);
     free(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(export_exit_codes_say_what_went_wrong)
 {
-    char *dir = make_temp_dir();
-    char *scene = join(dir, "scene.scn");
-    write_bytes(scene, small_scene, strlen(small_scene));
-    char *bad = join(dir, "bad.scn");
-    write_bytes(bad, "0 0 10\n0 0 5 4 0 5 8 8\n3\n", 25);
+    char *dir = rt_test_temp_dir();
+    char *scene = rt_test_join(dir, "scene.scn");
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
+    char *bad = rt_test_join(dir, "bad.scn");
+    rt_test_write_bytes(bad, "0 0 10\n0 0 5 4 0 5 8 8\n3\n", 25);
     char *out, *err;
     struct {
         const char *args[6];
@@ -193,20 +140,22 @@ START_TEST(export_exit_codes_say_what_went_wrong)
         free(out);
         free(err);
     }
-    assert_dir_holds(dir, "bad.scn scene.scn");
+    rt_test_assert_dir_holds(dir, "bad.scn scene.scn");
     free(bad);
     free(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(export_that_cannot_write_keeps_the_previous_image)
 {
-    char *dir = make_temp_dir();
-    char *scene = join(dir, "scene.scn");
-    write_bytes(scene, small_scene, strlen(small_scene));
-    char *image = join(dir, "out.ppm");
-    write_bytes(image, previous_ppm, sizeof previous_ppm - 1);
+    char *dir = rt_test_temp_dir();
+    char *scene = rt_test_join(dir, "scene.scn");
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
+    char *image = rt_test_join(dir, "out.ppm");
+    rt_test_write_bytes(image, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char *out, *err;
     /* the 40 x 30 P3 image is about 10 KB: a 2 KB limit stops it */
     const char *args[] = {"scene.scn", "-o", "out.ppm", "--format", "p3",
@@ -224,11 +173,11 @@ START_TEST(export_that_cannot_write_keeps_the_previous_image)
     ck_assert_str_eq(out, "");
     free(out);
     free(err);
-    assert_previous_intact(image);
-    assert_dir_holds(dir, "out.ppm scene.scn");
+    rt_test_assert_previous_intact(image);
+    rt_test_assert_dir_holds(dir, "out.ppm scene.scn");
     free(image);
     free(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -259,13 +208,14 @@ static char *slow_scene(void)
 
 START_TEST(export_killed_mid_render_keeps_the_previous_image)
 {
-    char *dir = make_temp_dir();
-    char *scene = join(dir, "slow.scn");
+    char *dir = rt_test_temp_dir();
+    char *scene = rt_test_join(dir, "slow.scn");
     char *text = slow_scene();
-    write_bytes(scene, text, strlen(text));
+    rt_test_write_bytes(scene, text, strlen(text));
     free(text);
-    char *image = join(dir, "out.ppm");
-    write_bytes(image, previous_ppm, sizeof previous_ppm - 1);
+    char *image = rt_test_join(dir, "out.ppm");
+    rt_test_write_bytes(image, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char *out, *err;
     const char *args[] = {"slow.scn", "-o", "out.ppm", "-q", NULL};
     int code = run_export(dir, args, 0.3, RLIM_INFINITY, &out, &err);
@@ -274,11 +224,11 @@ START_TEST(export_killed_mid_render_keeps_the_previous_image)
                   "scene is not slow enough; stderr: %s", code, err);
     free(out);
     free(err);
-    assert_previous_intact(image);
-    assert_dir_holds(dir, "out.ppm slow.scn");
+    rt_test_assert_previous_intact(image);
+    rt_test_assert_dir_holds(dir, "out.ppm slow.scn");
     free(image);
     free(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -291,9 +241,10 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
 #ifndef RT_BENCH_PATH
     fprintf(stderr, "test_hostile_export: rt-bench is not built; skipped\n");
 #else
-    char *dir = make_temp_dir();
-    char *scene = join(dir, "scene.scn");
-    write_bytes(scene, small_scene, strlen(small_scene));
+    char *dir = rt_test_temp_dir();
+    char *scene = rt_test_join(dir, "scene.scn");
+    rt_test_write_bytes(scene, rt_test_small_scene,
+                        strlen(rt_test_small_scene));
     const char *args[] = {"scene.scn", "--size", "16x12", "--runs", "5",
                           "--ref-samples", "16", "--max-samples", "4",
                           "--threads", "1", "-q", NULL};
@@ -309,12 +260,13 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
     char *before[3];
     size_t sizes[3];
     for (int i = 0; i < 3; i++) {
-        char *path = join(dir, files[i]);
+        char *path = rt_test_join(dir, files[i]);
         before[i] = rt_test_read_file(path, &sizes[i]);
         ck_assert_msg(before[i] != NULL, "rt-bench wrote no %s", files[i]);
         free(path);
     }
-    char *listing = list_dir(dir);
+    char *listing = rt_test_dir_names(dir);
+    ck_assert_ptr_nonnull(listing);
     /* every file is larger than 100 bytes: a 100-byte limit fails each
      * write; then one that lets the small depth CSV through */
     rlim_t limits[2] = {100, 1024};
@@ -324,7 +276,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
         ck_assert_msg(code == 1, "rt-bench exit %d with a %d-byte file "
                       "limit, expected 1", code, (int)limits[l]);
         for (int i = 0; i < 3; i++) {
-            char *path = join(dir, files[i]);
+            char *path = rt_test_join(dir, files[i]);
             size_t size;
             char *now = rt_test_read_file(path, &size);
             ck_assert_msg(now != NULL && size == sizes[i] &&
@@ -335,7 +287,8 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
             free(now);
             free(path);
         }
-        char *names = list_dir(dir);
+        char *names = rt_test_dir_names(dir);
+        ck_assert_ptr_nonnull(names);
         ck_assert_msg(strcmp(names, listing) == 0,
                       "the directory holds `%s`, was `%s`", names, listing);
         free(names);
@@ -348,7 +301,7 @@ START_TEST(bench_that_cannot_write_keeps_the_previous_files)
     for (int i = 0; i < 3; i++)
         free(before[i]);
     free(scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 #endif
 }
 

@@ -28,7 +28,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 /* ------------------------------------------------------------------ */
 /* Findings of the fuzzer and of reading the loaders, kept as tests     */
@@ -46,7 +46,7 @@ START_TEST(scene_corpus_replays_without_fault)
     while ((entry = readdir(d)) != NULL) {
         if (entry->d_name[0] == '.')
             continue;
-        char *path = join(dir, entry->d_name);
+        char *path = rt_test_join(dir, entry->d_name);
         size_t size;
         char *data = rt_test_read_file(path, &size);
         ck_assert_ptr_nonnull(data);
@@ -92,7 +92,7 @@ START_TEST(count_beyond_the_file_is_refused_with_the_lines_left)
     static const char text[] =
         "0 0 10\n0 0 5 4 0 5 8 8\n2147483647\n0 0 0\n1 0 0\n";
     rt_error error;
-    ck_assert_int_eq(parse_refused(text, sizeof text - 1, &error),
+    ck_assert_int_eq(rt_test_parse_refused(text, sizeof text - 1, &error),
                      RT_ERR_LIMIT);
     ck_assert_int_eq(error.line, 3);
     ck_assert_int_eq(error.column, 1);
@@ -107,7 +107,7 @@ START_TEST(count_beyond_int_is_refused_as_out_of_range)
     static const char text[] =
         "0 0 10\n0 0 5 4 0 5 8 8\n0\n99999999999999999999\n";
     rt_error error;
-    ck_assert_int_eq(parse_refused(text, sizeof text - 1, &error),
+    ck_assert_int_eq(rt_test_parse_refused(text, sizeof text - 1, &error),
                      RT_ERR_RANGE);
     ck_assert_int_eq(error.line, 4);
     ck_assert_ptr_nonnull(strstr(error.message, "a facet count"));
@@ -118,7 +118,7 @@ START_TEST(image_side_beyond_the_limit_is_refused)
 {
     static const char text[] = "0 0 10\n0 0 5 4 0 5 16385 1\n";
     rt_error error;
-    ck_assert_int_eq(parse_refused(text, sizeof text - 1, &error),
+    ck_assert_int_eq(rt_test_parse_refused(text, sizeof text - 1, &error),
                      RT_ERR_RANGE);
     ck_assert_str_eq(error.message,
                      "hostile.scn:2:13: expected an image width (a whole "
@@ -130,10 +130,10 @@ END_TEST
  * inside is a bad byte like any other. */
 START_TEST(scene_without_terminating_nul_is_read_by_length)
 {
-    size_t length = strlen(small_scene);
+    size_t length = strlen(rt_test_small_scene);
     char *exact = malloc(length);
     ck_assert_ptr_nonnull(exact);
-    memcpy(exact, small_scene, length);
+    memcpy(exact, rt_test_small_scene, length);
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_parse(exact, length, NULL, &scene, &error),
@@ -141,8 +141,9 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     rt_scene_destroy(scene);
     /* every prefix is refused, with a message, until the last record
      * "0 0 4 255 255 255" has its sixth value; then every prefix loads */
-    size_t complete = (size_t)(strstr(small_scene, "0 0 4 255 255 255") -
-                               small_scene) + strlen("0 0 4 255 255 ");
+    size_t complete = (size_t)(strstr(rt_test_small_scene,
+                                      "0 0 4 255 255 255") -
+                               rt_test_small_scene) + strlen("0 0 4 255 255 ");
     for (size_t n = 0; n < length; n++) {
         rt_status status = rt_scene_parse(exact, n, NULL, &scene, &error);
         if (n > complete) {
@@ -159,7 +160,8 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     /* a NUL byte: no scene file holds one; the message says the file is
      * binary, at the byte's position */
     static const char nul_inside[] = "0 0 1\0" "0\n";
-    ck_assert_int_eq(parse_refused(nul_inside, sizeof nul_inside - 1, &error),
+    ck_assert_int_eq(rt_test_parse_refused(nul_inside, sizeof nul_inside - 1,
+                                           &error),
                      RT_ERR_FORMAT);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:6: expected text, found a NUL byte: the "
@@ -177,7 +179,7 @@ START_TEST(megabyte_number_is_refused_as_too_long)
     memset(text, '7', length);
     memcpy(text, "0 0 ", 4);
     rt_error error;
-    ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_LIMIT);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error), RT_ERR_LIMIT);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:5: expected a number of at most 256 "
                      "characters, found `7777777777777777777777777777777777777777"
@@ -193,21 +195,24 @@ START_TEST(line_of_commas_is_refused_at_the_first_stray_comma)
     ck_assert_ptr_nonnull(text);
     memset(text, ',', length);
     rt_error error;
-    ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:1: expected a number, found `,`");
     /* values then a million commas: the eleventh value (one more than the
      * longest record holds) is the error, found before the commas are
      * read */
     memcpy(text, "1,2,3,4,5,6,7,8,9,10,11", 23);
-    ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:22: expected the end of the line, found "
                      "`11`");
     /* a complete observer, then a million commas on the next line */
     memset(text, ',', length);
     memcpy(text, "0,0,0\n1,", 8);
-    ck_assert_int_eq(parse_refused(text, length, &error), RT_ERR_SYNTAX);
+    ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
+                     RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:2:3: expected a number, found `,`");
     free(text);
@@ -233,7 +238,7 @@ typedef struct bounded_parse {
 static int parse_with_memory_limit(void *arg, char *message, size_t size)
 {
     const bounded_parse *b = arg;
-    if (!limit_address_space(b->limit, message, size))
+    if (!rt_test_limit_address_space(b->limit, message, size))
         return 2;
     rt_error error;
     rt_status status;
@@ -255,7 +260,7 @@ static int parse_with_memory_limit(void *arg, char *message, size_t size)
 
 static int memory_limit_unavailable(void)
 {
-    if (UNDER_ASAN || under_valgrind()) {
+    if (RT_TEST_UNDER_ASAN || rt_test_under_valgrind()) {
         fprintf(stderr,
                 "test_hostile_input: address-space limits skipped under "
                 "a sanitizer or valgrind\n");
@@ -277,8 +282,8 @@ START_TEST(ppm_header_promising_more_pixels_than_the_file_holds_is_refused_befor
         return;
     bounded_parse b = {text, sizeof text - 1, 1, 64u << 20};
     char message[1024];
-    int code = run_in_child(parse_with_memory_limit, &b, message,
-                            sizeof message);
+    int code = rt_test_in_child(parse_with_memory_limit, &b, message,
+                                sizeof message);
     ck_assert_msg(code == 0,
                   "a 20-byte P3 file made the reader allocate more than "
                   "64 MB: %s", message);
@@ -296,8 +301,8 @@ START_TEST(scene_counts_promising_more_than_the_file_holds_are_refused_before_al
     for (size_t i = 0; i < sizeof texts / sizeof *texts; i++) {
         bounded_parse b = {texts[i], strlen(texts[i]), 0, 16u << 20};
         char message[1024];
-        int code = run_in_child(parse_with_memory_limit, &b, message,
-                                sizeof message);
+        int code = rt_test_in_child(parse_with_memory_limit, &b, message,
+                                    sizeof message);
         ck_assert_msg(code == 0, "case %zu ran out of 16 MB: %s", i,
                       message);
         ck_assert_msg(strstr(message, "loaded") == NULL, "case %zu: %s", i,

@@ -25,7 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 /* ------------------------------------------------------------------ */
 /* Resource bounds: time proportional to the input                      */
@@ -133,7 +133,7 @@ START_TEST(parse_time_grows_linearly_with_the_input)
 {
     shape s = (shape)_i;
     size_t small = 1u << 20, large = 8 * small;
-    if (under_valgrind())
+    if (rt_test_under_valgrind())
         small /= 4, large /= 4;
     size_t small_length, large_length;
     char *a = make_input(s, small, &small_length);

@@ -27,7 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 /* ------------------------------------------------------------------ */
 /* Nothing lost: failing writes                                         */
@@ -52,7 +52,7 @@ static int failing_write(void *user, const void *data, size_t size)
 
 START_TEST(failing_sink_stops_the_writer_with_an_io_error)
 {
-    rt_image image = make_image(37, 11);
+    rt_image image = rt_test_pattern(37, 11);
     rt_ppm_format formats[2] = {RT_PPM_P3, RT_PPM_P6};
     for (int f = 0; f < 2; f++) {
         failing_sink count = {0, INT_MAX, 0, 0};
@@ -86,7 +86,7 @@ START_TEST(ppm_write_file_reports_a_full_device)
         fprintf(stderr, "test_hostile_writes: no /dev/full; skipped\n");
         return;
     }
-    rt_image image = make_image(4, 4);
+    rt_image image = rt_test_pattern(4, 4);
     rt_status status = rt_ppm_write_file(full, &image, RT_PPM_P6, NULL);
     fclose(full);
     rt_image_release(&image);
@@ -98,9 +98,9 @@ END_TEST
 
 START_TEST(save_into_a_missing_directory_leaves_nothing)
 {
-    char *dir = make_temp_dir();
-    char *path = join(dir, "missing/out.ppm");
-    rt_image image = make_image(8, 8);
+    char *dir = rt_test_temp_dir();
+    char *path = rt_test_join(dir, "missing/out.ppm");
+    rt_image image = rt_test_pattern(8, 8);
     rt_error error;
     ck_assert_int_eq(rt_ppm_save(path, &image, RT_PPM_P6, &error), RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
@@ -109,32 +109,32 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
              "%s: cannot write the image: the folder %s/missing/ does not "
              "exist", path, dir);
     ck_assert_str_eq(error.message, expected);
-    assert_dir_holds(dir, "");
+    rt_test_assert_dir_holds(dir, "");
     /* a path through a regular file, which no user (root included) can
      * write into */
-    char *file = join(dir, "plain");
-    write_bytes(file, "x", 1);
-    char *through = join(dir, "plain/out.ppm");
+    char *file = rt_test_join(dir, "plain");
+    rt_test_write_bytes(file, "x", 1);
+    char *through = rt_test_join(dir, "plain/out.ppm");
     ck_assert_int_eq(rt_ppm_save(through, &image, RT_PPM_P6, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "plain/ is not a folder"));
-    assert_dir_holds(dir, "plain");
+    rt_test_assert_dir_holds(dir, "plain");
     /* a read-only directory, when permissions apply to this user */
     ck_assert_int_eq(chmod(dir, 0555), 0);
-    char *in_readonly = join(dir, "out.ppm");
+    char *in_readonly = rt_test_join(dir, "out.ppm");
     rt_status status = rt_ppm_save(in_readonly, &image, RT_PPM_P6, &error);
     ck_assert_int_eq(chmod(dir, 0755), 0);
     if (geteuid() != 0) {
         ck_assert_int_eq(status, RT_ERR_IO);
         ck_assert_ptr_nonnull(strstr(error.message, "Permission denied"));
-        assert_dir_holds(dir, "plain");
+        rt_test_assert_dir_holds(dir, "plain");
     }
     free(in_readonly);
     free(through);
     free(file);
     free(path);
     rt_image_release(&image);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -142,21 +142,21 @@ END_TEST
  * temporary file is removed. */
 START_TEST(save_over_a_directory_fails_and_removes_its_temporary_file)
 {
-    char *dir = make_temp_dir();
-    char *target = join(dir, "image.ppm");
+    char *dir = rt_test_temp_dir();
+    char *target = rt_test_join(dir, "image.ppm");
     ck_assert_int_eq(mkdir(target, 0755), 0);
-    rt_image image = make_image(8, 8);
+    rt_image image = rt_test_pattern(8, 8);
     rt_error error;
     ck_assert_int_eq(rt_ppm_save(target, &image, RT_PPM_P6, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "cannot write the image"));
-    assert_dir_holds(dir, "image.ppm");
+    rt_test_assert_dir_holds(dir, "image.ppm");
     struct stat st;
     ck_assert_int_eq(stat(target, &st), 0);
     ck_assert(S_ISDIR(st.st_mode));
     rt_image_release(&image);
     free(target);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -164,21 +164,22 @@ END_TEST
  * name must fit too. */
 START_TEST(save_to_the_longest_file_name_works)
 {
-    char *dir = make_temp_dir();
+    char *dir = rt_test_temp_dir();
     char name[256];
     long name_max = pathconf(dir, _PC_NAME_MAX);
     size_t length = name_max > 0 && name_max < 255 ? (size_t)name_max : 255;
     memset(name, 'n', length);
     memcpy(name + length - 4, ".ppm", 4);
     name[length] = '\0';
-    char *path = join(dir, name);
-    rt_image image = make_image(3, 2);
+    char *path = rt_test_join(dir, name);
+    rt_image image = rt_test_pattern(3, 2);
     rt_error error;
     rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
-    char *names = list_dir(dir);
+    char *names = rt_test_dir_names(dir);
+    ck_assert_ptr_nonnull(names);
     rt_image_release(&image);
     free(path);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     ck_assert_str_eq(names, name);
     free(names);
@@ -223,23 +224,24 @@ static void check_failed_save(const char *dir, int code, const char *message,
                   message);
     ck_assert_msg(strstr(message, reason) != NULL,
                   "the message does not say `%s`: %s", reason, message);
-    char *path = join(dir, "out.ppm");
-    assert_previous_intact(path);
+    char *path = rt_test_join(dir, "out.ppm");
+    rt_test_assert_previous_intact(path);
     free(path);
-    assert_dir_holds(dir, "out.ppm");
+    rt_test_assert_dir_holds(dir, "out.ppm");
 }
 
 START_TEST(save_that_exceeds_the_file_size_limit_keeps_the_previous_file)
 {
-    char *dir = make_temp_dir();
-    char *path = join(dir, "out.ppm");
-    write_bytes(path, previous_ppm, sizeof previous_ppm - 1);
+    char *dir = rt_test_temp_dir();
+    char *path = rt_test_join(dir, "out.ppm");
+    rt_test_write_bytes(path, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1);
     char message[1024];
-    int code = run_in_child(save_with_file_size_limit, dir, message,
-                            sizeof message);
+    int code = rt_test_in_child(save_with_file_size_limit, dir, message,
+                                sizeof message);
     check_failed_save(dir, code, message, "File too large");
     free(path);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -258,8 +260,9 @@ static int save_on_a_full_tmpfs(void *arg, char *message, size_t size)
     char path[PATH_MAX];
     snprintf(path, sizeof path, "%s/out.ppm", dir);
     int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0 || write(fd, previous_ppm, sizeof previous_ppm - 1) !=
-                      (ssize_t)(sizeof previous_ppm - 1)) {
+    if (fd < 0 || write(fd, rt_test_previous_ppm,
+                        sizeof rt_test_previous_ppm - 1) !=
+                      (ssize_t)(sizeof rt_test_previous_ppm - 1)) {
         snprintf(message, size, "cannot write the previous file");
         return 2;
     }
@@ -275,7 +278,8 @@ static int save_on_a_full_tmpfs(void *arg, char *message, size_t size)
     size_t n = file ? fread(data, 1, sizeof data, file) : 0;
     if (file)
         fclose(file);
-    if (n != sizeof previous_ppm - 1 || memcmp(data, previous_ppm, n) != 0) {
+    if (n != sizeof rt_test_previous_ppm - 1 ||
+        memcmp(data, rt_test_previous_ppm, n) != 0) {
         snprintf(message, size, "the previous file was changed: %s", text);
         return 1;
     }
@@ -296,11 +300,11 @@ static int save_on_a_full_tmpfs(void *arg, char *message, size_t size)
 
 START_TEST(save_on_a_full_disk_keeps_the_previous_file)
 {
-    char *dir = make_temp_dir();
+    char *dir = rt_test_temp_dir();
     char message[1024];
-    int code = run_in_child(save_on_a_full_tmpfs, dir, message,
-                            sizeof message);
-    remove_dir(dir);
+    int code = rt_test_in_child(save_on_a_full_tmpfs, dir, message,
+                                sizeof message);
+    rt_test_remove_dir(dir);
     if (code == 3) {
         fprintf(stderr,
                 "test_hostile_writes: full-disk test skipped (%s); the "

@@ -164,29 +164,22 @@ static rt_scene *tilted_square(rt_vec3 v[4], int flip_second)
     return rt_test_scene_from_string(text);
 }
 
-/* A small deterministic generator (no global state). */
-static double next_random(unsigned long long *state)
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) / 9007199254740992.0;
-}
-
 static void rays_through_the_diagonal_never_miss(int flip_second)
 {
     rt_vec3 v[4];
     rt_scene *scene = tilted_square(v, flip_second);
-    unsigned long long state = 12345;
+    rt_test_rng rng = {12345};
     int misses = 0, first_miss = -1;
     const int rays = 20000;
     for (int n = 0; n < rays; n++) {
-        double s = 0.02 + 0.96 * next_random(&state);
+        double s = 0.02 + 0.96 * rt_test_rng_uniform(&rng);
         rt_vec3 p = {v[0].x + s * (v[2].x - v[0].x),
                      v[0].y + s * (v[2].y - v[0].y),
                      v[0].z + s * (v[2].z - v[0].z)};
         /* origins on both sides of the plane, in all directions */
-        rt_vec3 o = {p.x + 10 * (next_random(&state) - 0.5),
-                     p.y + 10 * (next_random(&state) - 0.5),
-                     p.z + 10 * (next_random(&state) - 0.5)};
+        rt_vec3 o = {p.x + 10 * (rt_test_rng_uniform(&rng) - 0.5),
+                     p.y + 10 * (rt_test_rng_uniform(&rng) - 0.5),
+                     p.z + 10 * (rt_test_rng_uniform(&rng) - 0.5)};
         rt_ray ray = {o, {p.x - o.x, p.y - o.y, p.z - o.z}};
         rt_hit hit;
         if (!rt_scene_nearest_hit(scene, ray, INFINITY, &hit)) {
@@ -225,12 +218,12 @@ START_TEST(rays_through_a_vertex_shared_by_a_fan_never_miss)
                "6\n1 2 3 0 255 0 0\n1 3 4 0 255 0 0\n1 4 5 0 255 0 0\n"
                "1 5 6 0 255 0 0\n1 6 7 0 255 0 0\n1 7 2 0 255 0 0\n" LIGHT;
     rt_scene *scene = rt_test_scene_from_string(text);
-    unsigned long long state = 777;
+    rt_test_rng rng = {777};
     int misses = 0;
     for (int n = 0; n < 5000; n++) {
-        rt_vec3 o = {0.1 + 8 * (next_random(&state) - 0.5),
-                     0.2 + 8 * (next_random(&state) - 0.5),
-                     0.3 + 8 * (next_random(&state) - 0.5)};
+        rt_vec3 o = {0.1 + 8 * (rt_test_rng_uniform(&rng) - 0.5),
+                     0.2 + 8 * (rt_test_rng_uniform(&rng) - 0.5),
+                     0.3 + 8 * (rt_test_rng_uniform(&rng) - 0.5)};
         rt_ray ray = {o, {0.1 - o.x, 0.2 - o.y, 0.3 - o.z}};
         rt_hit hit;
         misses += !rt_scene_nearest_hit(scene, ray, INFINITY, &hit);

@@ -21,7 +21,6 @@
 #include <string.h>
 
 #include "cli_text.h"
-#include "program_util.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------------ */
@@ -118,11 +117,10 @@ static size_t hostile(unsigned i, unsigned char *out)
         0x00, 0x01, 0x09, 0x0a, 0x1b, 0x1f, 0x22, 0x5c, 0x2f, 0x41, 0x7f,
         0x80, 0x9f, 0xa0, 0xbf, 0xc0, 0xc1, 0xc2, 0xc3, 0xdf, 0xe0, 0xe2,
         0xed, 0xee, 0xef, 0xf0, 0xf4, 0xf5, 0xf8, 0xfe, 0xff, 0x8f, 0x90};
-    unsigned state = 2654435761u * (i + 1);
+    rt_test_rng rng = {2654435761u * (i + 1)};
     size_t n = 1 + i % 12;
     for (size_t k = 0; k < n; k++) {
-        state = state * 1103515245u + 12345u;
-        unsigned char b = pool[(state >> 16) % sizeof pool];
+        unsigned char b = pool[rt_test_rng_below(&rng, (int)sizeof pool)];
         out[k] = b ? b : 'x'; /* a C string holds no NUL */
     }
     out[n] = '\0';
@@ -131,8 +129,8 @@ static size_t hostile(unsigned i, unsigned char *out)
 
 START_TEST(python_reads_every_string_the_writer_writes)
 {
-    char *dir = fresh_dir();
-    FILE *f = fopen(in_dir(dir, "strings.txt"), "wb");
+    char *dir = rt_test_temp_dir();
+    FILE *f = fopen(rt_test_in_dir(dir, "strings.txt"), "wb");
     ck_assert_ptr_nonnull(f);
     enum { COUNT = 400 };
     for (unsigned i = 0; i < COUNT; i++) {
@@ -145,12 +143,12 @@ START_TEST(python_reads_every_string_the_writer_writes)
         fputc('\n', f);
     }
     ck_assert_int_eq(fclose(f), 0);
-    rt_test_write_file(in_dir(dir, "check.py"), strings_check);
+    rt_test_write_file(rt_test_in_dir(dir, "check.py"), strings_check);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 check.py strings.txt %d", dir, COUNT);
     ck_assert_msg(system(command) == 0, "python's json refused a string");
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -175,14 +173,14 @@ static char *check_object(const char *dir, const char *path,
     char hex[512] = "";
     for (size_t k = 0; name[k] && k < 200; k++)
         snprintf(hex + 2 * k, 3, "%02x", (unsigned char)name[k]);
-    rt_test_write_file(in_dir(dir, "object.py"), object_check);
+    rt_test_write_file(rt_test_in_dir(dir, "object.py"), object_check);
     char command[8192];
     snprintf(command, sizeof command,
              "cd '%s' && python3 object.py '%s' %s %s > printed.txt", dir,
              path, field, hex);
     ck_assert_msg(system(command) == 0, "the JSON of %s failed its check",
                   path);
-    char *printed = rt_test_read_file(in_dir(dir, "printed.txt"), NULL);
+    char *printed = rt_test_read_file(rt_test_in_dir(dir, "printed.txt"), NULL);
     ck_assert_ptr_nonnull(printed);
     return printed;
 }
@@ -197,31 +195,31 @@ static void write_hostile_scene(const char *dir)
     char *text = rt_test_read_file(rt_test_source_path("scenes/cubes.scn"),
                                    NULL);
     ck_assert_ptr_nonnull(text);
-    rt_test_write_file(in_dir(dir, hostile_scene), text);
+    rt_test_write_file(rt_test_in_dir(dir, hostile_scene), text);
     free(text);
 }
 
 START_TEST(stats_and_explain_json_parse_and_agree_on_hostile_names)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     write_hostile_scene(dir);
     const char *stats[] = {hostile_scene, "--size=20x15", "--stats=json",
                            "-q", "--format", "p6", "-o", hostile_output,
                            NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, stats);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, stats);
     ck_assert_msg(r.code == 0, "%s", r.err);
-    rt_test_write_file(in_dir(dir, "stats.txt"), r.err);
-    run_free(&r);
+    rt_test_write_file(rt_test_in_dir(dir, "stats.txt"), r.err);
+    rt_test_output_free(&r);
     char *stats_scene = check_object(dir, "stats.txt", "scene",
                                      hostile_scene);
     free(check_object(dir, "stats.txt", "output", hostile_output));
 
     const char *explain[] = {hostile_scene, "--size=20x15", "--explain",
                              "10,7", "--explain-json", NULL};
-    r = run_in(dir, RT_EXPORT_PATH, explain);
+    r = rt_test_run(dir, RT_EXPORT_PATH, explain);
     ck_assert_msg(r.code == 0, "%s", r.err);
-    rt_test_write_file(in_dir(dir, "explain.txt"), r.out);
-    run_free(&r);
+    rt_test_write_file(rt_test_in_dir(dir, "explain.txt"), r.out);
+    rt_test_output_free(&r);
     char *explain_scene = check_object(dir, "explain.txt", "scene",
                                        hostile_scene);
     /* one writer: the two objects name the scene the same way */
@@ -229,22 +227,22 @@ START_TEST(stats_and_explain_json_parse_and_agree_on_hostile_names)
     ck_assert_ptr_nonnull(strstr(stats_scene, "\\x01\\x1b"));
     free(stats_scene);
     free(explain_scene);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(text_explanations_show_control_bytes_escaped)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     write_hostile_scene(dir);
     const char *explain[] = {hostile_scene, "--size=20x15", "--explain",
                              "10,7", NULL};
-    run r = run_in(dir, RT_EXPORT_PATH, explain);
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, explain);
     ck_assert_msg(r.code == 0, "%s", r.err);
     ck_assert_ptr_nonnull(strstr(r.out, "-\\x01\\x1b[31m-"));
     ck_assert_ptr_null(strchr(r.out, '\x1b'));
-    run_free(&r);
-    remove_dir(dir);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -276,7 +274,7 @@ static Suite *python_suite(void)
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "python") == 0) {
-        if (!python_has_json()) {
+        if (!rt_test_have_python_json()) {
             fprintf(stderr, "test_json_output: python3 with its json module is "
                             "not installed; the JSON is not checked\n");
             return RT_TEST_SKIPPED;

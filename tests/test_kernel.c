@@ -105,7 +105,7 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
                       "%s", error.message);
         /* 48 x 48 keeps the scalar renders of 10,000 facets short (and
          * 8 x 8 under valgrind) */
-        int side = getenv("RT_TEST_MEMCHECK") ? 8 : 48;
+        int side = rt_test_memcheck() ? 8 : 48;
         check_scene(scene, (image_size){side, side}, g.gl_pathv[i]);
         rt_scene_destroy(scene);
     }
@@ -117,7 +117,7 @@ START_TEST(generated_meshes_render_identically_with_both_kernels)
 {
     rt_scene *scene;
     rt_error error;
-    int side = getenv("RT_TEST_MEMCHECK") ? 16 : 64;
+    int side = rt_test_memcheck() ? 16 : 64;
     ck_assert_int_eq(bench_sphere(2000, side, side, &scene, &error), RT_OK);
     check_scene(scene, (image_size){0, 0}, "sphere");
     rt_scene_destroy(scene);
@@ -129,12 +129,12 @@ END_TEST
 
 /* --- single rays, through the internal kernels ---------------------- */
 
-static uint64_t state = 0x9e3779b97f4a7c15u;
+/* The generator of the grids and rays (support/rng.h). */
+static rt_test_rng rng = {0x9e3779b97f4a7c15u};
 
 static double uniform(double lo, double hi)
 {
-    state = state * 6364136223846793005u + 1442695040888963407u;
-    return lo + (hi - lo) * ((double)(state >> 11) / 9007199254740992.0);
+    return rt_test_rng_range(&rng, lo, hi);
 }
 
 /* An n x n grid of squares (two facets each) in the plane z = 0, the
@@ -236,7 +236,7 @@ static void check_rays_on_grid(int jitter)
     rt__scene_kernel_source(scene, &source);
     rt_kernel *kf = rt__kernel_float_ops.create(&source);
     ck_assert_ptr_nonnull(kf);
-    for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 4000); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 200 : 4000); i++) {
         rt_vec3 origin = {uniform(-2, n + 2), uniform(-2, n + 2),
                           uniform(0.5, n)};
         if (i % 4 == 0)         /* from below, too */
@@ -298,7 +298,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
     rt__scene_kernel_source(scene, &source);
     rt_kernel *kf = rt__kernel_float_ops.create(&source);
     ck_assert_ptr_nonnull(kf);
-    for (int i = 0; i < (getenv("RT_TEST_MEMCHECK") ? 200 : 5000); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 200 : 5000); i++) {
         rt_vec3 origin = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;
         rt_scene_facet(scene, (int)uniform(0, 300), &f);

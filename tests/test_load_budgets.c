@@ -17,10 +17,9 @@
 #include <string.h>
 
 #include "formats/tessellate.h"
-#include "load_util.h"
+#include "testutil.h"
 #include "raytrace/raytrace.h"
 #include "scene/scene_internal.h"
-#include "testutil.h"
 
 #define PI 3.14159265358979323846
 
@@ -58,7 +57,7 @@ static rt_scene *load_nff(const char *text)
 static int facets_of(const char *text)
 {
     rt_scene *scene = load_nff(text);
-    int n = load_info(scene).facet_count;
+    int n = rt_test_scene_info(scene).facet_count;
     rt_scene_destroy(scene);
     return n;
 }
@@ -137,13 +136,13 @@ START_TEST(the_issue_s_hostile_views_cost_what_the_file_weighs)
     /* 40 spheres behind the eye and 40 sub-pixel ones, at 16384 x 16384
      * (each once got the finest cut, 198 024 facets, and a warning per
      * zero-area facet): now 8 facets each, a few hundred bytes of file. */
-    load_text t = {0};
-    load_text_add(&t, "v from 0 0 0 at 0 0 1 up 0 1 0 angle 45 hither 1 "
+    rt_test_text t = {0};
+    rt_test_text_add(&t, "v from 0 0 0 at 0 0 1 up 0 1 0 angle 45 hither 1 "
                       "resolution 16384 16384\nl 0 0 0\n");
     for (int i = 0; i < 40; i++)
-        load_text_add(&t, "s 0 0 -%d 1\ns %d 0 1e9 1\n", 10 + i, i);
+        rt_test_text_add(&t, "s 0 0 -%d 1\ns %d 0 1e9 1\n", 10 + i, i);
     rt_scene *scene = load_nff(t.data);
-    rt_scene_info info = load_info(scene);
+    rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_eq(info.facet_count, 80 * 8);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
     ck_assert_int_le(info.warning_count, 4);
@@ -192,7 +191,7 @@ START_TEST(a_file_past_its_facet_budget_is_refused_naming_the_primitive)
     status = parse_as(RT_SCENE_FORMAT_NFF, text, strlen(text), 1e-3, NULL,
                       &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
-    ck_assert_int_eq(load_info(scene).facet_count, 9800);
+    ck_assert_int_eq(rt_test_scene_info(scene).facet_count, 9800);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -240,10 +239,11 @@ START_TEST(zero_area_facets_are_left_out_of_a_sphere_with_one_warning)
                        "hither 1 resolution 256 256\nl 1e6 0 -1\n"
                        "s 1e6 0 0 5e-10\n";
     rt_scene *scene = load_nff(text);
-    rt_scene_info info = load_info(scene);
+    rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_gt(info.facet_count, 0);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
-    ck_assert_int_eq(load_count_warnings(scene, "facets of zero area left out"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "facets of zero area left out"),
                      1);
     int dropped = 0;
     for (int i = 0; i < info.warning_count; i++) {
@@ -261,7 +261,7 @@ START_TEST(zero_area_facets_are_left_out_of_a_sphere_with_one_warning)
     /* Besides those, only the facets the rounding puts in the plane
      * x = 1e6, which holds the eye, are named (edge-on: never seen). */
     ck_assert_int_le(info.warning_count -
-                         load_count_warnings(scene, "plane through the eye"),
+                         rt_test_count_warnings(scene, "plane through the eye"),
                      3);
     rt_scene_destroy(scene);
 }
@@ -276,21 +276,21 @@ static rt_status with_lights(rt_scene_format format, int count,
                              rt_error *error)
 {
     int nff = format == RT_SCENE_FORMAT_NFF;
-    load_text t = {0};
-    load_text_add(&t, "%s",
-                  nff ? "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
+    rt_test_text t = {0};
+    rt_test_text_add(&t, "%s",
+                     nff ? "v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 hither 1 "
                         "resolution 8 8\n"
                       : "0 0 10\n0 0 5 4 0 5 8 8\n3\n0 0 0\n1 0 0\n0 1 0\n"
                         "1\n1 2 3 0 255 255 255\n0 0 0\n");
     for (int i = 0; i < count; i++)
-        load_text_add(&t, nff ? "l %d 0 0\n" : "%d 0 4 255 255 255\n", i);
+        rt_test_text_add(&t, nff ? "l %d 0 0\n" : "%d 0 4 255 255 255\n", i);
     if (nff)
-        load_text_add(&t, "s 0 0 0 1\n");
+        rt_test_text_add(&t, "s 0 0 0 1\n");
     rt_scene *scene = NULL;
     rt_status status = parse_as(format, t.data, t.length, 0, NULL, &scene,
                                 error);
     if (status == RT_OK)
-        ck_assert_int_eq(load_info(scene).light_count, count);
+        ck_assert_int_eq(rt_test_scene_info(scene).light_count, count);
     rt_scene_destroy(scene);
     free(t.data);
     return status;
@@ -367,9 +367,10 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
     ck_assert_double_eq(f.k, 0.5);
     ck_assert_double_eq(f.t, 0.5);
     ck_assert_double_eq(f.n, 1.5);
-    ck_assert_int_eq(load_info(scene).transparent_facet_count,
-                     load_info(scene).live_facet_count);
-    ck_assert_int_eq(load_count_warnings(scene, "Ks + T = 1e+308 + 1e+308 is "
+    ck_assert_int_eq(rt_test_scene_info(scene).transparent_facet_count,
+                     rt_test_scene_info(scene).live_facet_count);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "Ks + T = 1e+308 + 1e+308 is "
                                            "more than 1"),
                      1);
     rt_scene_destroy(scene);

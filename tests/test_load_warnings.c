@@ -16,12 +16,11 @@
 
 #include "base/error.h"
 #include "formats/reader.h"
-#include "load_util.h"
+#include "testutil.h"
 #include "raytrace/raytrace.h"
 #include "scene/scene_internal.h"
-#include "testutil.h"
 
-static rt_scene *parse_scn(const load_text *t, const char *name)
+static rt_scene *parse_scn(const rt_test_text *t, const char *name)
 {
     rt_scene *scene;
     rt_error error;
@@ -33,14 +32,15 @@ static rt_scene *parse_scn(const load_text *t, const char *name)
 
 /* A .scn file of one visible facet (line 9), then `count` more facet
  * lines (from line 10) made by `facet(i)`. */
-static load_text scn_with(int count, const char *(*facet)(int i))
+static rt_test_text scn_with(int count, const char *(*facet)(int i))
 {
-    load_text t = {0};
-    load_text_add(&t, "0 0 10\n0 0 5 4 0 5 16 16\n4\n-1 -1 0\n1 -1 0\n0 1 0\n"
-                  "3 -1 0\n%d\n1 2 3 0 200 100 50\n", count + 1);
+    rt_test_text t = {0};
+    rt_test_text_add(&t,
+                     "0 0 10\n0 0 5 4 0 5 16 16\n4\n-1 -1 0\n1 -1 0\n0 1 0\n"
+                     "3 -1 0\n%d\n1 2 3 0 200 100 50\n", count + 1);
     for (int i = 0; i < count; i++)
-        load_text_add(&t, "%s\n", facet(i));
-    load_text_add(&t, "0 0 0\n0 0 8 255 255 255\n");
+        rt_test_text_add(&t, "%s\n", facet(i));
+    rt_test_text_add(&t, "0 0 0\n0 0 8 255 255 255\n");
     return t;
 }
 
@@ -65,9 +65,9 @@ START_TEST(zero_area_facets_warn_eight_times_then_once_with_a_count)
 {
     /* 1000 zero-area facets on lines 10..1009: once 1000 warnings of 520
      * bytes (and a warning reserved for every facet); now 9. */
-    load_text t = scn_with(1000, collinear);
+    rt_test_text t = scn_with(1000, collinear);
     rt_scene *scene = parse_scn(&t, "t.scn");
-    rt_scene_info info = load_info(scene);
+    rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_eq(info.facet_count, 1001);
     ck_assert_int_eq(info.live_facet_count, 1);
     ck_assert_int_eq(info.warning_count, RT_NOTES_SHOWN_PER_KIND + 1);
@@ -95,9 +95,9 @@ END_TEST
 START_TEST(a_summary_lists_its_lines_as_ranges_and_says_when_it_stops)
 {
     /* zero-area facets on every other line from 10: single lines */
-    load_text t = scn_with(2000, collinear_every_other);
+    rt_test_text t = scn_with(2000, collinear_every_other);
     rt_scene *scene = parse_scn(&t, "t.scn");
-    rt_scene_info info = load_info(scene);
+    rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_eq(info.warning_count, RT_NOTES_SHOWN_PER_KIND + 1);
     const char *m = rt_scene_warning(scene, 8)->message;
     const char *head = "t.scn:26:1: warning: ... and 992 more zero-area "
@@ -204,12 +204,13 @@ static const char *same_facet(int i)
 
 START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
 {
-    load_text once = scn_with(0, same_facet), many = scn_with(10000, same_facet);
+    rt_test_text once = scn_with(0, same_facet),
+                 many = scn_with(10000, same_facet);
     rt_scene *a = parse_scn(&once, "once.scn"), *b = parse_scn(&many,
                                                                "many.scn");
-    ck_assert_int_eq(load_info(b).facet_count, 10001);
-    ck_assert_int_eq(load_info(b).live_facet_count, 1);
-    ck_assert_int_eq(load_info(b).warning_count, 1);
+    ck_assert_int_eq(rt_test_scene_info(b).facet_count, 10001);
+    ck_assert_int_eq(rt_test_scene_info(b).live_facet_count, 1);
+    ck_assert_int_eq(rt_test_scene_info(b).warning_count, 1);
     ck_assert_str_eq(rt_scene_warning(b, 0)->message,
                      "many.scn:10:1: warning: 10000 facets repeat the facet "
                      "just before them exactly (the same vertices in the "
@@ -270,7 +271,7 @@ START_TEST(only_a_repeat_of_the_facet_kept_just_before_is_left_out)
         "-1 -1 0\n6\n1 2 3 0 200 100 50\n1 2 4 0 1 1 1\n1 2 3 0.5 0 0 0\n"
         "5 2 3 0 9 9 9\n2 3 1 0 7 7 7\n1 2 3 0 5 5 5\n0 0 0\n"
         "0 0 8 255 255 255\n";
-    load_text t = {(char *)file, sizeof file - 1, 0};
+    rt_test_text t = {(char *)file, sizeof file - 1, 0};
     rt_scene *scene = parse_scn(&t, "t.scn");
     static const int expected[6] = {0, RT_FACET_ZERO_AREA, RT_FACET_REPEATED,
                                     RT_FACET_REPEATED, 0, 0};
@@ -280,7 +281,7 @@ START_TEST(only_a_repeat_of_the_facet_kept_just_before_is_left_out)
         ck_assert_msg(f.degenerate == expected[i], "facet %d: %d", i + 1,
                       f.degenerate);
     }
-    rt_scene_info info = load_info(scene);
+    rt_scene_info info = rt_test_scene_info(scene);
     ck_assert_int_eq(info.live_facet_count, 3);
     /* the repeat with k = 0.5 is not counted as reflective */
     ck_assert_int_eq(info.reflective_facet_count, 0);
@@ -298,7 +299,7 @@ END_TEST
  * repeat of another colour, k, t and d when `doubled`. */
 static rt_scene *rebuilt(const rt_scene *s, int doubled)
 {
-    rt_scene_info info = load_info(s);
+    rt_scene_info info = rt_test_scene_info(s);
     rt_vec3 *v = malloc((size_t)info.vertex_count * sizeof *v);
     rt_facet_desc *f = calloc((size_t)info.facet_count * 2, sizeof *f);
     rt_light *l = malloc((size_t)info.light_count * sizeof *l);
@@ -400,14 +401,12 @@ static rt_scene *tie_scene(const int *order, int n)
 static int ties_differing(const rt_scene *a, const int *order_a,
                           const rt_scene *b, const int *order_b)
 {
-    uint64_t state = 12345;
+    rt_test_rng rng = {12345};
     int differ = 0;
     for (int k = 0; k < 4096; k++) {
         double u[4];
-        for (int j = 0; j < 4; j++) {
-            state = state * 6364136223846793005u + 1442695040888963407u;
-            u[j] = (double)(state >> 11) / 9007199254740992.0;
-        }
+        for (int j = 0; j < 4; j++)
+            u[j] = rt_test_rng_uniform(&rng);
         double y = (u[0] - 0.5) * 4;
         rt_vec3 o = {(u[1] - 0.5) * 20, (u[2] - 0.5) * 20, 3 + u[3] * 10};
         rt_ray ray = {o, {0.7 - o.x, y - o.y, -o.z}};
@@ -427,9 +426,9 @@ START_TEST(a_repeat_just_after_its_facet_changes_no_hit_even_at_ties)
      * renderer, no ray's nearest facet changes, at the ties too. */
     static const int order[4] = {0, 1, 3, 2};
     rt_scene *left_out = tie_scene(order, 4), *kept = tie_scene(order, 4);
-    ck_assert_int_eq(load_info(left_out).live_facet_count, 3);
+    ck_assert_int_eq(rt_test_scene_info(left_out).live_facet_count, 3);
     keep_repeats(kept);
-    ck_assert_int_eq(load_info(kept).live_facet_count, 4);
+    ck_assert_int_eq(rt_test_scene_info(kept).live_facet_count, 4);
     ck_assert_int_eq(ties_differing(left_out, order, kept, order), 0);
     rt_scene_destroy(left_out);
     rt_scene_destroy(kept);
@@ -446,7 +445,7 @@ START_TEST(a_repeat_apart_from_its_facet_stays_as_leaving_it_out_changes_hits)
                                                                        2};
     rt_scene *with = tie_scene(with_order, 4),
              *without = tie_scene(without_order, 3);
-    ck_assert_int_eq(load_info(with).live_facet_count, 4);
+    ck_assert_int_eq(rt_test_scene_info(with).live_facet_count, 4);
     ck_assert_int_gt(ties_differing(with, with_order, without, without_order),
                      0);
     rt_scene_destroy(with);
@@ -470,11 +469,11 @@ START_TEST(repeats_of_another_material_change_no_pixel_of_the_project_scenes)
                                     &error) == RT_OK,
                       "%s", error.message);
         rt_scene *left_out = rebuilt(file, 1), *kept = rebuilt(file, 1);
-        ck_assert_int_eq(load_info(left_out).live_facet_count,
-                         load_info(file).live_facet_count);
+        ck_assert_int_eq(rt_test_scene_info(left_out).live_facet_count,
+                         rt_test_scene_info(file).live_facet_count);
         keep_repeats(kept);
-        ck_assert_int_eq(load_info(kept).live_facet_count,
-                         2 * load_info(file).live_facet_count);
+        ck_assert_int_eq(rt_test_scene_info(kept).live_facet_count,
+                         2 * rt_test_scene_info(file).live_facet_count);
         assert_same_pictures(left_out, kept, scenes[i]);
         rt_scene_destroy(file);
         rt_scene_destroy(left_out);
@@ -537,9 +536,9 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     ck_assert_str_eq(error.message,
                      "evil\\x1B]0;owned\\x07.scn:1:4: expected 3 values for "
                      "the observer `x, y, z`, found 2");
-    load_text t = scn_with(1, collinear);
+    rt_test_text t = scn_with(1, collinear);
     scene = parse_scn(&t, name);
-    ck_assert_int_eq(load_info(scene).warning_count, 1);
+    ck_assert_int_eq(rt_test_scene_info(scene).warning_count, 1);
     const char *m = rt_scene_warning(scene, 0)->message;
     ck_assert(!has_control_byte(m));
     ck_assert_msg(strncmp(m, "evil\\x1B]0;owned\\x07.scn:10:1: warning: ",
@@ -557,7 +556,7 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     ck_assert_int_eq(rt_scene_parse_with(nff, sizeof nff - 1, "n\x1b.nff",
                                          &options, &scene, &error),
                      RT_OK);
-    for (int i = 0; i < load_info(scene).warning_count; i++) {
+    for (int i = 0; i < rt_test_scene_info(scene).warning_count; i++) {
         m = rt_scene_warning(scene, i)->message;
         ck_assert_msg(!has_control_byte(m), "%s", m);
         ck_assert_msg(strncmp(m, "n\\x1B.nff", 9) == 0, "%s", m);

@@ -42,16 +42,6 @@ static rt_scene *load_nff(const char *text, double tolerance)
     return scene;
 }
 
-static int count_warnings(const rt_scene *scene, const char *word)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    int n = 0;
-    for (int i = 0; i < info.warning_count; i++)
-        n += strstr(rt_scene_warning(scene, i)->message, word) != NULL;
-    return n;
-}
-
 static rt_vec3 sub(rt_vec3 a, rt_vec3 b)
 {
     return (rt_vec3){a.x - b.x, a.y - b.y, a.z - b.z};
@@ -197,7 +187,7 @@ START_TEST(a_negative_radius_winds_the_sphere_inward_with_a_warning)
         corners(scene, i, p);
         ck_assert(dot(winding(scene, i), p[0]) < 0);
     }
-    ck_assert_int_eq(count_warnings(scene, "negative radius"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "negative radius"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -273,7 +263,7 @@ START_TEST(the_view_maps_to_the_screen_with_the_angle_between_pixel_centres)
     ck_assert_double_eq_tol(ray.direction.x / ray.direction.y, -1, 1e-12);
     ray = rt_camera_ray(c, 5, 0);
     ck_assert_double_eq_tol(ray.direction.z / ray.direction.y, 1, 1e-12);
-    ck_assert_int_eq(count_warnings(scene, "hither"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "hither"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -301,7 +291,7 @@ START_TEST(colours_and_materials_map_to_the_model)
     /* Kd above 1 stays (the model needs only d >= 0); T = 0: n = 1 */
     rt_scene_facet(scene, 1, &f);
     ck_assert(f.d == 2 && f.k == 0.25 && f.t == 0 && f.n == 1);
-    ck_assert_int_eq(count_warnings(scene, "Shine"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "Shine"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -316,7 +306,7 @@ START_TEST(ks_plus_t_above_one_is_scaled_down_with_a_warning)
     ck_assert_double_eq_tol(f.k, 0.4, 1e-12);
     ck_assert_double_eq_tol(f.t, 0.6, 1e-12);
     ck_assert(f.k + f.t <= 1);
-    ck_assert_int_eq(count_warnings(scene, "Ks + T = 1.5"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "Ks + T = 1.5"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -358,7 +348,7 @@ START_TEST(a_file_without_light_gets_a_white_light_at_the_eye)
     ck_assert(info.light_position.x == 1 && info.light_position.y == 2 &&
               info.light_position.z == 3);
     ck_assert_int_eq(info.light_color.r, 255);
-    ck_assert_int_eq(count_warnings(scene, "no light"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "no light"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -419,7 +409,7 @@ START_TEST(a_patch_ignores_its_normals_with_one_warning)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 2);
-    ck_assert_int_eq(count_warnings(scene, "normals of `pp`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "normals of `pp`"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST

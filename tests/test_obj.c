@@ -3,12 +3,9 @@
  * every index form, relative indices, polygons triangulated by ear clipping
  * (areas and orientations checked against the polygon), materials mapped
  * from the .mtl, warnings for what is ignored, refusals with their line and
- * column, the automatic camera (every vertex inside the image), and renders
- * of a small model.  Models from elsewhere are rendered when the folder
- * named by RAYTRACE_OBJ_MODELS holds some (the test says when it skips).
+ * column.  The automatic camera and the renders are test_obj_view.c's.
  */
 #include <check.h>
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,39 +13,13 @@
 
 #include "testutil.h"
 
-/* Parses an OBJ held in a C string (no path: no .mtl is read). */
-static rt_status parse_obj(const char *text, const rt_load_options *given,
-                           rt_scene **scene, rt_error *error)
-{
-    rt_load_options options;
-    if (given != NULL)
-        options = *given;
-    else
-        rt_load_options_init(&options);
-    options.format = RT_SCENE_FORMAT_OBJ;
-    return rt_scene_parse_with(text, strlen(text), NULL, &options, scene,
-                               error);
-}
-
 static rt_scene *obj(const char *text)
 {
     rt_scene *scene = NULL;
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status status = parse_obj(text, NULL, &scene, &error);
+    rt_status status = rt_test_parse_obj(text, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "the OBJ did not load: %s", error.message);
-    return scene;
-}
-
-static rt_scene *obj_file(const char *relative)
-{
-    rt_scene *scene = NULL;
-    rt_error error;
-    memset(&error, 0, sizeof error);
-    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
-                                     &error);
-    ck_assert_msg(status == RT_OK, "%s did not load: %s", relative,
-                  error.message);
     return scene;
 }
 
@@ -77,17 +48,6 @@ static void refused(const char *text, rt_status status, int line, int column,
     ck_assert_msg(strncmp(error.message, prefix, strlen(prefix)) == 0,
                   "message `%s` does not start with `%s`", error.message,
                   prefix);
-}
-
-/* The number of warnings holding `words`. */
-static int warnings_with(const rt_scene *scene, const char *words)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    int found = 0;
-    for (int i = 0; i < info.warning_count; i++)
-        found += strstr(rt_scene_warning(scene, i)->message, words) != NULL;
-    return found;
 }
 
 static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
@@ -122,7 +82,7 @@ START_TEST(each_index_form_names_the_same_vertices)
                  "vn 0 0 1\n%s\n", faces[i]);
         rt_scene *scene = NULL;
         rt_error error;
-        rt_status status = parse_obj(text, NULL, &scene, &error);
+        rt_status status = rt_test_parse_obj(text, NULL, &scene, &error);
         if (!expected_ok[i]) {
             ck_assert_int_eq(status, RT_ERR_SYNTAX);
             continue;
@@ -238,7 +198,7 @@ static void check_polygon(const double (*p)[2], int n, rt_vec3 origin,
     ck_assert_msg(fabs(total - polygon_area) <= 1e-9 * fabs(polygon_area),
                   "the facets cover %.17g, the polygon %.17g", total,
                   polygon_area);
-    ck_assert_int_eq(warnings_with(scene, "fan"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "fan"), 0);
     rt_scene_destroy(scene);
 }
 
@@ -305,8 +265,8 @@ START_TEST(a_polygon_that_crosses_itself_is_fanned_with_a_warning)
     rt_scene *scene = obj("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3 4\n");
     ck_assert_int_eq(facet_count(scene), 2);
-    ck_assert_int_eq(warnings_with(scene, "triangulated as a fan"), 1);
-    ck_assert_int_eq(warnings_with(scene, ":5:1: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "triangulated as a fan"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, ":5:1: warning"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -354,7 +314,7 @@ static void material_is(const rt_scene *scene, int facet, int r, int g,
 
 START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
 {
-    rt_scene *scene = obj_file("tests/data/obj/materials.obj");
+    rt_scene *scene = rt_test_load_source_scene("tests/data/obj/materials.obj");
     ck_assert_int_eq(facet_count(scene), 14);
     /* Kd 1 0 0, illum 1: colour only. */
     material_is(scene, 0, 255, 0, 0, 0, 0, 1, 1);
@@ -366,47 +326,53 @@ START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
     material_is(scene, 6, 0, 255, 0, 0, 0.4, 1.33, 0.6);
     /* illum 5, Ks 0.9, d 0.5: k + t > 1, so k is lowered to 1 - t. */
     material_is(scene, 8, 204, 204, 204, 0.5, 0.5, 1, 0);
-    ck_assert_int_eq(warnings_with(scene, "`mirror_glass`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`mirror_glass`"), 1);
     /* illum 2 with Ks: a highlight, which the model has no place for. */
     material_is(scene, 10, 128, 128, 128, 0, 0, 1, 1);
     /* A material no library defines: the default grey, with a warning. */
     material_is(scene, 12, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(warnings_with(scene, "material `nowhere` is defined "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "material `nowhere` is defined "
                                           "in no material library"), 1);
-    ck_assert_int_eq(warnings_with(scene, "materials.obj:20:8: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "materials.obj:20:8: warning"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
 
 START_TEST(a_missing_material_library_is_a_warning_and_the_mesh_is_grey)
 {
-    rt_scene *scene = obj_file("tests/data/obj/missing-mtl.obj");
+    rt_scene *scene =
+        rt_test_load_source_scene("tests/data/obj/missing-mtl.obj");
     ck_assert_int_eq(facet_count(scene), 1);
     material_is(scene, 0, 204, 204, 204, 0, 0, 1, 1);
-    ck_assert_int_eq(warnings_with(scene, "material library "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material library "
                                           "`no-such-library.mtl` is not "
                                           "read"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "missing-mtl.obj:2:8: warning"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "missing-mtl.obj:2:8: warning"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "material `red`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material `red`"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
 
 START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
 {
-    rt_scene *scene = obj_file("tests/data/obj/spaced-library.obj");
+    rt_scene *scene =
+        rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 0);
     rt_scene_destroy(scene);
-    scene = obj_file("tests/data/obj/escaped-library.obj");
+    scene = rt_test_load_source_scene("tests/data/obj/escaped-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 1);
-    ck_assert_int_eq(warnings_with(scene, "escaped-library.obj:2:8: warning: "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "escaped-library.obj:2:8: warning: "
                                           "material library `missing.mtl` "
                                           "is not read"), 1);
     rt_scene_destroy(scene);
@@ -417,7 +383,7 @@ START_TEST(an_obj_from_memory_without_a_resolver_reads_no_library)
 {
     rt_scene *scene = obj("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                           "f 1 2 3\n");
-    ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "without a resolver"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -431,13 +397,13 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
                           "vp 0.5\nvp 0.5\ncstype bezier\nl 1 2\nl 2 3\n"
                           "p 1\no thing\ng a b\ns off\nf 1 2 3\n");
     ck_assert_int_eq(facet_count(scene), 1);
-    ck_assert_int_eq(warnings_with(scene, "`vp` statements are not "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`vp` statements are not "
                                           "understood"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`cstype`"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`l` statements"), 1);
-    ck_assert_int_eq(warnings_with(scene, "`p` statements"), 1);
-    ck_assert_int_eq(warnings_with(scene, "vertex normals"), 1);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:6:1: warning"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`cstype`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`l` statements"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`p` statements"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "vertex normals"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:6:1: warning"), 1);
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 5);
@@ -449,11 +415,12 @@ START_TEST(a_file_without_faces_loads_with_a_warning)
 {
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nl 1 2\n");
     ck_assert_int_eq(facet_count(scene), 0);
-    ck_assert_int_eq(warnings_with(scene, "<memory>: warning: the file has "
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "<memory>: warning: the file has "
                                           "no face to draw"), 1);
     rt_scene_destroy(scene);
     scene = obj("");
-    ck_assert_int_eq(warnings_with(scene, "no face to draw"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "no face to draw"), 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -486,10 +453,10 @@ START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
                           "f 1/2/1 2/9/1 3/-2/4\nf 3/1 2/5 1/1\n");
     ck_assert_int_eq(facet_count(scene), 2);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:5:5: warning: `2` "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:5: warning: `2` "
                                           "refers to no texture coordinate"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "<memory>:5:7: warning: `1` "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:7: warning: `1` "
                                           "refers to no normal"),
                      1);
     rt_scene_info info;
@@ -558,257 +525,6 @@ START_TEST(binary_and_utf16_input_are_refused_by_the_shared_checks)
 }
 END_TEST
 
-/* ------------------------------------------------------------------ */
-/* The automatic camera and light                                       */
-
-/* Pixel coordinates of p seen by the camera (x right, y down, in
- * [0, w] x [0, h] when inside the image); returns 0 behind the observer. */
-static int project(const rt_camera *c, rt_vec3 p, double *x, double *y)
-{
-    rt_vec3 ao = {c->screen_center.x - c->observer.x,
-                  c->screen_center.y - c->observer.y,
-                  c->screen_center.z - c->observer.z};
-    rt_vec3 op = {p.x - c->observer.x, p.y - c->observer.y,
-                  p.z - c->observer.z};
-    double along = op.x * ao.x + op.y * ao.y + op.z * ao.z;
-    double ao2 = ao.x * ao.x + ao.y * ao.y + ao.z * ao.z;
-    if (!(along > 0))
-        return 0;
-    double s = ao2 / along;
-    rt_vec3 q = {op.x * s - ao.x, op.y * s - ao.y, op.z * s - ao.z};
-    const rt_vec3 *r = &c->right, *u = &c->up;
-    double u_ = (q.x * r->x + q.y * r->y + q.z * r->z) /
-                (r->x * r->x + r->y * r->y + r->z * r->z);
-    double v_ = (q.x * u->x + q.y * u->y + q.z * u->z) /
-                (u->x * u->x + u->y * u->y + u->z * u->z);
-    *x = (u_ + 1) * c->width / 2;
-    *y = (1 - v_ * c->width / c->height) * c->height / 2;
-    return 1;
-}
-
-static void every_vertex_inside_the_image(const char *text, int width,
-                                          int height)
-{
-    rt_load_options options;
-    rt_load_options_init(&options);
-    options.width = width;
-    options.height = height;
-    rt_scene *scene = NULL;
-    rt_error error;
-    ck_assert_msg(parse_obj(text, &options, &scene, &error) == RT_OK, "%s",
-                  error.message);
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.width, width > 0 ? width : height > 0 ? height : 512);
-    ck_assert_int_eq(info.height, height > 0 ? height : info.width);
-    for (int i = 0; i < info.vertex_count; i++) {
-        double x, y;
-        ck_assert(project(&info.camera, rt_scene_vertex(scene, i), &x, &y));
-        ck_assert_msg(x >= 0 && x <= info.width && y >= 0 &&
-                          y <= info.height,
-                      "vertex %d at pixel (%g, %g) of %dx%d", i, x, y,
-                      info.width, info.height);
-    }
-    rt_scene_destroy(scene);
-}
-
-START_TEST(the_automatic_camera_sees_every_vertex_at_any_image_shape)
-{
-    /* A long thin box, off the origin, and a cloud of points. */
-    char text[4096];
-    size_t used = 0;
-    for (int i = 0; i < 8; i++)
-        used += (size_t)sprintf(text + used, "v %g %g %g\n",
-                                i & 1 ? 1000.0 : -20.0, i & 2 ? 3.0 : 1.0,
-                                i & 4 ? 7.0 : 5.0);
-    used += (size_t)sprintf(text + used, "f 1 2 4 3\nf 5 6 8 7\n"
-                                          "f 1 2 6 5\nf 3 4 8 7\n");
-    int sizes[][2] = {{0, 0}, {640, 120}, {90, 700}, {1, 1}, {300, 0}};
-    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
-        every_vertex_inside_the_image(text, sizes[i][0], sizes[i][1]);
-    used = 0;
-    unsigned seed = 12345;
-    for (int i = 0; i < 60; i++) {
-        double c[3];
-        for (int k = 0; k < 3; k++) {
-            seed = seed * 1103515245u + 12345u;
-            c[k] = ((seed >> 8) % 20001) / 100.0 - 100.0;
-        }
-        used += (size_t)sprintf(text + used, "v %g %g %g\n", c[0] * 1e-5,
-                                c[1] * 1e-5 + 3, c[2] * 1e-5);
-    }
-    for (int i = 0; i + 2 < 60; i += 3)
-        used += (size_t)sprintf(text + used, "f %d %d %d\n", i + 1, i + 2,
-                                i + 3);
-    every_vertex_inside_the_image(text, 200, 100);
-    every_vertex_inside_the_image(text, 100, 200);
-}
-END_TEST
-
-START_TEST(the_view_and_light_options_replace_the_automatic_ones)
-{
-    rt_load_options options;
-    rt_load_options_init(&options);
-    options.look_from_given = 1;
-    options.look_from = (rt_vec3){0, 0, 10};
-    options.look_at_given = 1;
-    options.look_at = (rt_vec3){0, 0, 0};
-    rt_light light = {{1, 2, 3}, {10, 20, 30}};
-    options.lights = &light;
-    options.light_count = 1;
-    rt_scene *scene = NULL;
-    rt_error error;
-    ck_assert_int_eq(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                               &options, &scene, &error),
-                     RT_OK);
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert(info.camera.observer.z == 10 && info.camera.observer.x == 0);
-    ck_assert(info.light_position.x == 1 && info.light_color.b == 30);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-static int is_background(const rt_image *image, int x, int y,
-                         rt_rgb8 background)
-{
-    const unsigned char *p = rt_image_pixel(image, x, y);
-    return p[0] == background.r && p[1] == background.g &&
-           p[2] == background.b;
-}
-
-START_TEST(a_cube_renders_framed_with_its_red_top_lit)
-{
-    rt_scene *scene = obj_file("tests/data/obj/cube.obj");
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.facet_count, 12);
-    ck_assert_int_eq(info.live_facet_count, 12);
-    ck_assert_int_eq(info.width, 512);
-    ck_assert_int_eq(info.height, 512);
-    rt_image image = rt_test_render(scene, 5, 2);
-    /* The border of the image is background, the centre is not. */
-    for (int i = 0; i < 512; i++) {
-        ck_assert(is_background(&image, i, 0, info.background));
-        ck_assert(is_background(&image, i, 511, info.background));
-        ck_assert(is_background(&image, 0, i, info.background));
-        ck_assert(is_background(&image, 511, i, info.background));
-    }
-    ck_assert(!is_background(&image, 256, 256, info.background));
-    /* The top (y = 1, red) is seen from above and lit: find red pixels in
-     * the upper half, and lit white ones too. */
-    long red = 0, white = 0;
-    for (int y = 0; y < 512; y++)
-        for (int x = 0; x < 512; x++) {
-            const unsigned char *p = rt_image_pixel(&image, x, y);
-            red += p[0] > 60 && p[1] < p[0] / 4 && p[2] < p[0] / 4 &&
-                   y < 256;
-            white += p[0] > 60 && p[0] == p[1] && p[1] == p[2];
-        }
-    ck_assert_msg(red > 2000, "%ld red pixels", red);
-    ck_assert_msg(white > 2000, "%ld white pixels", white);
-    rt_image_release(&image);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-typedef struct buffer {
-    char *data;
-    size_t length;
-} buffer;
-
-static int append(void *user, const void *data, size_t size)
-{
-    buffer *b = user;
-    char *grown = realloc(b->data, b->length + size + 1);
-    if (grown == NULL)
-        return 0;
-    memcpy(grown + b->length, data, size);
-    b->data = grown;
-    b->length += size;
-    return 1;
-}
-
-START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
-{
-    static const char *const files[] = {"tests/data/obj/cube.obj",
-                                        "tests/data/obj/materials.obj"};
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        rt_scene *scene = obj_file(files[i]);
-        buffer b = {NULL, 0};
-        rt_error error;
-        unsigned dropped = 0;
-        ck_assert_int_eq(rt_scene_write_scn(scene, 1, append, &b, &dropped,
-                                            &error),
-                         RT_OK);
-        rt_scene *again = NULL;
-        ck_assert_msg(rt_scene_parse(b.data, b.length, "converted.scn",
-                                     &again, &error) == RT_OK,
-                      "%s", error.message);
-        rt_image direct = rt_test_render(scene, 5, 2);
-        rt_image converted = rt_test_render(again, 5, 2);
-        ck_assert_int_eq(rt_test_image_diff(&direct, &converted, NULL), 0);
-        rt_image_release(&direct);
-        rt_image_release(&converted);
-        rt_scene_destroy(again);
-        rt_scene_destroy(scene);
-        free(b.data);
-    }
-}
-END_TEST
-
-/* ------------------------------------------------------------------ */
-/* Models from elsewhere                                                */
-
-START_TEST(real_models_in_raytrace_obj_models_load_and_render)
-{
-    const char *folder = getenv("RAYTRACE_OBJ_MODELS");
-    DIR *dir = folder ? opendir(folder) : NULL;
-    if (dir == NULL) {
-        printf("test_obj: SKIPPED real_models_in_raytrace_obj_models_load_"
-               "and_render: set RAYTRACE_OBJ_MODELS to a folder of .obj "
-               "files (e.g. github.com/alecjacobson/common-3d-test-models "
-               "data/) to run it\n");
-        return;
-    }
-    int models = 0;
-    struct dirent *entry;
-    while ((entry = readdir(dir)) != NULL) {
-        size_t n = strlen(entry->d_name);
-        if (n < 5 || strcmp(entry->d_name + n - 4, ".obj") != 0)
-            continue;
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", folder, entry->d_name);
-        rt_load_options options;
-        rt_load_options_init(&options);
-        options.width = options.height = 64;
-        rt_scene *scene = NULL;
-        rt_error error;
-        ck_assert_msg(rt_scene_load_with(path, &options, &scene, &error) ==
-                          RT_OK,
-                      "%s", error.message);
-        rt_scene_info info;
-        rt_scene_get_info(scene, &info);
-        ck_assert_int_gt(info.live_facet_count, 0);
-        rt_image image = rt_test_render(scene, 1, 2);
-        long covered = 0;
-        for (int y = 0; y < 64; y++)
-            for (int x = 0; x < 64; x++)
-                covered += !is_background(&image, x, y, info.background);
-        ck_assert_msg(covered > 64 * 64 / 20, "%s covers %ld pixels", path,
-                      covered);
-        printf("test_obj: %s: %d facets, %ld of 4096 pixels covered\n",
-               entry->d_name, info.facet_count, covered);
-        rt_image_release(&image);
-        rt_scene_destroy(scene);
-        models++;
-    }
-    closedir(dir);
-    if (models == 0)
-        printf("test_obj: SKIPPED: no .obj file in %s\n", folder);
-}
-END_TEST
-
 static Suite *obj_suite(void)
 {
     Suite *s = suite_create("obj");
@@ -851,14 +567,6 @@ static Suite *obj_suite(void)
                    binary_and_utf16_input_are_refused_by_the_shared_checks);
     suite_add_tcase(s, c);
 
-    c = tcase_create("view");
-    tcase_set_timeout(c, 120);
-    tcase_add_test(c, the_automatic_camera_sees_every_vertex_at_any_image_shape);
-    tcase_add_test(c, the_view_and_light_options_replace_the_automatic_ones);
-    tcase_add_test(c, a_cube_renders_framed_with_its_red_top_lit);
-    tcase_add_test(c, an_obj_written_as_scn_renders_the_same_bytes);
-    tcase_add_test(c, real_models_in_raytrace_obj_models_load_and_render);
-    suite_add_tcase(s, c);
     return s;
 }
 

@@ -20,10 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 static const char triangle[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 static const char red_library[] = "newmtl red\nKd 1 0 0\n";
@@ -36,27 +35,27 @@ typedef struct folders {
 
 static folders make_folders(void)
 {
-    folders f = {make_temp_dir(), make_temp_dir(), NULL};
+    folders f = {rt_test_temp_dir(), rt_test_temp_dir(), NULL};
     f.outside_base = strrchr(f.outside_dir, '/') + 1;
     return f;
 }
 
 static void remove_folders(folders *f)
 {
-    remove_dir(f->scene_dir);
-    remove_dir(f->outside_dir);
+    rt_test_remove_dir(f->scene_dir);
+    rt_test_remove_dir(f->outside_dir);
 }
 
 static void write_text(const char *dir, const char *name, const char *text)
 {
-    char *path = join(dir, name);
-    write_bytes(path, text, strlen(text));
+    char *path = rt_test_join(dir, name);
+    rt_test_write_bytes(path, text, strlen(text));
     free(path);
 }
 
 static void make_link(const char *dir, const char *name, const char *target)
 {
-    char *path = join(dir, name);
+    char *path = rt_test_join(dir, name);
     ck_assert_msg(symlink(target, path) == 0, "symlink %s: %s", path,
                   strerror(errno));
     free(path);
@@ -65,23 +64,13 @@ static void make_link(const char *dir, const char *name, const char *target)
 /* Loads dir/name with the default options; fails the test on a refusal. */
 static rt_scene *load(const char *dir, const char *name)
 {
-    char *path = join(dir, name);
+    char *path = rt_test_join(dir, name);
     rt_scene *scene = NULL;
     rt_error error;
     ck_assert_msg(rt_scene_load_with(path, NULL, &scene, &error) == RT_OK,
                   "%s: %s", path, error.message);
     free(path);
     return scene;
-}
-
-static int warnings_with(const rt_scene *scene, const char *words)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    int n = 0;
-    for (int i = 0; i < info.warning_count; i++)
-        n += strstr(rt_scene_warning(scene, i)->message, words) != NULL;
-    return n;
 }
 
 static rt_rgb8 facet_color(const rt_scene *scene, int i)
@@ -96,7 +85,7 @@ static rt_rgb8 facet_color(const rt_scene *scene, int i)
 static void refusal_of(const char *dir, const char *reference, char *out,
                        size_t size)
 {
-    char *scene_name = join(dir, "scene.obj");
+    char *scene_name = rt_test_join(dir, "scene.obj");
     rt_resolved_file file = {(char *)1, 7, (char *)1, 1, 1};
     rt_error error;
     memset(&error, 0, sizeof error);
@@ -117,7 +106,7 @@ START_TEST(names_leading_out_of_the_folder_get_one_message_whether_or_not_the_fi
 {
     folders f = make_folders();
     write_text(f.outside_dir, "present.mtl", "newmtl SECRET-LINE\nKd 1 0 0\n");
-    char *fifo = join(f.outside_dir, "fifo.mtl");
+    char *fifo = rt_test_join(f.outside_dir, "fifo.mtl");
     ck_assert_int_eq(mkfifo(fifo, 0600), 0);
     free(fifo);
     char up[3][512];
@@ -149,10 +138,11 @@ START_TEST(names_leading_out_of_the_folder_get_one_message_whether_or_not_the_fi
              up[0], triangle);
     write_text(f.scene_dir, "scene.obj", text);
     rt_scene *scene = load(f.scene_dir, "scene.obj");
-    ck_assert_int_eq(warnings_with(scene, "must lie in the scene's folder"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "must lie in the scene's folder"),
                      3);
-    ck_assert_int_eq(warnings_with(scene, "Kd"), 0);
-    ck_assert_int_eq(warnings_with(scene, "root"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "Kd"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "root"), 0);
     rt_rgb8 c = facet_color(scene, 0);
     ck_assert(c.r == 204 && c.g == 204 && c.b == 204);
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
@@ -164,16 +154,16 @@ END_TEST
 START_TEST(links_and_folders_inside_the_folder_are_followed)
 {
     folders f = make_folders();
-    char *sub = join(f.scene_dir, "sub");
+    char *sub = rt_test_join(f.scene_dir, "sub");
     ck_assert_int_eq(mkdir(sub, 0700), 0);
     write_text(sub, "m.mtl", red_library);
     make_link(f.scene_dir, "alias.mtl", "sub/m.mtl");
     make_link(sub, "up.mtl", "../alias.mtl");   /* .. that stays inside */
-    char *scene_name = join(f.scene_dir, "scene.obj");
+    char *scene_name = rt_test_join(f.scene_dir, "scene.obj");
     const char *references[] = {"sub/m.mtl", "alias.mtl", "sub/up.mtl",
                                 "./sub//m.mtl"};
     struct stat st;
-    char *target = join(sub, "m.mtl");
+    char *target = rt_test_join(sub, "m.mtl");
     ck_assert_int_eq(stat(target, &st), 0);
     for (size_t i = 0; i < sizeof references / sizeof *references; i++) {
         rt_resolved_file file;
@@ -194,10 +184,10 @@ START_TEST(links_and_folders_inside_the_folder_are_followed)
     refusal_of(f.scene_dir, "sub", message, sizeof message);
     ck_assert_ptr_nonnull(strstr(message, "a folder"));
     free(target);
-    target = join(sub, "up.mtl");
+    target = rt_test_join(sub, "up.mtl");
     unlink(target);
     free(target);
-    target = join(sub, "m.mtl");
+    target = rt_test_join(sub, "m.mtl");
     unlink(target);
     free(target);
     free(sub);
@@ -210,7 +200,7 @@ static int resolve_fifo(void *arg, char *message, size_t size)
 {
     const char *dir = arg;
     alarm(10);                  /* a blocked open would end here */
-    char *scene_name = join(dir, "scene.obj");
+    char *scene_name = rt_test_join(dir, "scene.obj");
     rt_resolved_file file;
     rt_error error;
     rt_status status = rt_resolve_in_folder(NULL, scene_name, "fifo.mtl",
@@ -223,12 +213,12 @@ static int resolve_fifo(void *arg, char *message, size_t size)
 START_TEST(a_fifo_named_as_a_library_is_refused_without_blocking)
 {
     folders f = make_folders();
-    char *fifo = join(f.scene_dir, "fifo.mtl");
+    char *fifo = rt_test_join(f.scene_dir, "fifo.mtl");
     ck_assert_int_eq(mkfifo(fifo, 0600), 0);
     free(fifo);
     char message[1024];
-    int code = run_in_child(resolve_fifo, f.scene_dir, message,
-                            sizeof message);
+    int code = rt_test_in_child(resolve_fifo, f.scene_dir, message,
+                                sizeof message);
     ck_assert_msg(code == 0, "exit %d: %s", code, message);
     ck_assert_ptr_nonnull(strstr(message, "a FIFO, not a regular file"));
     remove_folders(&f);
@@ -239,7 +229,7 @@ START_TEST(a_file_larger_than_the_limit_is_refused_unread)
 {
     folders f = make_folders();
     write_text(f.scene_dir, "m.mtl", red_library);
-    char *scene_name = join(f.scene_dir, "scene.obj");
+    char *scene_name = rt_test_join(f.scene_dir, "scene.obj");
     rt_resolved_file file = {NULL, 0, NULL, 0, 0};
     rt_error error;
     ck_assert_int_eq(rt_resolve_in_folder(NULL, scene_name, "m.mtl", 5,
@@ -255,7 +245,7 @@ END_TEST
 START_TEST(names_in_messages_have_their_control_bytes_escaped)
 {
     folders f = make_folders();
-    char *scene_name = join(f.scene_dir, "scene.obj");
+    char *scene_name = rt_test_join(f.scene_dir, "scene.obj");
     rt_resolved_file file;
     rt_error error;
     rt_resolve_in_folder(NULL, scene_name, "/\x1b[2J\x07", 10, &file,
@@ -278,8 +268,9 @@ START_TEST(names_in_messages_have_their_control_bytes_escaped)
                "mtllib \x1b[31mgone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
                "f 1 2 3\n");
     rt_scene *scene = load(f.scene_dir, "scene.obj");
-    ck_assert_int_eq(warnings_with(scene, "\x1b"), 0);
-    ck_assert_int_eq(warnings_with(scene, "`\\x1B[31mgone.mtl` is not read"),
+    ck_assert_int_eq(rt_test_count_warnings(scene, "\x1b"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "`\\x1B[31mgone.mtl` is not read"),
                      1);
     rt_scene_destroy(scene);
     free(scene_name);
@@ -313,7 +304,8 @@ START_TEST(one_library_under_a_thousand_spellings_is_read_once)
     folders f = make_folders();
     write_text(f.scene_dir, "m.mtl", red_library);
     make_link(f.scene_dir, "alias.mtl", "m.mtl");
-    char *m = join(f.scene_dir, "m.mtl"), *hard = join(f.scene_dir,
+    char *m = rt_test_join(f.scene_dir, "m.mtl"),
+          *hard = rt_test_join(f.scene_dir,
                                                          "hard.mtl");
     ck_assert_int_eq(link(m, hard), 0);
     /* 1,000 spellings: ./ repeated, doubled slashes, the link, the hard
@@ -332,7 +324,7 @@ START_TEST(one_library_under_a_thousand_spellings_is_read_once)
                              "mtllib alias.mtl\nmtllib hard.mtl\n"
                              "usemtl red\n%s", triangle);
     write_text(f.scene_dir, "scene.obj", text);
-    char *path = join(f.scene_dir, "scene.obj");
+    char *path = rt_test_join(f.scene_dir, "scene.obj");
     counting c = {0, 0, 0, 0};
     rt_load_options options;
     rt_load_options_init(&options);
@@ -390,7 +382,7 @@ START_TEST(a_resolver_that_gives_more_than_the_budget_is_refused)
     ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), "m.obj",
                                          &options, &scene, NULL),
                      RT_OK);
-    ck_assert_int_eq(warnings_with(scene, "more than the"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "more than the"), 1);
     ck_assert_int_eq(rt_scene_source_count(scene), 0);
     rt_scene_destroy(scene);
 }
@@ -409,7 +401,7 @@ START_TEST(an_obj_naming_itself_as_its_library_is_read_once_and_not_quoted)
                                  "mtllib %sself.obj\n", i % 2 ? "./" : "");
     snprintf(text + used, sizeof text - used, "%s", triangle);
     write_text(f.scene_dir, "self.obj", text);
-    char *path = join(f.scene_dir, "self.obj");
+    char *path = rt_test_join(f.scene_dir, "self.obj");
     counting c = {0, 0, 0, 0};
     rt_load_options options;
     rt_load_options_init(&options);
@@ -421,12 +413,14 @@ START_TEST(an_obj_naming_itself_as_its_library_is_read_once_and_not_quoted)
                       RT_OK,
                   "%s", error.message);
     ck_assert_int_eq(c.calls, 1);
-    ck_assert_int_eq(warnings_with(scene, "is this OBJ file itself"), 1);
-    ck_assert_int_eq(warnings_with(scene, "SECRET"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "is this OBJ file itself"),
+                     1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "SECRET"), 0);
     /* `Kd` once, as a statement the OBJ reader does not understand. */
-    ck_assert_int_eq(warnings_with(scene, "`Kd`"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "`Kd`"), 1);
     ck_assert_int_eq(facet_color(scene, 0).r, 204);
-    ck_assert_int_eq(warnings_with(scene, "material `a` is defined in no"),
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "material `a` is defined in no"),
                      1);
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
     struct stat st;
@@ -454,14 +448,15 @@ START_TEST(nothing_of_a_library_before_its_first_newmtl_is_quoted)
                "mtllib notes.mtl\nmtllib mixed.mtl\nusemtl red\n"
                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     rt_scene *scene = load(f.scene_dir, "scene.obj");
-    ck_assert_int_eq(warnings_with(scene, "SECRET"), 0);
-    ck_assert_int_eq(warnings_with(scene, "root"), 0);
-    ck_assert_int_eq(warnings_with(scene, "\x1b"), 0);
-    ck_assert_int_eq(warnings_with(scene, "notes.mtl:1:1: warning: defines "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "SECRET"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "root"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "\x1b"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "notes.mtl:1:1: warning: defines "
                                           "no material (it has no `newmtl`): "
                                           "its 3 statements are ignored"),
                      1);
-    ck_assert_int_eq(warnings_with(scene, "mixed.mtl:1:1: warning: 2 "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "mixed.mtl:1:1: warning: 2 "
                                           "statements before the first "
                                           "`newmtl` are ignored"),
                      1);
@@ -485,8 +480,9 @@ START_TEST(a_usemtl_before_its_mtllib_gets_its_material)
     ck_assert_int_eq(facet_color(scene, 0).g, 0);
     ck_assert_int_eq(facet_color(scene, 1).r, 204);
     ck_assert_int_eq(facet_color(scene, 2).r, 255);
-    ck_assert_int_eq(warnings_with(scene, "material `red`"), 0);
-    ck_assert_int_eq(warnings_with(scene, "scene.obj:6:8: warning: material "
+    ck_assert_int_eq(rt_test_count_warnings(scene, "material `red`"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene,
+                                            "scene.obj:6:8: warning: material "
                                           "`nowhere` is defined in no"),
                      1);
     rt_scene_destroy(scene);
@@ -513,7 +509,7 @@ START_TEST(a_parse_from_memory_reads_a_file_only_through_a_resolver)
 {
     folders f = make_folders();
     write_text(f.scene_dir, "m.mtl", red_library);
-    char *name = join(f.scene_dir, "scene.obj");
+    char *name = rt_test_join(f.scene_dir, "scene.obj");
     const char *text = "mtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\n"
                        "v 0 1 0\nf 1 2 3\n";
     rt_scene *scene;
@@ -521,7 +517,7 @@ START_TEST(a_parse_from_memory_reads_a_file_only_through_a_resolver)
                                          &scene, NULL),
                      RT_OK);
     ck_assert_int_eq(facet_color(scene, 0).r, 204);
-    ck_assert_int_eq(warnings_with(scene, "without a resolver"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "without a resolver"), 1);
     ck_assert_int_eq(rt_scene_source_count(scene), 0);
     rt_scene_destroy(scene);
     rt_load_options options;
@@ -552,22 +548,17 @@ static int write_to_fifo(void *arg, char *message, size_t size)
     FILE *file = fopen(arg, "w");
     if (file == NULL)
         return 1;
-    fputs(small_scene, file);
+    fputs(rt_test_small_scene, file);
     return fclose(file) != 0;
 }
 
 START_TEST(a_scene_file_that_is_a_fifo_still_loads_and_lists_no_identity)
 {
     folders f = make_folders();
-    char *fifo = join(f.scene_dir, "scene.scn");
+    char *fifo = rt_test_join(f.scene_dir, "scene.scn");
     ck_assert_int_eq(mkfifo(fifo, 0600), 0);
-    fflush(NULL);
-    pid_t writer = fork();
-    ck_assert_int_ge(writer, 0);
-    if (writer == 0) {
-        char message[64];
-        _exit(write_to_fifo(fifo, message, sizeof message));
-    }
+    rt_test_child writer = rt_test_child_start(write_to_fifo, fifo);
+    ck_assert_int_gt(writer.pid, 0);
     rt_scene *scene;
     rt_error error;
     ck_assert_msg(rt_scene_load(fifo, &scene, &error) == RT_OK, "%s",
@@ -575,10 +566,10 @@ START_TEST(a_scene_file_that_is_a_fifo_still_loads_and_lists_no_identity)
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
     const rt_scene_source *s = rt_scene_source_at(scene, 0);
     ck_assert(s->device == 0 && s->inode == 0);
-    ck_assert_uint_eq(s->bytes, strlen(small_scene));
+    ck_assert_uint_eq(s->bytes, strlen(rt_test_small_scene));
     rt_scene_destroy(scene);
-    int status;
-    ck_assert_int_eq(waitpid(writer, &status, 0), writer);
+    char note[64];
+    ck_assert_int_ne(rt_test_child_finish(&writer, note, sizeof note), -1);
     free(fifo);
     remove_folders(&f);
 }
@@ -588,7 +579,7 @@ START_TEST(a_cancel_flag_raised_before_a_load_cancels_it)
 {
     folders f = make_folders();
     write_text(f.scene_dir, "scene.obj", triangle);
-    write_text(f.scene_dir, "scene.scn", small_scene);
+    write_text(f.scene_dir, "scene.scn", rt_test_small_scene);
     rt_cancel *cancel;
     ck_assert_int_eq(rt_cancel_create(&cancel, NULL), RT_OK);
     rt_cancel_request(cancel);
@@ -597,7 +588,7 @@ START_TEST(a_cancel_flag_raised_before_a_load_cancels_it)
     options.cancel = cancel;
     const char *names[] = {"scene.obj", "scene.scn"};
     for (int i = 0; i < 2; i++) {
-        char *path = join(f.scene_dir, names[i]);
+        char *path = rt_test_join(f.scene_dir, names[i]);
         rt_scene *scene = (rt_scene *)1;
         rt_error error;
         ck_assert_int_eq(rt_scene_load_with(path, &options, &scene, &error),
@@ -622,7 +613,8 @@ START_TEST(the_obj_corpus_replays_without_fault)
     DIR *dir = opendir(corpus_dir);
     ck_assert_msg(dir != NULL, "%s: %s", corpus_dir, strerror(errno));
     folders f = make_folders();
-    char *name = join(f.scene_dir, "fuzz.obj"), *mtl = join(f.scene_dir,
+    char *name = rt_test_join(f.scene_dir, "fuzz.obj"),
+          *mtl = rt_test_join(f.scene_dir,
                                                             "m.mtl");
     rt_load_options options;
     rt_load_options_init(&options);
@@ -633,14 +625,15 @@ START_TEST(the_obj_corpus_replays_without_fault)
     while ((entry = readdir(dir)) != NULL) {
         if (entry->d_name[0] == '.')
             continue;
-        char *path = join(corpus_dir, entry->d_name);
+        char *path = rt_test_join(corpus_dir, entry->d_name);
         size_t size;
         char *text = rt_test_read_file(path, &size);
         ck_assert_ptr_nonnull(text);
         char *marker = strstr(text, "\n#mtl\n");
         unlink(mtl);
         if (marker != NULL) {
-            write_bytes(mtl, marker + 6, size - (size_t)(marker + 6 - text));
+            rt_test_write_bytes(mtl, marker + 6,
+                                size - (size_t)(marker + 6 - text));
             size = (size_t)(marker - text) + 1;
         }
         rt_scene *scene = (rt_scene *)1;
@@ -657,7 +650,7 @@ START_TEST(the_obj_corpus_replays_without_fault)
                 ck_assert_msg(facet.degenerate != RT_FACET_ZERO_AREA,
                               "%s: a facet without area", entry->d_name);
             }
-            ck_assert_int_eq(warnings_with(scene, "root:"), 0);
+            ck_assert_int_eq(rt_test_count_warnings(scene, "root:"), 0);
             rt_scene_destroy(scene);
         } else {
             ck_assert_ptr_null(scene);

@@ -25,8 +25,6 @@
 #include "scene/scene_internal.h"
 #include "testutil.h"
 
-static int memcheck(void) { return getenv("RT_TEST_MEMCHECK") != NULL; }
-
 /* The size to render at; 0: the scene's. */
 typedef struct image_size {
     int width, height;
@@ -119,7 +117,7 @@ static size_t check_directory(const char *dir, int side)
 START_TEST(project_scenes_render_identically_through_the_octree)
 {
     ck_assert_uint_gt(check_directory(rt_test_source_path("scenes"),
-                                      memcheck() ? 16 : 160),
+                                      rt_test_memcheck() ? 16 : 160),
                       0);
 }
 END_TEST
@@ -128,9 +126,9 @@ START_TEST(generated_meshes_render_identically_through_the_octree)
 {
     rt_scene *scene;
     rt_error error;
-    int side = memcheck() ? 12 : 64;
+    int side = rt_test_memcheck() ? 12 : 64;
     int sizes[] = {100, 2000, 20000};
-    for (int i = 0; i < (memcheck() ? 2 : 3); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 2 : 3); i++) {
         ck_assert_int_eq(bench_sphere(sizes[i], side, side, &scene, &error),
                          RT_OK);
         check_scene(scene, (image_size){0, 0}, "sphere");
@@ -146,12 +144,12 @@ END_TEST
 
 /* --- degenerate distributions ---------------------------------------- */
 
-static uint64_t state = 0x2545f4914f6cdd1du;
+/* The generator of the soups and rays (support/rng.h). */
+static rt_test_rng rng = {0x2545f4914f6cdd1du};
 
 static double uniform(double lo, double hi)
 {
-    state = state * 6364136223846793005u + 1442695040888963407u;
-    return lo + (hi - lo) * ((double)(state >> 11) / 9007199254740992.0);
+    return rt_test_rng_range(&rng, lo, hi);
 }
 
 typedef struct soup {
@@ -227,14 +225,15 @@ START_TEST(facets_all_in_one_spot_render_identically)
 {
     soup s = {0};
     rt_vec3 c = {0.1, 0.2, 0.3};
-    for (int i = 0; i < (memcheck() ? 200 : 3000); i++)
+    for (int i = 0; i < (rt_test_memcheck() ? 200 : 3000); i++)
         soup_add(&s, jitter(c, 1e-3), jitter(c, 1e-3), jitter(c, 1e-3),
                  i % 4 == 0 ? 0.5 : 0.0);
     /* and one big floor far away, so the box is large */
     soup_add(&s, (rt_vec3){-50, -50, -1}, (rt_vec3){50, -50, -1},
              (rt_vec3){0, 50, -1}, 0.3);
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
-                                 c, (rt_vec3){1, 1, 3}, memcheck() ? 12 : 48);
+                                 c, (rt_vec3){1, 1, 3},
+                                     rt_test_memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "one spot");
     rt_scene_destroy(scene);
 }
@@ -252,7 +251,8 @@ START_TEST(a_few_facets_spanning_everything_render_identically)
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), 0.0);
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
-                                 (rt_vec3){3, -4, 12}, memcheck() ? 12 : 48);
+                                 (rt_vec3){3, -4, 12},
+                                     rt_test_memcheck() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "spanning");
     rt_scene_destroy(scene);
 }
@@ -266,7 +266,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
              (rt_vec3){0, 5, 1e6}, 0.5);
     soup_add(&s, (rt_vec3){-1e6, -1e6, -2}, (rt_vec3){1e6, -1e6, -2},
              (rt_vec3){0, 1e6, -2}, 0.0);
-    for (int i = 0; i < (memcheck() ? 100 : 1500); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 100 : 1500); i++) {
         rt_vec3 p = {uniform(-2, 2), uniform(-1, 3), uniform(-1.5, 1.5)};
         rt_vec3 q = jitter(p, 1.0);
         rt_vec3 m = {(p.x + q.x) / 2 + uniform(-1e-6, 1e-6),
@@ -278,7 +278,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.3, -6, 1.5},
                                  (rt_vec3){0, 1, 0}, (rt_vec3){-2, -3, 4},
-                                 memcheck() ? 12 : 56);
+                                 rt_test_memcheck() ? 12 : 56);
     check_scene(scene, (image_size){0, 0}, "slivers and walls");
     rt_scene_destroy(scene);
 }
@@ -290,7 +290,7 @@ END_TEST
 START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
 {
     soup s = {0};
-    int n = memcheck() ? 60 : 600;
+    int n = rt_test_memcheck() ? 60 : 600;
     for (int i = 0; i < n; i++) {
         double x = uniform(-3, 3), y = uniform(-3, 3);
         double size = uniform(0.2, 2.5);
@@ -303,7 +303,7 @@ START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.5, -7, 6},
                                  (rt_vec3){0, 0, 0}, (rt_vec3){1, -2, 9},
-                                 memcheck() ? 12 : 64);
+                                 rt_test_memcheck() ? 12 : 64);
     check_scene(scene, (image_size){0, 0}, "coincident");
     rt_scene_destroy(scene);
 }
@@ -324,12 +324,12 @@ START_TEST(far_and_inside_cameras_render_identically)
                  s.f[i].k);
     rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
-                               memcheck() ? 12 : 40);
+                               rt_test_memcheck() ? 12 : 40);
     check_scene(far, (image_size){0, 0}, "far camera");
     rt_scene_destroy(far);
     rt_scene *inside = soup_scene(&t, (rt_vec3){0.01, 0.02, 0.03},
                                   (rt_vec3){1, 0.5, 0.2}, (rt_vec3){0, 0, 0},
-                                  memcheck() ? 12 : 40);
+                                  rt_test_memcheck() ? 12 : 40);
     check_scene(inside, (image_size){0, 0}, "inside");
     rt_scene_destroy(inside);
 }
@@ -341,7 +341,7 @@ END_TEST
 START_TEST(transparency_lights_and_lens_render_identically)
 {
     soup s = {0};
-    for (int i = 0; i < (memcheck() ? 150 : 1200); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 150 : 1200); i++) {
         rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
         if (i % 3 == 0) {
@@ -354,7 +354,8 @@ START_TEST(transparency_lights_and_lens_render_identically)
     rt_scene_desc desc = {
         .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
         .screen_right = {0.8, -3, 0.45},
-        .width = memcheck() ? 12 : 48, .height = memcheck() ? 12 : 48,
+        .width = rt_test_memcheck() ? 12 : 48,
+            .height = rt_test_memcheck() ? 12 : 48,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {30, 40, 50},
@@ -385,7 +386,8 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
     rt_scene_desc desc = {
         .observer = {0, -1e151, 5e150}, .screen_center = {0, 0, 4e150},
         .screen_right = {1e151, 0, 4e150},
-        .width = memcheck() ? 8 : 32, .height = memcheck() ? 8 : 32,
+        .width = rt_test_memcheck() ? 8 : 32,
+            .height = rt_test_memcheck() ? 8 : 32,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {20, 30, 40},
@@ -466,7 +468,7 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
-    int count = memcheck() ? 300 : 6000;
+    int count = rt_test_memcheck() ? 300 : 6000;
     for (int i = 0; i < count; i++) {
         rt_vec3 o, t;
         switch (i % 4) {
@@ -503,7 +505,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
-    for (int i = 0; i < (memcheck() ? 200 : 6000); i++) {
+    for (int i = 0; i < (rt_test_memcheck() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;
         rt_scene_facet(scene, (int)uniform(0, 3000), &f);
@@ -654,8 +656,8 @@ START_TEST(shared_scenes_render_identically_through_the_octree)
     char seed[4096], spd[4096];
     snprintf(seed, sizeof seed, "%s", rt_test_shared_path("seed-scenes"));
     snprintf(spd, sizeof spd, "%s", rt_test_shared_path("spd-scenes"));
-    size_t scenes = check_directory(seed, memcheck() ? 16 : 160) +
-                    check_directory(spd, memcheck() ? 8 : 48);
+    size_t scenes = check_directory(seed, rt_test_memcheck() ? 16 : 160) +
+                    check_directory(spd, rt_test_memcheck() ? 8 : 48);
     ck_assert_uint_gt(scenes, 0);
 }
 END_TEST

@@ -22,8 +22,6 @@
 #include "scene/scene_internal.h"
 #include "testutil.h"
 
-static int memcheck(void) { return getenv("RT_TEST_MEMCHECK") != NULL; }
-
 static const double pi = 3.14159265358979323846;
 
 /* Renders `scene` into *image (allocated here at the scene's size, or
@@ -84,8 +82,8 @@ static rt_scene *big_soup(void)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(bench_soup(memcheck() ? 20000 : 300000, 16, 16, &scene,
-                                &error),
+    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 20000 : 300000, 16, 16,
+                                &scene, &error),
                      RT_OK);
     return scene;
 }
@@ -282,9 +280,10 @@ static rt_scene *sliver_fan_scene(int corners, double angle, int side)
 
 START_TEST(a_fan_of_slivers_renders_identically_and_no_ray_tests_it_whole)
 {
-    int corners = memcheck() ? 3000 : 40000;
+    int corners = rt_test_memcheck() ? 3000 : 40000;
     double angle = 0.5;     /* conditions from about 12,000 */
-    rt_scene *scene = sliver_fan_scene(corners, angle, memcheck() ? 12 : 64);
+    rt_scene *scene = sliver_fan_scene(corners, angle,
+                                       rt_test_memcheck() ? 12 : 64);
     rt_octree_info info;
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, &info),
                      RT_OK);
@@ -315,11 +314,12 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
 {
     rt_scene *soup;
     rt_error error;
-    ck_assert_int_eq(bench_soup(memcheck() ? 300 : 3000, 8, 8, &soup, &error),
+    ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 300 : 3000, 8, 8, &soup,
+                                &error),
                      RT_OK);
     rt_scene_info info;
     rt_scene_get_info(soup, &info);
-    int corners = memcheck() ? 400 : 4000;
+    int corners = rt_test_memcheck() ? 400 : 4000;
     mesh m;
     mesh_alloc(&m, info.vertex_count + corners + 1,
                info.facet_count + corners);
@@ -342,7 +342,8 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
         mesh_facet(&m, base, base + i, base + i + 1, i % 5 ? 0.0 : 0.6);
     rt_scene *scene = mesh_scene(&m, (rt_vec3){1.0, -4.0, 1.5},
                                  (rt_vec3){0, 0, 0}, 0.45,
-                                 (rt_vec3){-2.5, -3, 4}, memcheck() ? 12 : 48);
+                                 (rt_vec3){-2.5, -3, 4},
+                                     rt_test_memcheck() ? 12 : 48);
     rt_octree_info tree;
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, &tree),
                      RT_OK);
@@ -386,7 +387,7 @@ static void sphere_mesh(mesh *m, int rings, int segments)
 static rt_scene *far_sphere(double distance, int side)
 {
     mesh m;
-    sphere_mesh(&m, memcheck() ? 10 : 40, memcheck() ? 20 : 80);
+    sphere_mesh(&m, rt_test_memcheck() ? 10 : 40, rt_test_memcheck() ? 20 : 80);
     rt_vec3 eye = {0.6 * distance, -0.7 * distance, 0.38 * distance};
     return mesh_scene(&m, eye, (rt_vec3){0, 0, 0}, 1.3 / distance,
                       (rt_vec3){3, -5, 4}, side);
@@ -402,7 +403,7 @@ static rt_scene *far_sphere(double distance, int side)
  */
 START_TEST(a_model_seen_from_far_walks_grown_cells_and_renders_identically)
 {
-    int side = memcheck() ? 8 : 32;
+    int side = rt_test_memcheck() ? 8 : 32;
     struct {
         rt_precision precision;
         double distance;
@@ -469,7 +470,8 @@ START_TEST(a_model_far_from_the_coordinates_origin_renders_identically)
 {
     double offsets[] = {0x1p20, 0x1p30, 0x1p36};
     for (int i = 0; i < 3; i++) {
-        rt_scene *scene = offset_grid(16, offsets[i], memcheck() ? 12 : 64);
+        rt_scene *scene = offset_grid(16, offsets[i],
+                                      rt_test_memcheck() ? 12 : 64);
         rt_render_stats stats;
         check_identical(scene, RT_PRECISION_DOUBLE, "offset grid", &stats);
         ck_assert_uint_eq(stats.accel_fallbacks, 0);

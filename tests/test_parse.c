@@ -4,10 +4,13 @@
  * the first character of the bad token; just after the last token for a
  * missing value; the line after the last line for an unexpected end of file)
  * and a message of the form "<test>:<line>:<column>: expected ..., found
- * <token>".  Also the inputs that must be accepted: integral values written
- * `200.` or `200.0`, empty scenes, comments anywhere, CRLF, a byte-order
- * mark, mixed separators, a French locale.
+ * <token>"; the table of broken rules is here, with the other refusals and
+ * the loads of files.  The inputs that must be accepted (integral values
+ * written `200.` or `200.0`, empty scenes, comments anywhere, CRLF, a
+ * byte-order mark, mixed separators, a French locale) are in
+ * test_parse_accepts.c; both build on support/base_scene.h's base scene.
  */
+#include "base_scene.h"
 #include "testutil.h"
 
 #include <ctype.h>
@@ -20,45 +23,6 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-/* The base scene, one record per line (line numbers in comments).  Columns
- * of its tokens are used by the cases below. */
-static const char *const base_lines[] = {
-    "0 0 5",                  /* 1  observer */
-    "0 0 4 1 0 0 2 2",        /* 2  screen: cols 1 3 5 7 9 11 13 15 */
-    "3",                      /* 3  vertex count */
-    "-1 -1 0",                /* 4 */
-    "1 -1 0",                 /* 5 */
-    "0 1 0",                  /* 6 */
-    "1",                      /* 7  facet count */
-    "1 2 3 0 255 0 0",        /* 8  facet: cols 1 3 5 7 9 13 15 */
-    "10 20 30",               /* 9  background: cols 1 4 7 */
-    "0 0 10 255 255 255",     /* 10 light: cols 1 3 5 8 12 16 */
-};
-#define BASE_LINE_COUNT 10
-
-/* Builds the base scene with line `replace` (1-based, 0 for none) replaced
- * by `replacement`, only the first `keep` lines (all when keep < 0), then
- * `append`; lines end with `eol`. */
-static void build_scene(char *buffer, size_t size, int replace,
-                        const char *replacement, int keep,
-                        const char *append, const char *eol)
-{
-    buffer[0] = '\0';
-    size_t used = 0;
-    for (int i = 0; i < BASE_LINE_COUNT; i++) {
-        if (keep >= 0 && i >= keep)
-            break;
-        const char *line = i + 1 == replace ? replacement : base_lines[i];
-        int n = snprintf(buffer + used, size - used, "%s%s", line, eol);
-        ck_assert(n > 0 && (size_t)n < size - used);
-        used += (size_t)n;
-    }
-    if (append) {
-        int n = snprintf(buffer + used, size - used, "%s", append);
-        ck_assert(n >= 0 && (size_t)n < size - used);
-    }
-}
 
 enum {
     S_SYNTAX = 1 << RT_ERR_SYNTAX,
@@ -82,7 +46,8 @@ typedef struct bad_case {
     int expected;
 } bad_case;
 
-#define ALL -1
+/* The short name of RT_TEST_BASE_ALL in the table. */
+#define ALL RT_TEST_BASE_ALL
 static const bad_case bad_cases[] = {
     /* non-numbers */
     {"word in observer", 1, "0 abc 5", ALL, NULL, S_SYNTAX, 1, 3, "abc", 1},
@@ -302,8 +267,8 @@ START_TEST(parse_reports_status_position_and_token_of_each_broken_rule)
 {
     const bad_case *c = &bad_cases[_i];
     char text[2048];
-    build_scene(text, sizeof text, c->replace, c->replacement, c->keep,
-                c->append, "\n");
+    rt_test_base_scene(text, sizeof text, c->replace, c->replacement, c->keep,
+                       c->append, "\n");
     rt_scene *scene = (rt_scene *)&text; /* must be reset to NULL */
     rt_error error;
     memset(&error, 0, sizeof error);
@@ -318,8 +283,8 @@ START_TEST(parse_reports_the_same_errors_with_crlf_line_endings)
 {
     const bad_case *c = &bad_cases[_i];
     char text[2048];
-    build_scene(text, sizeof text, c->replace, c->replacement, c->keep,
-                c->append, "\r\n");
+    rt_test_base_scene(text, sizeof text, c->replace, c->replacement, c->keep,
+                       c->append, "\r\n");
     /* the appended text uses LF only: convert it too */
     char crlf[4096];
     size_t n = 0;
@@ -341,7 +306,8 @@ END_TEST
 START_TEST(parse_columns_do_not_count_the_byte_order_mark)
 {
     char text[2048] = "\xEF\xBB\xBF";
-    build_scene(text + 3, sizeof text - 3, 1, "0 abc 5", ALL, NULL, "\n");
+    rt_test_base_scene(text + 3, sizeof text - 3, 1, "0 abc 5", ALL, NULL,
+                       "\n");
     rt_scene *scene = NULL;
     rt_error error;
     rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
@@ -354,7 +320,7 @@ END_TEST
 START_TEST(parse_without_name_uses_memory_in_messages)
 {
     char text[2048];
-    build_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
     rt_scene *scene = NULL;
     rt_error error;
     ck_assert_int_eq(rt_scene_parse(text, strlen(text), NULL, &scene, &error),
@@ -367,7 +333,7 @@ END_TEST
 START_TEST(parse_accepts_a_null_error_pointer)
 {
     char text[2048];
-    build_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
     rt_scene *scene = NULL;
     ck_assert_int_eq(rt_scene_parse(text, strlen(text), "<test>", &scene, NULL),
                      RT_ERR_RANGE);
@@ -380,7 +346,7 @@ START_TEST(parse_reads_only_length_bytes)
     /* The light line is cut by `length`: the rest of the buffer must not
      * be read, so this is an error (too few values on line 10). */
     char text[2048];
-    build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
     size_t length = strlen(text) - strlen(" 255 255\n");
     rt_scene *scene = NULL;
     rt_error error;
@@ -393,305 +359,11 @@ START_TEST(parse_reads_only_length_bytes)
 END_TEST
 
 /* The info of the base scene, whatever the layout of the file. */
-static void check_base_scene(const rt_scene *scene)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.width, 2);
-    ck_assert_int_eq(info.height, 2);
-    ck_assert_int_eq(info.vertex_count, 3);
-    ck_assert_int_eq(info.facet_count, 1);
-    ck_assert_int_eq(info.live_facet_count, 1);
-    ck_assert_int_eq(info.warning_count, 0);
-    ck_assert_int_eq(info.background.r, 10);
-    ck_assert_int_eq(info.background.g, 20);
-    ck_assert_int_eq(info.background.b, 30);
-    ck_assert_double_eq(info.light_position.z, 10.0);
-    ck_assert_int_eq(info.light_color.g, 255);
-    ck_assert_double_eq(info.camera.observer.z, 5.0);
-    ck_assert_double_eq(info.camera.screen_center.z, 4.0);
-    ck_assert_double_eq(info.camera.right.x, 1.0);
-    rt_vec3 v = rt_scene_vertex(scene, 0);
-    ck_assert_double_eq(v.x, -1.0);
-    ck_assert_double_eq(v.y, -1.0);
-    ck_assert_double_eq(v.z, 0.0);
-    v = rt_scene_vertex(scene, 2);
-    ck_assert_double_eq(v.x, 0.0);
-    ck_assert_double_eq(v.y, 1.0);
-    rt_facet_info facet;
-    rt_scene_facet(scene, 0, &facet);
-    ck_assert_int_eq(facet.vertex[0], 0);
-    ck_assert_int_eq(facet.vertex[1], 1);
-    ck_assert_int_eq(facet.vertex[2], 2);
-    ck_assert_double_eq(facet.k, 0.0);
-    ck_assert_int_eq(facet.color.r, 255);
-    ck_assert_int_eq(facet.color.g, 0);
-    ck_assert_int_eq(facet.degenerate, 0);
-    /* (b-a)x(c-a) = (2,0,0)x(1,2,0) = (0,0,4): unit (0,0,1), tol 1e-15 */
-    ck_assert_double_eq_tol(facet.normal.z, 1.0, 1e-15);
-}
-
-static rt_scene *parse_ok(const char *text, size_t length)
-{
-    rt_scene *scene = NULL;
-    rt_error error;
-    rt_status status = rt_scene_parse(text, length, "<test>", &scene, &error);
-    ck_assert_msg(status == RT_OK, "status %s: %s", rt_status_string(status),
-                  error.message);
-    ck_assert_ptr_nonnull(scene);
-    return scene;
-}
-
-START_TEST(parse_accepts_the_base_scene)
-{
-    char text[2048];
-    build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_integral_values_written_with_a_point)
-{
-    const char *text = "0 0 5\n"
-                       "0 0 4 1 0 0 2. 2.0\n"
-                       "3.\n"
-                       "-1 -1 0\n1 -1 0\n0 1 0\n"
-                       "1.0\n"
-                       "1. 2.0 3.000 0 255.0 0. 0\n"
-                       "10. 2e1 30.0\n"
-                       "0 0 10 255 255. 2.55e2\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
-{
-    char text[2048];
-    build_scene(text, sizeof text, 8, "1 2 3 1 255 0 0", ALL, NULL, "\n");
-    rt_scene *scene = parse_ok(text, strlen(text));
-    rt_facet_info facet;
-    rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 1.0);
-    rt_scene_destroy(scene);
-    build_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL, "\n");
-    rt_scene_destroy(parse_ok(text, strlen(text)));
-    build_scene(text, sizeof text, 2, "0 0 4 1 0 0 16384 1", ALL, NULL, "\n");
-    scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.width, 16384);
-    ck_assert_int_eq(info.height, 1);
-    rt_scene_destroy(scene);
-    build_scene(text, sizeof text, 2, "0 0 4 1 0 0 1 16384", ALL, NULL, "\n");
-    rt_scene_destroy(parse_ok(text, strlen(text)));
-}
-END_TEST
-
-START_TEST(parse_accepts_empty_scene_and_it_renders_background)
-{
-    const char *text = "0 0 5\n0 0 4 1 0 0 3 2\n0\n0\n10 20 30\n"
-                       "0 0 10 255 255 255\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.vertex_count, 0);
-    ck_assert_int_eq(info.facet_count, 0);
-    rt_image image = rt_test_render(scene, RT_DEFAULT_DEPTH, 1);
-    for (int y = 0; y < image.height; y++)
-        for (int x = 0; x < image.width; x++) {
-            const unsigned char *p = rt_image_pixel(&image, x, y);
-            ck_assert_msg(p[0] == 10 && p[1] == 20 && p[2] == 30,
-                          "pixel (%d,%d) = %d %d %d", x, y, p[0], p[1], p[2]);
-        }
-    rt_image_release(&image);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_vertices_without_facets)
-{
-    const char *text = "0 0 5\n0 0 4 1 0 0 2 2\n2\n1 1 1\n2 2 2\n0\n"
-                       "10 20 30\n0 0 10 255 255 255";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.vertex_count, 2);
-    ck_assert_int_eq(info.facet_count, 0);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_comments_and_blank_lines_anywhere)
-{
-    const char *text = "# a scene\n"
-                       "\n"
-                       "0 0 5   # the observer\n"
-                       "   \t \n"
-                       "# the screen\n"
-                       "0 0 4 1 0 0 2 2#no space before the comment\n"
-                       "3\n"
-                       "# between vertices\n"
-                       "-1 -1 0\n"
-                       "\n"
-                       "1 -1 0\n"
-                       "  0 1 0  \n"
-                       "1 # one facet\n"
-                       "1 2 3 0 255 0 0\n"
-                       "#\n"
-                       "10 20 30\n"
-                       "# before the light\n"
-                       "0 0 10 255 255 255\n"
-                       "# after the light\n"
-                       "\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_crlf_line_endings)
-{
-    char text[2048];
-    build_scene(text, sizeof text, 0, NULL, ALL, "# end\r\n", "\r\n");
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_a_utf8_byte_order_mark)
-{
-    char text[2048] = "\xEF\xBB\xBF";
-    build_scene(text + 3, sizeof text - 3, 0, NULL, ALL, NULL, "\n");
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_commas_and_spaces_mixed)
-{
-    const char *text = "0,0,5\n"
-                       "0, 0 ,4 1,0\t0, 2 ,2\n"
-                       "3\n"
-                       "-1,-1,0\n"
-                       "1 ,-1 , 0\n"
-                       "0\t1\t0\n"
-                       "1\n"
-                       "1,2,3,0,255,0,0\n"
-                       "10, 20, 30\n"
-                       "0 0, 10  255,255 ,255\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_accepts_a_file_without_final_newline)
-{
-    char text[2048];
-    build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
-    text[strlen(text) - 1] = '\0';
-    rt_scene *scene = parse_ok(text, strlen(text));
-    check_base_scene(scene);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
-START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
-{
-    static const char *const names[] = {"fr_FR.UTF-8", "fr_FR.utf8", "fr_FR",
-                                        "de_DE.UTF-8", "C.UTF-8"};
-    const char *used = NULL;
-    for (size_t i = 0; i < sizeof names / sizeof names[0] && !used; i++)
-        if (setlocale(LC_ALL, names[i]))
-            used = names[i];
-    const char *point = localeconv()->decimal_point;
-    if (!used || strcmp(point, ",") != 0)
-        printf("NOTE parse_reads_numbers_in_c_locale: no locale with a decimal "
-               "comma is available (got %s); the test runs under it but "
-               "cannot show the French-locale bug\n",
-               used ? used : "none");
-    else
-        printf("note: locale test runs under %s (decimal point \"%s\")\n",
-               used, point);
-    const char *text = "0 0 5.5\n0 0 4.5 1.25 0 0 2 2\n3\n-1.5 -1 0\n1 -1 0\n"
-                       "0 1 0\n1\n1 2 3 0.5 255 0 0\n10 20 30\n"
-                       "0 0 10.75 255 255 255\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_double_eq(info.camera.observer.z, 5.5);
-    ck_assert_double_eq(info.camera.screen_center.z, 4.5);
-    ck_assert_double_eq(info.light_position.z, 10.75);
-    ck_assert_double_eq(rt_scene_vertex(scene, 0).x, -1.5);
-    rt_facet_info facet;
-    rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 0.5);
-    rt_scene_destroy(scene);
-    /* and "1,5 0 0" is four values, not three, whatever the locale */
-    const char *bad = "0 0 5\n0 0 4 1 0 0 2 2\n1\n1,5 0 0\n0\n10 20 30\n"
-                      "0 0 10 255 255 255\n";
-    rt_scene *none = NULL;
-    rt_error error;
-    ck_assert_int_eq(rt_scene_parse(bad, strlen(bad), "<test>", &none, &error),
-                     RT_ERR_SYNTAX);
-    ck_assert_int_eq(error.line, 4);
-    ck_assert_int_eq(error.column, 7);
-    setlocale(LC_ALL, "C");
-}
-END_TEST
-
-START_TEST(parse_warns_about_zero_area_facet_with_its_line)
-{
-    /* vertex 4 is on the line of vertices 1 and 2: facet 1 2 4 on line 10
-     * has zero area */
-    const char *text = "0 0 5\n0 0 4 1 0 0 2 2\n4\n-1 -1 0\n1 -1 0\n0 1 0\n"
-                       "3 -1 0\n2\n1 2 3 0 255 0 0\n1 2 4 0 0 255 0\n"
-                       "10 20 30\n0 0 10 255 255 255\n";
-    rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    ck_assert_int_eq(info.facet_count, 2);
-    ck_assert_int_eq(info.live_facet_count, 1);
-    ck_assert_int_eq(info.warning_count, 1);
-    const rt_warning *warning = rt_scene_warning(scene, 0);
-    ck_assert_int_eq(warning->line, 10);
-    ck_assert_msg(strncmp(warning->message, "<test>:10:", 10) == 0 &&
-                      strstr(warning->message, "warning"),
-                  "warning: \"%s\"", warning->message);
-    rt_facet_info facet;
-    rt_scene_facet(scene, 1, &facet);
-    ck_assert_int_ne(facet.degenerate, 0);
-    ck_assert_int_eq(facet.line, 10);
-    rt_scene_facet(scene, 0, &facet);
-    ck_assert_int_eq(facet.degenerate, 0);
-    ck_assert_int_eq(facet.line, 9);
-    /* a ray down through the degenerate segment at x = 2 (outside the live
-     * facet) hits nothing */
-    rt_hit hit;
-    rt_ray ray = {{2, -1, 5}, {0, 0, -1}};
-    ck_assert_int_eq(rt_scene_nearest_hit(scene, ray, INFINITY, &hit), 0);
-    rt_scene_destroy(scene);
-}
-END_TEST
-
 START_TEST(parse_refuses_huge_count_without_allocating)
 {
     /* With the address space limited to 256 MiB, a loader that allocated
      * 2e9 vertices before checking the file would report RT_ERR_NOMEM. */
-#if defined(__SANITIZE_ADDRESS__)
-#define RT_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RT_TEST_ASAN 1
-#endif
-#endif
-#ifdef RT_TEST_ASAN
+#if RT_TEST_UNDER_ASAN
     /* AddressSanitizer reserves terabytes of address space, and reports a
      * 48 GB allocation by itself */
     printf("NOTE parse_refuses_huge_count_without_allocating: built with "
@@ -704,7 +376,7 @@ START_TEST(parse_refuses_huge_count_without_allocating)
                strerror(errno));
 #endif
     char text[2048];
-    build_scene(text, sizeof text, 3, "2000000000", ALL, NULL, "\n");
+    rt_test_base_scene(text, sizeof text, 3, "2000000000", ALL, NULL, "\n");
     rt_scene *scene = NULL;
     rt_error error;
     rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
@@ -715,42 +387,31 @@ START_TEST(parse_refuses_huge_count_without_allocating)
 }
 END_TEST
 
-/* A fresh directory under /tmp, removed by the caller. */
-static void make_temp_dir(char *path, size_t size)
-{
-    snprintf(path, size, "/tmp/rt-test-parse-XXXXXX");
-    ck_assert_ptr_nonnull(mkdtemp(path));
-}
-
 START_TEST(load_reads_a_file_and_names_it_in_errors)
 {
-    char dir[64], good[128], bad[128];
-    make_temp_dir(dir, sizeof dir);
-    snprintf(good, sizeof good, "%s/good.scn", dir);
-    snprintf(bad, sizeof bad, "%s/bad.scn", dir);
+    char *dir = rt_test_temp_dir();
+    rt_test_path good = rt_test_path_at(dir, "good.scn");
+    rt_test_path bad = rt_test_path_at(dir, "bad.scn");
     char text[2048];
-    build_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
-    rt_test_write_file(good, text);
-    build_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
-                "\n");
-    rt_test_write_file(bad, text);
+    rt_test_base_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
+    rt_test_write_file(good.s, text);
+    rt_test_base_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
+                       "\n");
+    rt_test_write_file(bad.s, text);
 
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(good, &scene, &error);
+    rt_status status = rt_scene_load(good.s, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
-    check_base_scene(scene);
+    rt_test_assert_base_scene(scene);
     rt_scene_destroy(scene);
 
     scene = NULL;
-    status = rt_scene_load(bad, &scene, &error);
+    status = rt_scene_load(bad.s, &scene, &error);
     bad_case c = {"file with 10 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
                   21, "9", 1};
-    check_error(&c, status, scene, &error, bad);
-
-    unlink(good);
-    unlink(bad);
-    rmdir(dir);
+    check_error(&c, status, scene, &error, bad.s);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -796,22 +457,6 @@ Suite *parse_suite(void)
     tcase_add_test(errors, parse_reads_only_length_bytes);
     tcase_add_test(errors, parse_refuses_huge_count_without_allocating);
     suite_add_tcase(suite, errors);
-
-    TCase *accepted = tcase_create("accepted");
-    tcase_add_test(accepted, parse_accepts_the_base_scene);
-    tcase_add_test(accepted, parse_accepts_integral_values_written_with_a_point);
-    tcase_add_test(accepted, parse_accepts_k_at_both_ends_and_the_largest_sizes);
-    tcase_add_test(accepted, parse_accepts_empty_scene_and_it_renders_background);
-    tcase_add_test(accepted, parse_accepts_vertices_without_facets);
-    tcase_add_test(accepted, parse_accepts_comments_and_blank_lines_anywhere);
-    tcase_add_test(accepted, parse_accepts_crlf_line_endings);
-    tcase_add_test(accepted, parse_accepts_a_utf8_byte_order_mark);
-    tcase_add_test(accepted, parse_accepts_commas_and_spaces_mixed);
-    tcase_add_test(accepted, parse_accepts_a_file_without_final_newline);
-    tcase_add_test(accepted,
-                   parse_reads_numbers_in_c_locale_whatever_the_process_locale);
-    tcase_add_test(accepted, parse_warns_about_zero_area_facet_with_its_line);
-    suite_add_tcase(suite, accepted);
 
     TCase *files = tcase_create("files");
     tcase_add_test(files, load_reads_a_file_and_names_it_in_errors);

@@ -7,18 +7,15 @@
  */
 #include "testutil.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-/* A growing memory sink. */
+/* A memory sink that fails after `fail_after` calls (< 0: never). */
 typedef struct buffer {
-    unsigned char *data;
-    size_t size, capacity;
-    int fail_after; /* calls before the sink fails; < 0 never */
+    rt_test_bytes bytes;
+    int fail_after;
 } buffer;
 
 static int buffer_write(void *user, const void *data, size_t size)
@@ -28,20 +25,12 @@ static int buffer_write(void *user, const void *data, size_t size)
         return 0;
     if (b->fail_after > 0)
         b->fail_after--;
-    if (b->size + size > b->capacity) {
-        size_t capacity = (b->size + size) * 2 + 64;
-        unsigned char *grown = realloc(b->data, capacity);
-        ck_assert_ptr_nonnull(grown);
-        b->data = grown;
-        b->capacity = capacity;
-    }
-    memcpy(b->data + b->size, data, size);
-    b->size += size;
+    ck_assert(rt_test_bytes_add(&b->bytes, data, size));
     return 1;
 }
 
-/* A w x h image with a pattern that uses 0, 255 and everything between;
- * its rows are `pad` bytes longer than needed. */
+/* A w x h image of the support library's pattern (0, 255 and everything
+ * between); its rows are `pad` bytes longer than needed. */
 static rt_image make_pattern(int w, int h, size_t pad, unsigned char **memory)
 {
     rt_image image = {w, h, (size_t)w * 3 + pad, NULL};
@@ -49,13 +38,7 @@ static rt_image make_pattern(int w, int h, size_t pad, unsigned char **memory)
     ck_assert_ptr_nonnull(*memory);
     memset(*memory, 0xAB, image.stride * (size_t)h);
     image.pixels = *memory;
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            unsigned char *p = rt_image_pixel(&image, x, y);
-            p[0] = (unsigned char)((x * 37 + y * 11) % 256);
-            p[1] = (unsigned char)(x == y ? 255 : (x * y) % 256);
-            p[2] = (unsigned char)((x + y) % 3 == 0 ? 0 : 255 - x);
-        }
+    rt_test_fill_pattern(&image);
     return image;
 }
 
@@ -73,20 +56,20 @@ static void round_trip(rt_ppm_format format, int w, int h)
 {
     unsigned char *memory;
     rt_image image = make_pattern(w, h, 5, &memory);
-    buffer out = {NULL, 0, 0, -1};
+    buffer out = {{NULL, 0, 0}, -1};
     ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, format, NULL),
                      RT_OK);
-    ck_assert_uint_ge(out.size, 2);
-    ck_assert_int_eq(out.data[0], 'P');
-    ck_assert_int_eq(out.data[1], format == RT_PPM_P3 ? '3' : '6');
+    ck_assert_uint_ge(out.bytes.size, 2);
+    ck_assert_int_eq(out.bytes.data[0], 'P');
+    ck_assert_int_eq(out.bytes.data[1], format == RT_PPM_P3 ? '3' : '6');
     rt_image back;
     rt_error error;
-    rt_status status = rt_ppm_parse(out.data, out.size, "<sink>", &back,
-                                    &error);
+    rt_status status = rt_ppm_parse(out.bytes.data, out.bytes.size, "<sink>",
+                                    &back, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     assert_same_pixels(&image, &back);
     rt_image_release(&back);
-    free(out.data);
+    free(out.bytes.data);
     free(memory);
 }
 
@@ -108,21 +91,21 @@ START_TEST(p6_output_is_header_then_exactly_the_pixels)
 {
     unsigned char *memory;
     rt_image image = make_pattern(4, 3, 7, &memory);
-    buffer out = {NULL, 0, 0, -1};
+    buffer out = {{NULL, 0, 0}, -1};
     ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6,
                                      NULL),
                      RT_OK);
     const char *header = "P6\n4 3\n255\n";
     size_t header_size = strlen(header);
-    ck_assert_uint_eq(out.size, header_size + 4 * 3 * 3);
+    ck_assert_uint_eq(out.bytes.size, header_size + 4 * 3 * 3);
     /* the header may be laid out differently, but its size is fixed by the
      * pixel count: check the pixels row by row after it */
-    size_t start = out.size - 4 * 3 * 3;
+    size_t start = out.bytes.size - 4 * 3 * 3;
     for (int y = 0; y < 3; y++)
-        ck_assert_int_eq(memcmp(out.data + start + (size_t)y * 12,
+        ck_assert_int_eq(memcmp(out.bytes.data + start + (size_t)y * 12,
                                 rt_image_pixel(&image, 0, y), 12),
                          0);
-    free(out.data);
+    free(out.bytes.data);
     free(memory);
 }
 END_TEST
@@ -137,13 +120,13 @@ START_TEST(p3_lines_are_at_most_70_characters)
         if (pass == 0)
             for (int y = 0; y < 5; y++)
                 memset(rt_image_pixel(&image, 0, y), 255, 40 * 3);
-        buffer out = {NULL, 0, 0, -1};
+        buffer out = {{NULL, 0, 0}, -1};
         ck_assert_int_eq(
             rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3,
                             NULL), RT_OK);
         size_t line_length = 0, longest = 0, lines = 0;
-        for (size_t i = 0; i < out.size; i++) {
-            if (out.data[i] == '\n') {
+        for (size_t i = 0; i < out.bytes.size; i++) {
+            if (out.bytes.data[i] == '\n') {
                 lines++;
                 line_length = 0;
             } else if (++line_length > longest) {
@@ -151,11 +134,12 @@ START_TEST(p3_lines_are_at_most_70_characters)
             }
         }
         ck_assert_msg(longest <= 70, "a P3 line has %zu characters", longest);
-        ck_assert_msg(out.size > 0 && out.data[out.size - 1] == '\n',
+        ck_assert_msg(out.bytes.size > 0 &&
+                          out.bytes.data[out.bytes.size - 1] == '\n',
                       "P3 output does not end with a newline");
         /* 600 values of up to 4 characters need more than 5 lines */
         ck_assert_uint_gt(lines, 5);
-        free(out.data);
+        free(out.bytes.data);
         free(memory);
     }
 }
@@ -167,7 +151,7 @@ START_TEST(failing_sink_makes_the_writer_fail)
     rt_image image = make_pattern(8, 8, 0, &memory);
     for (int format = 0; format < 2; format++) {
         for (int after = 0; after < 3; after++) {
-            buffer out = {NULL, 0, 0, after};
+            buffer out = {{NULL, 0, 0}, after};
             rt_status status = rt_ppm_write_to(
                 buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3,
                 NULL);
@@ -177,7 +161,7 @@ START_TEST(failing_sink_makes_the_writer_fail)
                 ck_assert_msg(status != RT_OK,
                               "sink failed after %d calls, writer said OK",
                               after);
-            free(out.data);
+            free(out.bytes.data);
         }
     }
     free(memory);
@@ -255,30 +239,11 @@ START_TEST(unsupported_or_malformed_input_is_refused)
 }
 END_TEST
 
-/* The names in a directory, other than . and .. */
-static int count_entries(const char *dir, char *first, size_t size)
-{
-    DIR *d = opendir(dir);
-    ck_assert_ptr_nonnull(d);
-    int n = 0;
-    struct dirent *entry;
-    while ((entry = readdir(d)) != NULL) {
-        if (strcmp(entry->d_name, ".") == 0 || strcmp(entry->d_name, "..") == 0)
-            continue;
-        if (n == 0 && first)
-            snprintf(first, size, "%s", entry->d_name);
-        n++;
-    }
-    closedir(d);
-    return n;
-}
-
 START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
 {
-    char dir[] = "/tmp/rt-test-ppm-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    char path[128];
-    snprintf(path, sizeof path, "%s/out.ppm", dir);
+    char *dir = rt_test_temp_dir();
+    rt_test_path out = rt_test_path_at(dir, "out.ppm");
+    const char *path = out.s;
     unsigned char *memory;
     rt_image image = make_pattern(31, 17, 2, &memory);
     for (int format = 0; format < 2; format++) {
@@ -286,11 +251,7 @@ START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
         rt_status status = rt_ppm_save(path, &image,
                                        format ? RT_PPM_P6 : RT_PPM_P3, &error);
         ck_assert_msg(status == RT_OK, "%s", error.message);
-        char name[256] = "";
-        int entries = count_entries(dir, name, sizeof name);
-        ck_assert_msg(entries == 1 && strcmp(name, "out.ppm") == 0,
-                      "%d entries in the directory after a save (first: %s)",
-                      entries, name);
+        rt_test_assert_dir_holds(dir, "out.ppm");
         rt_image back;
         status = rt_ppm_load(path, &back, &error);
         ck_assert_msg(status == RT_OK, "%s", error.message);
@@ -298,17 +259,15 @@ START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
         rt_image_release(&back);
     }
     free(memory);
-    unlink(path);
-    rmdir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(save_replaces_an_existing_file)
 {
-    char dir[] = "/tmp/rt-test-ppm-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    char path[128];
-    snprintf(path, sizeof path, "%s/out.ppm", dir);
+    char *dir = rt_test_temp_dir();
+    rt_test_path out = rt_test_path_at(dir, "out.ppm");
+    const char *path = out.s;
     FILE *file = fopen(path, "w");
     ck_assert_ptr_nonnull(file);
     fputs("old contents, much longer than the new image would be if the save "
@@ -325,19 +284,17 @@ START_TEST(save_replaces_an_existing_file)
     ck_assert_msg(status == RT_OK, "%s", error.message);
     assert_same_pixels(&image, &back);
     rt_image_release(&back);
-    ck_assert_int_eq(count_entries(dir, NULL, 0), 1);
+    rt_test_assert_dir_holds(dir, "out.ppm");
     free(memory);
-    unlink(path);
-    rmdir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(save_to_a_missing_directory_fails_and_leaves_nothing)
 {
-    char dir[] = "/tmp/rt-test-ppm-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    char path[160];
-    snprintf(path, sizeof path, "%s/no-such-dir/out.ppm", dir);
+    char *dir = rt_test_temp_dir();
+    rt_test_path out = rt_test_path_at(dir, "no-such-dir/out.ppm");
+    const char *path = out.s;
     unsigned char *memory;
     rt_image image = make_pattern(2, 2, 0, &memory);
     rt_error error;
@@ -346,9 +303,9 @@ START_TEST(save_to_a_missing_directory_fails_and_leaves_nothing)
     ck_assert_int_eq(error.status, RT_ERR_IO);
     ck_assert_msg(strstr(error.message, path) != NULL,
                   "message does not name the path: \"%s\"", error.message);
-    ck_assert_int_eq(count_entries(dir, NULL, 0), 0);
+    rt_test_assert_dir_holds(dir, "");
     free(memory);
-    rmdir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 

@@ -22,7 +22,6 @@
 #include "base/workers.h"
 #include "scene/scene_internal.h"
 #include "testutil.h"
-#include "viewer_testutil.h"
 
 /* A half-mirror ground and a matte triangle above it that the ground
  * reflects, lit from the side (the handout's format). */
@@ -181,17 +180,17 @@ END_TEST
 
 START_TEST(a_team_holds_no_thread_once_idle_or_destroyed)
 {
-    int before = viewer_baseline_thread_count();
+    int before = rt_test_baseline_thread_count();
     rt_workers *team = rt__workers_create();
     ck_assert_ptr_nonnull(team);
     tally t = {.team = NULL};
     run_counted(team, 4, &t);
     /* idle: its threads end after RT_WORKERS_LINGER */
-    ck_assert_int_eq(viewer_settled_thread_count(before, 10), before);
+    ck_assert_int_eq(rt_test_settled_thread_count(before, 10), before);
     run_counted(team, 4, &t);   /* and start again when needed */
     ck_assert_int_eq(atomic_load(&t.runs), 4);
     rt__workers_destroy(team);
-    ck_assert_int_eq(viewer_settled_thread_count(before, 10), before);
+    ck_assert_int_eq(rt_test_settled_thread_count(before, 10), before);
 }
 END_TEST
 

@@ -15,28 +15,6 @@
 
 #include "testutil.h"
 
-static int memcheck(void)
-{
-    return getenv("RT_TEST_MEMCHECK") != NULL;
-}
-
-/* The whole file at `path`, NUL-terminated; fails the test if unreadable. */
-static char *read_text(const char *path)
-{
-    FILE *file = fopen(path, "rb");
-    ck_assert_msg(file != NULL, "cannot open %s", path);
-    ck_assert_int_eq(fseek(file, 0, SEEK_END), 0);
-    long size = ftell(file);
-    ck_assert_int_ge(size, 0);
-    rewind(file);
-    char *text = malloc((size_t)size + 1);
-    ck_assert_ptr_nonnull(text);
-    ck_assert_uint_eq(fread(text, 1, (size_t)size, file), (size_t)size);
-    text[size] = '\0';
-    fclose(file);
-    return text;
-}
-
 /* Is the line starting at `line` a record (not blank, not a comment)? */
 static int is_record(const char *line)
 {
@@ -121,12 +99,13 @@ START_TEST(a_size_renders_as_the_scene_edited_to_that_size)
     const char *name = scene_names[_i];
     char path[4096];
     snprintf(path, sizeof path, "scenes/%s", name);
-    char *text = read_text(rt_test_source_path(path));
+    char *text = rt_test_read_file(rt_test_source_path(path), NULL);
+    ck_assert_msg(text != NULL, "cannot open %s", path);
     rt_scene *scene = load(rt_test_source_path(path));
     /* wider, taller, tiny, odd and one-pixel sizes */
     static const int sizes[][2] = {{97, 61}, {40, 90}, {1, 1}, {3, 1},
                                    {1, 5}, {160, 160}};
-    int size_count = memcheck() ? 3 : 6;
+    int size_count = rt_test_memcheck() ? 3 : 6;
     for (int k = 0; k < size_count; k++) {
         int w = sizes[k][0], h = sizes[k][1];
         char *edited_text = edit_size(text, w, h);
@@ -179,7 +158,7 @@ START_TEST(a_region_holds_the_pixels_of_the_whole_image)
     snprintf(path, sizeof path, "scenes/%s", name);
     rt_scene *scene = load(rt_test_source_path(path));
     /* a size that is not the scene's, so the region is of a sized image */
-    int w = memcheck() ? 24 : 120, h = memcheck() ? 18 : 90;
+    int w = rt_test_memcheck() ? 24 : 120, h = rt_test_memcheck() ? 18 : 90;
     rt_region regions[] = {
         {0, 0, w, h},                   /* all of it */
         {0, 0, 1, 1},                   /* the corners */

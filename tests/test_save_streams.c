@@ -30,7 +30,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "hostile_util.h"
+#include "testutil.h"
 
 /* ------------------------------------------------------------------ */
 /* Names, files and bytes                                               */
@@ -49,8 +49,8 @@ static fd_path fd_name(const char *format, int fd)
     return p;
 }
 
-/* A scratch folder (hostile_util's) and the names made in it, freed with
- * it. */
+/* A scratch folder (the support library's) and the names made in it,
+ * freed with it. */
 typedef struct folder {
     char *dir;
     char *names[4];
@@ -59,20 +59,20 @@ typedef struct folder {
 
 static folder new_folder(void)
 {
-    return (folder){make_temp_dir(), {NULL}, 0};
+    return (folder){rt_test_temp_dir(), {NULL}, 0};
 }
 
 static const char *in(folder *f, const char *name)
 {
     ck_assert_int_lt(f->count, 4);
-    return f->names[f->count++] = join(f->dir, name);
+    return f->names[f->count++] = rt_test_join(f->dir, name);
 }
 
 static void folder_remove(folder *f)
 {
     for (int i = 0; i < f->count; i++)
         free(f->names[i]);
-    remove_dir(f->dir);
+    rt_test_remove_dir(f->dir);
 }
 
 /* The P6 bytes of `image`. */
@@ -130,33 +130,22 @@ static void save_ok(const char *path, const rt_image *image)
 /* Children                                                             */
 
 /* A reader of the pipe `fds`, copying it into the file `to` until the
- * writers are gone. */
-static pid_t start_reader(const int fds[2], const char *to)
+ * writers are gone (rt_test_copy_job in a child). */
+static rt_test_child start_reader(const int fds[2], const char *to)
 {
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        close(fds[1]);
-        alarm(600);         /* a save that never ends */
-        int out = open(to, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        char chunk[4096];
-        ssize_t n;
-        while (out >= 0 && (n = read(fds[0], chunk, sizeof chunk)) > 0)
-            if (write(out, chunk, (size_t)n) != n)
-                _exit(1);
-        _exit(out >= 0 && close(out) == 0 ? 0 : 1);
-    }
+    rt_test_copy copy = {NULL, fds[0], fds[1], to};
+    rt_test_child reader = rt_test_child_start(rt_test_copy_job, &copy);
+    ck_assert_msg(reader.pid > 0, "fork: %s", strerror(errno));
     close(fds[0]);
-    return pid;
+    return reader;
 }
 
-static void assert_reader_done(pid_t reader)
+static void assert_reader_done(rt_test_child *reader)
 {
-    int status;
-    ck_assert_int_eq(waitpid(reader, &status, 0), reader);
+    char note[1024];
+    int status = rt_test_child_finish(reader, note, sizeof note);
     ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0,
-                  "the pipe's reader failed");
+                  "the pipe's reader failed: %s", note);
 }
 
 /* ------------------------------------------------------------------ */
@@ -169,7 +158,7 @@ static void through_a_pipe(int non_blocking)
 {
     folder dir = new_folder();
     const char *got = in(&dir, "received");
-    rt_image image = make_image(200, 150);
+    rt_image image = rt_test_pattern(200, 150);
     bytes expected = encode(&image);
     int fds[2];
     ck_assert_int_eq(pipe(fds), 0);
@@ -177,10 +166,10 @@ static void through_a_pipe(int non_blocking)
         (void)fcntl(fds[1], F_SETPIPE_SZ, 4096);  /* full at once */
         ck_assert_int_eq(fcntl(fds[1], F_SETFL, O_NONBLOCK), 0);
     }
-    pid_t reader = start_reader(fds, got);
+    rt_test_child reader = start_reader(fds, got);
     save_ok(fd_name("/dev/fd/%d", fds[1]).s, &image);
     close(fds[1]);
-    assert_reader_done(reader);
+    assert_reader_done(&reader);
     assert_holds(got, "", &expected, "");
     rt_image_release(&image);
     free(expected.data);
@@ -211,7 +200,7 @@ static void append_through(const char *format)
     int fd = open(file, O_WRONLY | O_APPEND);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 0, SEEK_SET), 0);  /* appending ignores it */
-    rt_image image = make_image(7, 5);
+    rt_image image = rt_test_pattern(7, 5);
     bytes expected = encode(&image);
     fd_path name = fd_name(format, fd);
     save_ok(name.s, &image);
@@ -255,7 +244,7 @@ START_TEST(dev_fd_to_a_positioned_file_writes_at_its_offset_truncating_nothing)
     int fd = open(file, O_RDWR);
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 7, SEEK_SET), 7);
-    rt_image image = make_image(6, 4);         /* 83 bytes, inside the 300 */
+    rt_image image = rt_test_pattern(6, 4); /* 83 bytes, inside the 300 */
     bytes expected = encode(&image);
     save_ok(fd_name("/dev/fd/%d", fd).s, &image);
     ck_assert_int_eq(lseek(fd, 0, SEEK_CUR), 7 + (off_t)expected.size);
@@ -277,7 +266,7 @@ START_TEST(a_link_to_dev_fd_writes_through_the_descriptor_and_stays_a_link)
     ck_assert_int_ge(fd, 0);
     fd_path name = fd_name("/dev/fd/%d", fd);
     ck_assert_int_eq(symlink(name.s, link), 0);
-    rt_image image = make_image(5, 3);
+    rt_image image = rt_test_pattern(5, 3);
     bytes expected = encode(&image);
     save_ok(link, &image);
     close(fd);
@@ -322,7 +311,7 @@ END_TEST
  * names `path` and says `reason`. */
 static void assert_refused(const char *path, const char *reason)
 {
-    rt_image image = make_image(4, 4);
+    rt_image image = rt_test_pattern(4, 4);
     rt_error saved = {0}, checked = {0};
     rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &saved);
     rt_status check = rt_image_save_check(path, &checked);
@@ -383,11 +372,19 @@ END_TEST
 
 /* Another process's descriptor cannot be written through: its file is
  * opened again and rewritten from its start (docs/saving-images.md). */
-static void hold_open_until_closed(int wait_fd)
+typedef struct holder_fds {
+    int wait_fd;            /* read until the test closes the other end */
+    int other_end;          /* that end, which the holder must not keep */
+} holder_fds;
+
+static int hold_open_until_closed(void *arg, char *note, size_t size)
 {
+    (void)note, (void)size;
+    const holder_fds *h = arg;
+    close(h->other_end);
     char byte;
     alarm(600);
-    _exit(read(wait_fd, &byte, 1) == 0 ? 0 : 1);
+    return read(h->wait_fd, &byte, 1) == 0 ? 0 : 1;
 }
 
 START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
@@ -399,24 +396,21 @@ START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
     int wait_fds[2];
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(pipe(wait_fds), 0);
-    fflush(NULL);
-    pid_t holder = fork();
-    ck_assert_int_ge(holder, 0);
-    if (holder == 0) {
-        close(wait_fds[1]);
-        hold_open_until_closed(wait_fds[0]);    /* keeps fd open */
-    }
+    holder_fds h = {wait_fds[0], wait_fds[1]};
+    /* the holder keeps fd open */
+    rt_test_child holder = rt_test_child_start(hold_open_until_closed, &h);
+    ck_assert_msg(holder.pid > 0, "fork: %s", strerror(errno));
     close(wait_fds[0]);
     close(fd);              /* only the holder has it now */
     char name[64];
-    snprintf(name, sizeof name, "/proc/%ld/fd/%d", (long)holder, fd);
-    rt_image image = make_image(5, 5);
+    snprintf(name, sizeof name, "/proc/%ld/fd/%d", (long)holder.pid, fd);
+    rt_image image = rt_test_pattern(5, 5);
     bytes expected = encode(&image);
     rt_error error = {0};
     rt_status status = rt_image_save(name, &image, RT_IMAGE_P6, &error);
     close(wait_fds[1]);
-    int wait_status;
-    ck_assert_int_eq(waitpid(holder, &wait_status, 0), holder);
+    char note[64];
+    ck_assert_int_ne(rt_test_child_finish(&holder, note, sizeof note), -1);
     ck_assert_msg(status == RT_OK, "%s: %s", name, error.message);
     assert_holds(file, "", &expected, "");
     rt_image_release(&image);
@@ -471,7 +465,7 @@ static void standard_case_run(standard_case c, const char *old,
     rt_test_write_file(file, old);
     c.file = file;
     char note[1024];
-    int code = run_in_child(save_to_standard, &c, note, sizeof note);
+    int code = rt_test_in_child(save_to_standard, &c, note, sizeof note);
     ck_assert_msg(code == 0, "%s", note);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 9, 7, NULL), RT_OK);
@@ -536,30 +530,12 @@ static bytes run_shell(folder *dir, const char *script)
     char whole[4096];
     snprintf(whole, sizeof whole,
              "set -e; " RENDER " -o reference.ppm >/dev/null; %s", script);
-    const char *err = in(dir, "..err"), *out = in(dir, "..out");
-    fflush(NULL);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int o = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int none = open("/dev/null", O_RDONLY);
-        if (e < 0 || o < 0 || none < 0 || chdir(dir->dir) != 0 ||
-            dup2(e, 2) != 2 || dup2(o, 1) != 1 || dup2(none, 0) != 0)
-            _exit(126);
-        signal(SIGPIPE, SIG_DFL);
-        execl(bash_path(), "bash", "-c", whole, "bash", RT_EXPORT_PATH,
-              rt_test_source_path("scenes/cubes.scn"), (char *)NULL);
-        _exit(127);
-    }
-    int status;
-    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
-    char *text = rt_test_read_file(err, NULL);
-    ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0,
-                  "bash -c '%s' failed: %s", script, text ? text : "");
-    free(text);
-    unlink(err);
-    unlink(out);
+    const char *args[] = {"-c", whole, "bash", RT_EXPORT_PATH,
+                          rt_test_source_path("scenes/cubes.scn"), NULL};
+    rt_test_output r = rt_test_run(dir->dir, bash_path(), args);
+    ck_assert_msg(r.code == 0, "bash -c '%s' failed (%d): %s", script, r.code,
+                  r.err);
+    rt_test_output_free(&r);
     const char *reference = in(dir, "reference.ppm");
     size_t size;
     char *data = rt_test_read_file(reference, &size);

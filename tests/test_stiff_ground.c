@@ -168,17 +168,6 @@ START_TEST(float_refuses_coordinates_beyond_its_products_range)
 }
 END_TEST
 
-/* The number of warnings of `scene` that contain `text`. */
-static int warnings_with(const rt_scene *scene, const char *text)
-{
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
-    int found = 0;
-    for (int i = 0; i < info.warning_count; i++)
-        found += strstr(rt_scene_warning(scene, i)->message, text) != NULL;
-    return found;
-}
-
 /* Beyond the measured limit (a ratio of 1e30) the loader says which
  * facets the eye cannot be placed against - here both halves of the
  * ground at 1e32 - and says nothing at 1e30 or for a ground seen from
@@ -197,7 +186,7 @@ START_TEST(the_loader_warns_beyond_the_crossing_s_limit)
         rt_error error;
         ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK,
                       "%s", error.message);
-        ck_assert_msg(warnings_with(scene, "plane through the eye") ==
+        ck_assert_msg(rt_test_count_warnings(scene, "plane through the eye") ==
                           cases[k].warnings,
                       "ratio %s: expected %d warnings", cases[k].ratio,
                       cases[k].warnings);
@@ -215,8 +204,9 @@ START_TEST(the_loader_names_a_facet_in_a_plane_through_the_eye)
         "6\n-1,2,0\n1,2,0\n0,3,0\n-1,2,-1\n1,2,-1\n0,3,-1\n"
         "2\n1,2,3, 0, 255,0,0\n4,5,6, 0, 0,255,0\n"
         "0,0,0\n0,0,5, 255,255,255\n");
-    ck_assert_int_eq(warnings_with(scene, "plane through the eye"), 1);
-    ck_assert_int_eq(warnings_with(scene, "facet 1 lies in a plane"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "plane through the eye"), 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "facet 1 lies in a plane"),
+                     1);
     rt_scene_destroy(scene);
 }
 END_TEST

@@ -31,10 +31,9 @@
 #include <SDL.h>
 
 #include "testutil.h"
-#include "view_app.h"
+#include "viewer.h"
 #include "view_load.h"
 #include "view_scene.h"
-#include "viewer_testutil.h"
 
 /* Safety bound for a thread to come or go (never reached when it works). */
 #define WAIT_SECONDS 20.0
@@ -120,10 +119,10 @@ static rt_status cancellable_load(const char *path,
     if (strstr(path, "slow") == NULL)
         return view_scene_load(path, options, scene, error);
     sem_post(&gate.entered);
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     while (!rt_cancel_requested(options->cancel) &&
-           viewer_now_seconds() < deadline)
-        viewer_sleep_ms(1);
+           rt_test_now() < deadline)
+        rt_test_sleep_ms(1);
     atomic_store(&saw_cancel, rt_cancel_requested(options->cancel));
     *scene = NULL;
     snprintf(error->message, sizeof error->message, "%s: cancelled", path);
@@ -135,20 +134,12 @@ static rt_status cancellable_load(const char *path,
 
 static view_app *open_app(view_load_func load, int watch)
 {
-    setenv("SDL_VIDEODRIVER", "dummy", 0);
-    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
-                  SDL_GetError());
     view_app_options options;
-    view_app_options_init(&options);
-    options.window_flags = VIEW_WINDOW_SOFTWARE;
+    rt_test_view_app_options(&options);
     options.watch = watch;
     options.load_scene = load;
-    char error[256];
-    view_app *app = view_app_create(&options, error, sizeof error);
-    ck_assert_msg(app != NULL, "%s", error);
-    return app;
+    return rt_test_view_app_open(&options);
 }
-
 static void push_key(SDL_Keycode key)
 {
     SDL_Event event;
@@ -179,13 +170,13 @@ static const rt_image *finished_image(view_app *app)
     view_session *session = view_app_session(app);
     ck_assert_ptr_nonnull(session);
     view_progress progress;
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
+    double deadline = rt_test_now() + WAIT_SECONDS;
     do {
         view_session_get_progress(session, &progress);
         if (progress.state == VIEW_RENDERING)
-            viewer_sleep_ms(1);
+            rt_test_sleep_ms(1);
     } while (progress.state == VIEW_RENDERING &&
-             viewer_now_seconds() < deadline);
+             rt_test_now() < deadline);
     ck_assert_int_eq(progress.state, VIEW_DONE);
     return view_session_image(session);
 }
@@ -195,8 +186,8 @@ static const rt_image *finished_image(view_app *app)
 START_TEST(a_load_runs_on_a_worker_while_the_window_keeps_its_picture)
 {
     gate_open();
-    viewer_write_scene("viewer-load-a.scn", "30, 30, 60");
-    viewer_write_scene("viewer-load-b.scn", "200, 10, 10");
+    rt_test_write_two_facet_scene("viewer-load-a.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-b.scn", "200, 10, 10");
     view_app *app = open_app(held_load, 0);
     gate_release('l');              /* the first load goes through */
     ck_assert(view_app_open(app, "viewer-load-a.scn"));
@@ -231,8 +222,7 @@ START_TEST(a_load_runs_on_a_worker_while_the_window_keeps_its_picture)
     ck_assert_ptr_ne(view_app_session(app), session);
     ck_assert(shows_background(finished_image(app), 200, 10, 10));
     ck_assert(strstr(view_app_title(app), "loading") == NULL);
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     gate_close();
     remove("viewer-load-a.scn");
     remove("viewer-load-b.scn");
@@ -241,17 +231,16 @@ END_TEST
 
 START_TEST(a_quit_during_a_load_blocked_in_read_does_not_wait_for_it)
 {
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     gate_open();
-    viewer_write_scene("viewer-load-q.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-q.scn", "30, 30, 60");
     view_app *app = open_app(held_load, 0);
     ck_assert(view_app_open(app, "viewer-load-q.scn"));
     ck_assert(wait_for(&gate.entered));
     push_quit();
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 1);    /* never loaded */
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     /* Quit and destroy have returned with the loader still in read():
      * neither waited for it; and its load was told to stop. */
     ck_assert(!atomic_load(&gate.returned));
@@ -259,7 +248,7 @@ START_TEST(a_quit_during_a_load_blocked_in_read_does_not_wait_for_it)
 
     gate_release('x');              /* it returns, and its thread ends */
     ck_assert(wait_for(&gate.left));
-    ck_assert_int_eq(viewer_settled_thread_count(threads, WAIT_SECONDS),
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, WAIT_SECONDS),
                      threads);
     gate_close();
     remove("viewer-load-q.scn");
@@ -270,8 +259,8 @@ START_TEST(a_new_load_cancels_the_one_under_way)
 {
     gate_open();
     atomic_store(&saw_cancel, 0);
-    viewer_write_scene("viewer-load-slow.scn", "30, 30, 60");
-    viewer_write_scene("viewer-load-next.scn", "10, 200, 10");
+    rt_test_write_two_facet_scene("viewer-load-slow.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-next.scn", "10, 200, 10");
     view_app *app = open_app(cancellable_load, 0);
     ck_assert(view_app_open(app, "viewer-load-slow.scn"));
     ck_assert(wait_for(&gate.entered));
@@ -281,8 +270,7 @@ START_TEST(a_new_load_cancels_the_one_under_way)
     ck_assert(view_app_wait_load(app));
     ck_assert(shows_background(finished_image(app), 10, 200, 10));
     ck_assert_str_eq(view_app_message(app), "");
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     gate_close();
     remove("viewer-load-slow.scn");
     remove("viewer-load-next.scn");
@@ -297,21 +285,20 @@ START_TEST(a_termination_signal_during_a_blocked_load_ends_the_loop)
     sigemptyset(&term);
     sigaddset(&term, SIGTERM);
     ck_assert_int_eq(pthread_sigmask(SIG_BLOCK, &term, &before), 0);
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     gate_open();
-    viewer_write_scene("viewer-load-t.scn", "30, 30, 60");
+    rt_test_write_two_facet_scene("viewer-load-t.scn", "30, 30, 60");
     view_app *app = open_app(held_load, 0);
     ck_assert(view_app_open(app, "viewer-load-t.scn"));
     ck_assert(wait_for(&gate.entered));
     ck_assert_int_eq(raise(SIGTERM), 0);   /* pending on this thread */
     view_app_run(app);
     ck_assert_int_eq(view_app_exit_status(app), 128 + SIGTERM);
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     ck_assert(!atomic_load(&gate.returned));
     gate_release('x');
     ck_assert(wait_for(&gate.left));
-    ck_assert_int_eq(viewer_settled_thread_count(threads, WAIT_SECONDS),
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, WAIT_SECONDS),
                      threads);
     gate_close();
     sigset_t pending;
@@ -327,10 +314,10 @@ END_TEST
  * picture, and closing it does not wait. */
 START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)
 {
-    int threads = viewer_baseline_thread_count();
+    int threads = rt_test_baseline_thread_count();
     const char *path = "viewer-load-fifo.scn";
     remove(path);
-    viewer_write_scene(path, "30, 30, 60");
+    rt_test_write_two_facet_scene(path, "30, 30, 60");
     view_app *app = open_app(NULL, 1);
     ck_assert(view_app_open(app, path));
     ck_assert(view_app_wait_load(app));
@@ -347,20 +334,19 @@ START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)
                   "%s", view_app_title(app));
     ck_assert_ptr_eq(view_app_session(app), session);
     ck_assert(shows_background(view_session_image(session), 30, 30, 60));
-    view_app_destroy(app);
-    SDL_Quit();
+    rt_test_view_app_close(app);
     /* A worker blocked opening the FIFO is let through by a writer that
      * opens and closes it (the load then fails on an empty file); one that
      * refused it is gone already. */
-    double deadline = viewer_now_seconds() + WAIT_SECONDS;
-    while (viewer_thread_count() > threads &&
-           viewer_now_seconds() < deadline) {
+    double deadline = rt_test_now() + WAIT_SECONDS;
+    while (rt_test_thread_count() > threads &&
+           rt_test_now() < deadline) {
         int fd = open(path, O_WRONLY | O_NONBLOCK);
         if (fd >= 0)
             close(fd);
-        viewer_sleep_ms(1);
+        rt_test_sleep_ms(1);
     }
-    ck_assert_int_eq(viewer_settled_thread_count(threads, 0.2), threads);
+    ck_assert_int_eq(rt_test_settled_thread_count(threads, 0.2), threads);
     remove(path);
 }
 END_TEST

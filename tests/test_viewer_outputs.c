@@ -17,33 +17,19 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
-#include "program_util.h"
 #include "testutil.h"
-#include "view_app.h"
-#include "view_session.h"
-
-/* Longest a test waits for a render before failing (a guard, not a
- * measure: a render here takes milliseconds). */
-#define WAIT_SECONDS 60.0
+#include "viewer.h"
 
 static view_app *open_app(const char *output)
 {
-    setenv("SDL_VIDEODRIVER", "dummy", 0);
-    ck_assert_msg(SDL_Init(SDL_INIT_VIDEO) == 0, "SDL_Init: %s",
-                  SDL_GetError());
     view_app_options options;
-    view_app_options_init(&options);
+    rt_test_view_app_options(&options);
     options.format = RT_IMAGE_P6;
     options.output = output;
-    options.window_flags = VIEW_WINDOW_SOFTWARE;
     options.render.width = 32;
     options.render.height = 24;
-    char error[256];
-    view_app *app = view_app_create(&options, error, sizeof error);
-    ck_assert_msg(app != NULL, "%s", error);
-    return app;
+    return rt_test_view_app_open(&options);
 }
-
 /* Opens `path` in a new app saving to `output`, and waits for the whole
  * image (so that S goes to -o, not to a partial name). */
 static view_app *render(const char *path, const char *output)
@@ -51,23 +37,8 @@ static view_app *render(const char *path, const char *output)
     view_app *app = open_app(output);
     ck_assert_msg(view_app_open(app, path) && view_app_wait_load(app), "%s",
                   view_app_message(app));
-    view_progress progress;
-    Uint64 deadline = SDL_GetTicks64() + (Uint64)(WAIT_SECONDS * 1000);
-    do {
-        view_session_get_progress(view_app_session(app), &progress);
-        ck_assert_msg(SDL_GetTicks64() < deadline,
-                      "the render did not finish");
-        if (progress.state == VIEW_RENDERING)
-            SDL_Delay(2);
-    } while (progress.state == VIEW_RENDERING);
-    ck_assert_int_eq(progress.state, VIEW_DONE);
+    ck_assert_int_eq(rt_test_view_wait(view_app_session(app)), VIEW_DONE);
     return app;
-}
-
-static void close_app(view_app *app)
-{
-    view_app_destroy(app);
-    SDL_Quit();
 }
 
 static void assert_same_file_text(const char *path, const char *text)
@@ -80,14 +51,14 @@ static void assert_same_file_text(const char *path, const char *text)
 
 START_TEST(save_refuses_an_output_that_is_the_scene)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char *text = rt_test_read_file(rt_test_source_path("scenes/cubes.scn"),
                                    NULL);
     ck_assert_ptr_nonnull(text);
     char scene[4200], soft[4200], hard[4200];
-    snprintf(scene, sizeof scene, "%s", in_dir(dir, "v.scn"));
-    snprintf(soft, sizeof soft, "%s", in_dir(dir, "link.scn"));
-    snprintf(hard, sizeof hard, "%s", in_dir(dir, "hard.scn"));
+    snprintf(scene, sizeof scene, "%s", rt_test_in_dir(dir, "v.scn"));
+    snprintf(soft, sizeof soft, "%s", rt_test_in_dir(dir, "link.scn"));
+    snprintf(hard, sizeof hard, "%s", rt_test_in_dir(dir, "hard.scn"));
     rt_test_write_file(scene, text);
     ck_assert_int_eq(symlink("v.scn", soft), 0);
     ck_assert_int_eq(link(scene, hard), 0);
@@ -102,37 +73,37 @@ START_TEST(save_refuses_an_output_that_is_the_scene)
                  outputs[i], scene);
         ck_assert_str_eq(view_app_message(app), expected);
         ck_assert_ptr_nonnull(strstr(view_app_title(app), "refusing"));
-        close_app(app);
+        rt_test_view_app_close(app);
         assert_same_file_text(scene, text);
     }
     /* an output that is no input: saved as before */
-    view_app *app = render(scene, in_dir(dir, "out.ppm"));
+    view_app *app = render(scene, rt_test_in_dir(dir, "out.ppm"));
     char path[4200];
     ck_assert(view_app_save(app, path, sizeof path));
-    ck_assert_str_eq(path, in_dir(dir, "out.ppm"));
+    ck_assert_str_eq(path, rt_test_in_dir(dir, "out.ppm"));
     ck_assert_str_eq(view_app_message(app), "");
-    close_app(app);
+    rt_test_view_app_close(app);
     rt_image saved;
-    ck_assert_int_eq(rt_ppm_load(in_dir(dir, "out.ppm"), &saved, NULL),
+    ck_assert_int_eq(rt_ppm_load(rt_test_in_dir(dir, "out.ppm"), &saved, NULL),
                      RT_OK);
     ck_assert_int_eq(saved.width, 32);
     rt_image_release(&saved);
     free(text);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
 START_TEST(save_refuses_the_material_library_its_obj_read)
 {
-    char *dir = fresh_dir();
+    char *dir = rt_test_temp_dir();
     char *obj = rt_test_read_file(rt_test_source_path(
                                       "tests/data/obj/cube.obj"), NULL);
     char *mtl = rt_test_read_file(rt_test_source_path(
                                       "tests/data/obj/cube.mtl"), NULL);
     ck_assert(obj != NULL && mtl != NULL);
     char scene[4200], library[4200];
-    snprintf(scene, sizeof scene, "%s", in_dir(dir, "cube.obj"));
-    snprintf(library, sizeof library, "%s", in_dir(dir, "cube.mtl"));
+    snprintf(scene, sizeof scene, "%s", rt_test_in_dir(dir, "cube.obj"));
+    snprintf(library, sizeof library, "%s", rt_test_in_dir(dir, "cube.mtl"));
     rt_test_write_file(scene, obj);
     rt_test_write_file(library, mtl);
     view_app *app = render(scene, library);
@@ -141,12 +112,12 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
     ck_assert_msg(strstr(view_app_message(app), "cube.mtl, a file the scene "
                                                 "read (the same file)"),
                   "%s", view_app_message(app));
-    close_app(app);
+    rt_test_view_app_close(app);
     assert_same_file_text(library, mtl);
     assert_same_file_text(scene, obj);
     free(obj);
     free(mtl);
-    remove_dir(dir);
+    rt_test_remove_dir(dir);
 }
 END_TEST
 
@@ -172,6 +143,5 @@ static Suite *sources_suite(void)
 
 int main(int argc, char **argv)
 {
-    return main_with_sources(argc, argv, outputs_suite, sources_suite,
-                             "test_viewer_outputs");
+    return rt_test_main_with_sources(argc, argv, outputs_suite, sources_suite);
 }

@@ -3,16 +3,25 @@
 # display), so it runs headless in CI.
 # Only when the viewer is built (RAYTRACE_VIEWER and SDL2, apps/rt-view/CMakeLists.txt).
 if(TARGET raytrace_viewer)
-  # One test compares with the image rt-export writes; one runs rt-view
-  # without a display (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
-  raytrace_add_suite(test_viewer SOURCES support/viewer_testutil.c LIBS raytrace_viewer)
-  set_tests_properties(test_viewer PROPERTIES
-    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+  # What the viewer's suites share (support/viewer.h), a library of its own:
+  # it links raytrace_viewer and SDL2, which the other suites must not load.
+  add_library(raytrace_test_viewer_support STATIC support/viewer.c)
+  target_link_libraries(raytrace_test_viewer_support PUBLIC
+                        raytrace_test_support raytrace_viewer)
+  raytrace_set_warnings(raytrace_test_viewer_support)
+  # The session and the window (test_viewer), the app (test_viewer_app:
+  # one test runs rt-view without a display), the click overlay and debug
+  # views (test_viewer_overlay).  One test compares with the image
+  # rt-export writes (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
+  foreach(family "" _app _overlay)
+    raytrace_add_suite(test_viewer${family} LIBS raytrace_test_viewer_support)
+    set_tests_properties(test_viewer${family} PROPERTIES
+      ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+  endforeach()
   # S never writes over an input (tests/test_viewer_outputs.c); the
   # material-library case, `test_viewer_outputs_sources`, is a skip (77)
   # until the loader lists the files it read.
-  raytrace_add_suite(test_viewer_outputs SOURCES support/program_util.c
-    LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer_outputs LIBS raytrace_test_viewer_support)
   add_test(NAME test_viewer_outputs_sources
            COMMAND raytrace_test_viewer_outputs sources
            WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
@@ -22,8 +31,7 @@ if(TARGET raytrace_viewer)
   set_tests_properties(test_viewer_outputs_sources PROPERTIES
     SKIP_RETURN_CODE 77)
   # Loads on a worker thread: live window, cancels, quits that never wait.
-  raytrace_add_suite(test_viewer_load SOURCES support/viewer_testutil.c
-    LIBS raytrace_viewer)
+  raytrace_add_suite(test_viewer_load LIBS raytrace_test_viewer_support)
   set_tests_properties(test_viewer_load PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "raytrace/raytrace.h"
+#include "rng.h"            /* the support library's generator */
 
 /* ------------------------------------------------------------------ */
 /* Methods                                                             */
@@ -131,17 +132,10 @@ rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
 /* ------------------------------------------------------------------ */
 /* Helpers                                                             */
 
-/* A deterministic generator (splitmix64): the same numbers everywhere. */
-typedef struct rb_rng {
-    uint64_t state;
-} rb_rng;
-double rb_uniform(rb_rng *rng);                  /* [0, 1) */
-
 /* How many rays a case sends where it would send n: n, or n / 100 (at
  * least 20) when RT_TEST_MEMCHECK is set, so that the suites also run under
  * valgrind within CI's time (.ci/memcheck). */
 int rb_scaled(int n);
-double rb_range(rb_rng *rng, double lo, double hi);
 
 static inline rt_vec3 rb_v(double x, double y, double z)
 {

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "probe.h"
 #include "robust/robust.h"
 
 rt_vec3 rb_add(rt_vec3 a, rt_vec3 b) { return rb_v(a.x + b.x, a.y + b.y, a.z + b.z); }
@@ -39,24 +40,10 @@ int rb_scaled(int n)
 {
     static int memcheck = -1;
     if (memcheck < 0)
-        memcheck = getenv("RT_TEST_MEMCHECK") != NULL;
+        memcheck = rt_test_memcheck();
     if (!memcheck)
         return n;
     return n / 100 > 20 ? n / 100 : (n < 20 ? n : 20);
-}
-
-double rb_uniform(rb_rng *rng)
-{
-    uint64_t z = (rng->state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-53;
-}
-
-double rb_range(rb_rng *rng, double lo, double hi)
-{
-    return lo + (hi - lo) * rb_uniform(rng);
 }
 
 void rb_mesh_free(rb_mesh *mesh)
