@@ -13,8 +13,8 @@ set -u
 
 "$RT_VIEW" "$RT_SOURCE_DIR/scenes/cubes.scn" >"$work/out" 2>"$work/err" &
 view_pid=$!
-window=$(timeout 90 xdotool search --sync --name 'cubes.scn.*done' | head -n 1)
-[ -n "$window" ] || fail "no finished rt-view window within 90 s"
+window=$(find_window '^cubes\.scn.*done' 90) ||
+    fail "no finished rt-view window within 90 s"
 # The window has the image's size (400x400): window point = pixel.
 timeout 10 xdotool mousemove --window "$window" 268 124 click 1 ||
     fail "xdotool could not click"

@@ -20,13 +20,15 @@ start_and_replace() {
     cp "$RT_SOURCE_DIR/scenes/cubes.scn" "$work/$name.scn"
     "$RT_VIEW" --watch "$work/$name.scn" >"$work/out" 2>"$work/err" &
     view_pid=$!
-    window=$(timeout 90 xdotool search --sync --name "$name.scn.*done" |
-             head -n 1)
-    [ -n "$window" ] || fail "no finished rt-view window within 90 s"
+    window=$(find_window "^$name\.scn.*done" 90) ||
+        fail "no finished rt-view window within 90 s"
     rm "$work/$name.scn"
     mkfifo "$work/$name.scn"
     for _ in $(seq 100); do
-        title=$(xdotool getwindowname "$window")
+        kill -0 "$view_pid" 2>/dev/null ||
+            fail "rt-view ended when its scene became a FIFO"
+        title=$(window_name) ||
+            window=$(find_window "^$name\.scn" 1) || true
         case "$title" in
             *loading*|*"$name.scn:"*) break ;;
         esac
@@ -54,16 +56,20 @@ start_and_replace watched
 # The window answers: N (the normal view of the picture still shown).
 timeout 10 xdotool key --window "$window" n
 for _ in $(seq 100); do
-    xdotool getwindowname "$window" | grep -q 'normal view' && break
+    window_name | grep -q 'normal view' && break
     sleep 0.1
 done
-xdotool getwindowname "$window" | grep -q 'normal view' ||
-    fail "N was not answered after the FIFO: $(xdotool getwindowname "$window")"
+window_name | grep -q 'normal view' ||
+    fail "N was not answered after the FIFO: $(window_name)"
 since=$(date +%s%N)
 # The window is gone before the key's release: X's BadWindow is expected.
 timeout 10 xdotool key --window "$window" Escape 2>/dev/null
 wait_exit "$since"
 [ "$status" -eq 0 ] || fail "Escape: rt-view exited $status"
+# xdotool pressed Escape through XTEST (the window had the focus) and ended
+# on the window's BadWindow before releasing it: the server (kept up by
+# -noreset) would hold the key down and repeat it into the next window.
+xdotool keyup Escape 2>/dev/null
 
 start_and_replace signalled
 since=$(date +%s%N)

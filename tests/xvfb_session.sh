@@ -38,3 +38,23 @@ unset WAYLAND_DISPLAY SDL_VIDEODRIVER
 # X libraries' own allocations are not these tests' business (test_viewer
 # checks rt-view's code for leaks).
 export ASAN_OPTIONS=detect_leaks=0
+
+# The id of the newest window whose name matches the regular expression $1,
+# waiting up to $2 seconds; empty (status 1) when none came.  Each try is a
+# query of its own with its X errors dropped: a window another client
+# destroys while xdotool lists the names (SDL may replace one, a program
+# may be ending) fails only that try.
+find_window() {
+    local pattern=$1 tries=$(( $2 * 10 )) found
+    for _ in $(seq "$tries"); do
+        found=$(xdotool search --name "$pattern" 2>/dev/null | tail -n 1)
+        [ -n "$found" ] && { echo "$found"; return 0; }
+        sleep 0.1
+    done
+    return 1
+}
+
+# The name of the window $window, or empty when it has gone.
+window_name() {
+    xdotool getwindowname "$window" 2>/dev/null
+}

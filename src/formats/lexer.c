@@ -14,7 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "formats/reader.h"
+#include "scene/scene_build.h" /* RT_LOAD_POLL */
 
 static const char utf8_bom[] = "\xEF\xBB\xBF";
 
