@@ -264,6 +264,22 @@ static int replaces(const KERNEL_T *k, const hit *b, const hit *c)
     return fabs(cosine) < 1 - 16 * REAL_EPS;
 }
 
+/*
+ * The step of every nearest-hit loop: facet `i`'s hit `c` becomes the
+ * nearest so far (*h, with *t_max its distance and *found set) unless one
+ * is kept that replaces() says stays.
+ */
+static inline void keep_nearer(const KERNEL_T *k, int i, hit *c, hit *h,
+                               REAL *t_max, int *found)
+{
+    c->index = i;
+    if (*found && !replaces(k, h, c))
+        return;
+    *h = *c;
+    *t_max = c->t;
+    *found = 1;
+}
+
 
 /* Non-zero when a hit of a shadow ray towards a light at t = t_max blocks
  * it: the facet is provably before the light. */

@@ -11,9 +11,9 @@
  *     REAL_MIN, REAL_TRUE_MIN  its smallest normal and subnormal numbers
  *     KERNEL_T, KERNEL_EYE_T   the names of its kernel and eye structs
  *     KERNEL_OPS the name of its table (rt__kernel_double_ops ...)
- * Everything here is static; each .c file then fills its table with the
- * operations at the end of this file.  The parts, each using only
- * those before it:
+ * Everything here is static but the table of operations at the end,
+ * KERNEL_OPS, which kernel.h declares.  The parts, each using only those
+ * before it:
  *     real_impl.h          vector arithmetic and error bounds
  *     intersect_impl.h     the watertight test and the tie rule
  *     simd_impl.h          the exact AVX2 filter over blocks of eight
@@ -395,3 +395,16 @@ static int kernel_occluded(const rt_kernel *kernel, rt_vec3 from, rt_vec3 to,
     trace_ctx c = query_context(k, &counters);
     return any_hit(&c, &r, 1, skip);
 }
+
+const rt_kernel_ops KERNEL_OPS = {
+    .precision = REAL_IS_FLOAT ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE,
+    .create = kernel_create,
+    .destroy = kernel_destroy,
+    .eye_create = kernel_eye_create,
+    .eye_destroy = kernel_eye_destroy,
+    .prepare_octree = kernel_prepare_octree,
+    .trace = kernel_trace,
+    .trace_span = kernel_trace_span,
+    .nearest_hit = kernel_nearest_hit,
+    .occluded = kernel_occluded,
+};

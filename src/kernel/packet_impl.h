@@ -318,15 +318,9 @@ AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
             int l = __builtin_ctz(m);
             hit candidate;
             sheared s = kept_lane(&keep, l);
-            if (!intersect_sheared(&s, &k->tris[i], r[l], t_max[l],
-                                   &candidate))
-                continue;
-            candidate.index = i;
-            if (found[l] && !replaces(k, &h[l], &candidate))
-                continue;
-            h[l] = candidate;
-            t_max[l] = candidate.t;
-            found[l] = 1;
+            if (intersect_sheared(&s, &k->tris[i], r[l], t_max[l],
+                                  &candidate))
+                keep_nearer(k, i, &candidate, &h[l], &t_max[l], &found[l]);
         }
     }
     *tests += (uint64_t)n * (uint64_t)k->count;

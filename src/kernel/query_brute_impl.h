@@ -13,14 +13,8 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
     int found = 0;
     hit candidate;
     for (int i = 0; i < k->count; i++) {
-        if (i != skip && intersect(r, &k->tris[i], t_max, &candidate)) {
-            candidate.index = i;
-            if (found && !replaces(k, h, &candidate))
-                continue;
-            *h = candidate;
-            t_max = candidate.t;
-            found = 1;
-        }
+        if (i != skip && intersect(r, &k->tris[i], t_max, &candidate))
+            keep_nearer(k, i, &candidate, h, &t_max, &found);
     }
     *tests += (uint64_t)k->count - (skip >= 0);
     return found;

@@ -214,14 +214,8 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
             m &= m - 1;
             sheared s = kept_lane(&keep, lane);
             if (i != skip &&
-                intersect_sheared(&s, &k->tris[i], r, t_max, &candidate)) {
-                candidate.index = i;
-                if (found && !replaces(k, h, &candidate))
-                    continue;
-                *h = candidate;
-                t_max = candidate.t;
-                found = 1;
-            }
+                intersect_sheared(&s, &k->tris[i], r, t_max, &candidate))
+                keep_nearer(k, i, &candidate, h, &t_max, &found);
         }
     }
     *tests += (uint64_t)k->count - (skip >= 0);
