@@ -153,6 +153,8 @@ START_TEST(a_job_without_a_team_still_runs_on_every_thread)
     tally t = {.team = NULL};
     run_counted(NULL, 5, &t);
     ck_assert_int_eq(atomic_load(&t.runs), 5);
+    /* threads started for one job block every signal as the team's do */
+    ck_assert_int_eq(atomic_load(&t.unblocked), 0);
 }
 END_TEST
 

@@ -132,17 +132,22 @@ static void *run_call(void *argument)
     return NULL;
 }
 
-/* Runs the job on the caller and count - 1 threads started for it. */
+/* Runs the job on the caller and count - 1 threads started for it, each
+ * with every signal blocked as the team's are. */
 static void run_alone(int count, void (*task)(void *), void *argument)
 {
     call job = {task, argument};
     pthread_t *threads = malloc((size_t)(count - 1) * sizeof *threads);
     int started = 0;
+    sigset_t all, before;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &before);  /* inherited by them */
     for (int t = 0; threads != NULL && t < count - 1; t++) {
         if (pthread_create(&threads[t], NULL, run_call, &job) != 0)
             break;          /* fewer threads: still correct */
         started++;
     }
+    pthread_sigmask(SIG_SETMASK, &before, NULL);
     task(argument);
     for (int t = 0; t < started; t++)
         pthread_join(threads[t], NULL);
@@ -177,12 +182,14 @@ void rt__workers_run(rt_workers *w, int count, void (*task)(void *),
         task(argument);
         return;
     }
-    /* trylock: a forked child may have inherited the lock held */
-    if (w == NULL || pthread_mutex_trylock(&w->lock) != 0) {
+    /* A forked child has none of the team's threads and may have
+     * inherited the lock held: it does not touch the lock. */
+    if (w == NULL || getpid() != w->owner) {
         run_alone(count, task, argument);
         return;
     }
-    if (w->busy || getpid() != w->owner) {
+    pthread_mutex_lock(&w->lock);
+    if (w->busy) {              /* a job inside a job */
         pthread_mutex_unlock(&w->lock);
         run_alone(count, task, argument);
         return;
