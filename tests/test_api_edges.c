@@ -135,15 +135,16 @@ static rt_status save_view(rt_image view, rt_error *error)
     X(n12, RT_ERR_ARGUMENT, rt_image_save_check(NULL, error))                \
     X(n13, RT_ERR_ARGUMENT, rt_image_save_check("", error))                  \
     X(n14, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_to(NULL, NULL, &image, RT_PPM_P6, error))                 \
+      rt_image_write_to(NULL, NULL, &image, RT_IMAGE_P3, error))             \
     X(n15, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_to(sink, NULL, NULL, RT_PPM_P3, error))                   \
+      rt_image_write_to(sink, NULL, NULL, RT_IMAGE_P3, error))               \
     X(n16, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_file(NULL, &image, RT_PPM_P6, error))                     \
+      rt_image_write_file(NULL, &image, RT_IMAGE_P3, error))                 \
     X(n17, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_file(sink_file, NULL, RT_PPM_P6, error))                  \
-    X(n18, RT_ERR_ARGUMENT, rt_ppm_save(NULL, &image, RT_PPM_P6, error))     \
-    X(n19, RT_ERR_ARGUMENT, rt_ppm_save("/dev/null", NULL, RT_PPM_P6, error))\
+      rt_image_write_file(sink_file, NULL, RT_IMAGE_P3, error))              \
+    X(n18, RT_ERR_ARGUMENT, rt_image_save(NULL, &image, RT_IMAGE_P3, error)) \
+    X(n19, RT_ERR_ARGUMENT,                                                  \
+      rt_image_save("/dev/null", NULL, RT_IMAGE_P3, error))                  \
     X(n20, RT_ERR_ARGUMENT, rt_ppm_parse(NULL, 10, NULL, &out_image, error)) \
     X(n21, RT_ERR_ARGUMENT,                                                  \
       rt_ppm_parse(ppm_text, sizeof ppm_text - 1, NULL, NULL, error))        \
@@ -220,11 +221,11 @@ static rt_status save_view(rt_image view, rt_error *error)
       rt_image_save("/dev/null", &image, (rt_image_format)99, error))        \
     X(r6, RT_ERR_ARGUMENT, save_view(narrow_stride(), error))                \
     X(r7, RT_ERR_FORMAT,                                                     \
-      rt_ppm_write_to(sink, NULL, &image, (rt_ppm_format)5, error))          \
+      rt_image_write_to(sink, NULL, &image, (rt_image_format)5, error))      \
     X(r8, RT_ERR_FORMAT,                                                     \
-      rt_ppm_write_file(sink_file, &image, (rt_ppm_format)16, error))        \
+      rt_image_write_file(sink_file, &image, (rt_image_format)4, error))     \
     X(r9, RT_ERR_FORMAT,                                                     \
-      rt_ppm_save("/dev/null", &image, (rt_ppm_format)0, error))             \
+      rt_image_save("/dev/null", &image, (rt_image_format)0, error))         \
     X(r10, RT_ERR_ARGUMENT,                                                  \
       rt_scene_check_precision(scene, (rt_precision)7, error))               \
     X(r11, RT_ERR_ARGUMENT,                                                  \

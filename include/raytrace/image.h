@@ -11,7 +11,7 @@
  * (rt_image_format_supported says).  Every writer goes to a sink (a
  * callback); the FILE and path variants are thin wrappers.
  *
- * Saving to a path (rt_image_save, and rt_ppm_save over it) never damages
+ * Saving to a path (rt_image_save) never damages
  * what the path names.  The rule, by what the path names once symbolic
  * links are followed to their final target:
  *
@@ -79,11 +79,6 @@ typedef struct rt_image {
     unsigned char *pixels;
 } rt_image;
 
-typedef enum rt_ppm_format {
-    RT_PPM_P3 = 3,          /* ASCII, lines of at most 70 characters */
-    RT_PPM_P6 = 6           /* binary */
-} rt_ppm_format;
-
 /* Fills the caller's `image` with a black width x height image (stride
  * 3 * width) whose pixels it allocates; rt_image_release frees them.  Sides
  * must be in 1..RT_MAX_IMAGE_SIDE.  RT_OK, RT_ERR_ARGUMENT or RT_ERR_NOMEM
@@ -103,10 +98,11 @@ static inline unsigned char *rt_image_pixel(const rt_image *image, int x,
     return image->pixels + (size_t)y * image->stride + (size_t)x * 3;
 }
 
-/* The file formats the library writes.  The PPM values equal
- * rt_ppm_format's. */
+/* The file formats the library writes (the PPM values are the digit of
+ * the magic number, "P3" and "P6"). */
 typedef enum rt_image_format {
-    RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format) */
+    RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format), lines of
+                               at most 70 characters */
     RT_IMAGE_P6 = 6,        /* PPM, binary */
     RT_IMAGE_PNG = 16       /* PNG, 8-bit RGB; needs a build with libpng */
 } rt_image_format;
@@ -171,19 +167,6 @@ RT_API rt_status rt_image_save(const char *path, const rt_image *image,
  * fails in milliseconds.  Thread-safe.
  */
 RT_API rt_status rt_image_save_check(const char *path, rt_error *error);
-
-/* PPM writers (P3 lines are at most 70 characters); the same as the
- * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6, the same statuses
- * and messages (a format other than P3 or P6: RT_ERR_FORMAT). */
-RT_API rt_status rt_ppm_write_to(rt_write_func write, void *user,
-                                 const rt_image *image, rt_ppm_format format,
-                                 rt_error *error);
-RT_API rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
-                                   rt_ppm_format format, rt_error *error);
-
-/* rt_image_save with RT_IMAGE_P3 or RT_IMAGE_P6. */
-RT_API rt_status rt_ppm_save(const char *path, const rt_image *image,
-                             rt_ppm_format format, rt_error *error);
 
 /* Parses a P3 or P6 image from `length` bytes at `data` into a new image
  * (free it with rt_image_release).  `name` is used in messages ("<memory>"

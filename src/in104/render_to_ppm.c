@@ -98,7 +98,7 @@ int renderToPPM(const scene *s, const char *ppmFile)
         status = rt_render(built, NULL, &image, NULL);
     rt_error error;
     if (status == RT_OK) {
-        status = rt_ppm_save(ppmFile, &image, RT_PPM_P3, &error);
+        status = rt_image_save(ppmFile, &image, RT_IMAGE_P3, &error);
         if (status != RT_OK)
             fail(status, error.message);
     } else {
