@@ -102,7 +102,7 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     char *path = rt_test_join(dir, "missing/out.ppm");
     rt_image image = rt_test_pattern(8, 8);
     rt_error error;
-    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, &error),
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error),
                      RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     char expected[PATH_MAX + 128];
@@ -116,14 +116,15 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     char *file = rt_test_join(dir, "plain");
     rt_test_write_bytes(file, "x", 1);
     char *through = rt_test_join(dir, "plain/out.ppm");
-    ck_assert_int_eq(rt_image_save(through, &image, RT_IMAGE_P6, &error),
+    ck_assert_int_eq(rt_image_save(through, &image, RT_IMAGE_P6, NULL, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "plain/ is not a folder"));
     rt_test_assert_dir_holds(dir, "plain");
     /* a read-only directory, when permissions apply to this user */
     ck_assert_int_eq(chmod(dir, 0555), 0);
     char *in_readonly = rt_test_join(dir, "out.ppm");
-    rt_status status = rt_image_save(in_readonly, &image, RT_IMAGE_P6, &error);
+    rt_status status =
+        rt_image_save(in_readonly, &image, RT_IMAGE_P6, NULL, &error);
     ck_assert_int_eq(chmod(dir, 0755), 0);
     if (geteuid() != 0) {
         ck_assert_int_eq(status, RT_ERR_IO);
@@ -148,7 +149,7 @@ START_TEST(save_over_a_directory_fails_and_removes_its_temporary_file)
     ck_assert_int_eq(mkdir(target, 0755), 0);
     rt_image image = rt_test_pattern(8, 8);
     rt_error error;
-    ck_assert_int_eq(rt_image_save(target, &image, RT_IMAGE_P6, &error),
+    ck_assert_int_eq(rt_image_save(target, &image, RT_IMAGE_P6, NULL, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "cannot write the image"));
     rt_test_assert_dir_holds(dir, "image.ppm");
@@ -175,7 +176,7 @@ START_TEST(save_to_the_longest_file_name_works)
     char *path = rt_test_join(dir, name);
     rt_image image = rt_test_pattern(3, 2);
     rt_error error;
-    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error);
     char *names = rt_test_dir_names(dir);
     ck_assert_ptr_nonnull(names);
     rt_image_release(&image);
@@ -199,7 +200,7 @@ static int save_must_fail(const char *dir, char *message, size_t size)
         return 2;
     }
     rt_error error;
-    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error);
     rt_image_release(&image);
     snprintf(message, size, "%s", status == RT_OK ? "saved" : error.message);
     return status == RT_ERR_IO ? 0 : 1;

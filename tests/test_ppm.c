@@ -249,7 +249,7 @@ START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
     for (int format = 0; format < 2; format++) {
         rt_error error;
         rt_status status = rt_image_save(
-            path, &image, format ? RT_IMAGE_P6 : RT_IMAGE_P3, &error);
+            path, &image, format ? RT_IMAGE_P6 : RT_IMAGE_P3, NULL, &error);
         ck_assert_msg(status == RT_OK, "%s", error.message);
         rt_test_assert_dir_holds(dir, "out.ppm");
         rt_image back;
@@ -278,7 +278,8 @@ START_TEST(save_replaces_an_existing_file)
     unsigned char *memory;
     rt_image image = make_pattern(2, 2, 0, &memory);
     rt_error error;
-    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, &error), RT_OK);
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error),
+                     RT_OK);
     rt_image back;
     rt_status status = rt_ppm_load(path, &back, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
@@ -299,7 +300,7 @@ START_TEST(save_to_a_missing_directory_fails_and_leaves_nothing)
     rt_image image = make_pattern(2, 2, 0, &memory);
     rt_error error;
     memset(&error, 0, sizeof error);
-    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P3, &error),
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P3, NULL, &error),
                      RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     ck_assert_msg(strstr(error.message, path) != NULL,

@@ -44,15 +44,21 @@
  *     error naming the path and the reason; nothing is created.
  *
  * The temporary file is removed on every failure; a stream or descriptor
- * that fails half-way keeps what was written before the failure.  While the
- * temporary file exists the calling thread blocks SIGINT, SIGTERM and
- * SIGHUP; if one arrives, the
- * temporary file is removed, the target is left as it was, the signal mask is
- * restored (so the signal then takes its usual effect: a program that keeps
- * the default action ends, killed by it) and the call returns
- * RT_ERR_INTERRUPTED.  A program with other threads should block those
- * signals in them, or a signal sent to the process may be taken by another
- * thread while a save is under way.
+ * that fails half-way keeps what was written before the failure.
+ *
+ * Signals are the caller's (rt_save_options).  By default a save neither
+ * blocks nor polls any signal and installs no handler: a signal takes its
+ * usual effect at once, so a program killed during a save may leave its
+ * temporary file behind (the target itself is still either the complete
+ * old file or the complete new one).  A program that asks for
+ * hold_termination_signals has SIGINT, SIGTERM and SIGHUP (those it does
+ * not ignore) blocked in the calling thread while the temporary file
+ * exists; if one arrives, the temporary file is removed, the target is
+ * left as it was, the signal mask is restored (so the signal then takes
+ * its usual effect: a program that keeps the default action ends, killed
+ * by it) and the call returns RT_ERR_INTERRUPTED.  Such a program should
+ * block those signals in its other threads, or a signal sent to the
+ * process may be taken by another thread while a save is under way.
  *
  * Readers accept P3 and P6 with maxval 255 (what the writers produce) from
  * memory or a path.  All functions are thread-safe on distinct images and
@@ -146,15 +152,41 @@ RT_API rt_status rt_image_write_file(FILE *file, const rt_image *image,
                                      rt_image_format format, rt_error *error);
 
 /*
+ * How a save to a path treats the process (rt_save_options_init sets the
+ * defaults; the struct grows by the rule of raytrace/render.h: `size`
+ * first, fields beyond it keep their defaults, 0 or a size larger than
+ * the library's is refused with RT_ERR_ARGUMENT).
+ */
+typedef struct rt_save_options {
+    size_t size;                    /* sizeof(rt_save_options); set by
+                                       rt_save_options_init */
+    int hold_termination_signals;   /* non-zero: SIGINT, SIGTERM and SIGHUP
+                                       are held while a temporary file
+                                       exists, and one that arrives makes
+                                       the save return RT_ERR_INTERRUPTED
+                                       (the rule at the top of this header);
+                                       0 (the default): the signal mask and
+                                       the handlers are left alone */
+} rt_save_options;
+
+/* Sets size to sizeof(rt_save_options) and the defaults above (no signal
+ * held).  NULL: no-op.  Thread-safe. */
+RT_API void rt_save_options_init(rt_save_options *options);
+
+/*
  * Saves `image` in `format` at `path` following the rule at the top of this
- * header.  Returns RT_OK; RT_ERR_IO with a message naming the path and the
- * reason ("is a directory", "the folder ... does not exist", "Permission
- * denied", "No space left on device" ...); RT_ERR_FORMAT; RT_ERR_NOMEM;
- * RT_ERR_INTERRUPTED (a signal arrived: nothing was changed); or
- * RT_ERR_ARGUMENT.  Thread-safe on distinct paths.
+ * header, with `options` (NULL: the defaults).  Returns RT_OK; RT_ERR_IO
+ * with a message naming the path and the reason ("is a directory", "the
+ * folder ... does not exist", "Permission denied", "No space left on
+ * device" ...); RT_ERR_FORMAT; RT_ERR_NOMEM; RT_ERR_INTERRUPTED (only when
+ * the options hold the termination signals: one arrived, nothing was
+ * changed); or RT_ERR_ARGUMENT (no path or image, or options of a bad
+ * size).  Thread-safe on distinct paths.
  */
 RT_API rt_status rt_image_save(const char *path, const rt_image *image,
-                               rt_image_format format, rt_error *error);
+                               rt_image_format format,
+                               const rt_save_options *options,
+                               rt_error *error);
 
 /*
  * Checks, without rendering anything, that rt_image_save could write at
@@ -162,11 +194,15 @@ RT_API rt_status rt_image_save(const char *path, const rt_image *image,
  * and removed at once), or the device opens for writing, or the FIFO or
  * socket may be written to, or the descriptor is open for writing (its
  * offset untouched); a directory is refused.  Leaves nothing behind.
- * Returns RT_OK or what rt_image_save would return, with the same
+ * `options` are those the save will have (NULL: the defaults): when they
+ * hold the termination signals, so does the check while its probe file
+ * exists.  Returns RT_OK or what rt_image_save would return, with the same
  * messages.  Programs call it before a long render so that a bad output
  * fails in milliseconds.  Thread-safe.
  */
-RT_API rt_status rt_image_save_check(const char *path, rt_error *error);
+RT_API rt_status rt_image_save_check(const char *path,
+                                     const rt_save_options *options,
+                                     rt_error *error);
 
 /* Parses a P3 or P6 image from `length` bytes at `data` into a new image
  * (free it with rt_image_release).  `name` is used in messages ("<memory>"

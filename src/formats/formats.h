@@ -22,9 +22,11 @@ typedef struct rt_producer {
 
 /* Writes what `producer` produces at `path` by the rule of
  * raytrace/image.h (atomic replacement, streams written directly, links
- * followed, signals handled).  Errors name `path`. */
+ * followed), with `options` (NULL: the defaults; a bad size is
+ * RT_ERR_ARGUMENT) saying whether the termination signals are held.
+ * Errors name `path`. */
 rt_status rt__save(const char *path, const rt_producer *producer,
-                   rt_error *error);
+                   const rt_save_options *options, rt_error *error);
 
 /* Encodes `image` as PPM (RT_IMAGE_P3 or RT_IMAGE_P6) to the sink: RT_OK
  * or the bare status (the callers write the message). */

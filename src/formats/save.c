@@ -14,13 +14,16 @@
  * so the links stay one file.  What the path names, its symbolic links
  * followed to the final target, is save_target.c's (rt__save_resolve): the
  * temporary file lands beside that target and the rename replaces it, not
- * the link.  SIGINT, SIGTERM and SIGHUP are
- * blocked in the calling thread while a temporary file exists and polled
- * between writes, so an interrupted save removes its temporary file first.
+ * the link.  When the caller's rt_save_options ask for it
+ * (hold_termination_signals), SIGINT, SIGTERM and SIGHUP are blocked in the
+ * calling thread while a temporary file exists and polled between writes,
+ * so an interrupted save removes its temporary file first; by default the
+ * save leaves the signal mask and the handlers alone.
  */
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
+#include <stddef.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
@@ -67,6 +70,30 @@ static void termination_signals(sigset_t *set)
             action.sa_handler != SIG_IGN)
             sigaddset(set, watched[i]);
     }
+}
+
+/* The termination signals blocked while a temporary file exists, when the
+ * options ask (`held`), and the mask to restore. */
+typedef struct signal_hold {
+    int held;
+    sigset_t previous;
+} signal_hold;
+
+static void hold_signals(signal_hold *h, int held)
+{
+    h->held = held;
+    if (held) {
+        sigset_t signals;
+        termination_signals(&signals);
+        pthread_sigmask(SIG_BLOCK, &signals, &h->previous);
+    }
+}
+
+/* Restores the mask: a signal that came meanwhile is delivered now. */
+static void release_signals(const signal_hold *h)
+{
+    if (h->held)
+        pthread_sigmask(SIG_SETMASK, &h->previous, NULL);
 }
 
 /* A termination signal waiting for this thread or the process, or 0. */
@@ -156,6 +183,21 @@ static rt_status folder_error(rt_error *error, const char *path,
     return rt__error_set(error, RT_ERR_IO, path, 0, 0,
                          "cannot write the %s in the folder %s: %s",
                          noun, shown, strerror(saved));
+}
+
+/* The message for a temporary file that cannot be made beside `target`
+ * (errno `saved`). */
+static rt_status temporary_error(rt_error *error, const char *path,
+                                 const char *target, int saved,
+                                 const char *noun)
+{
+    char *folder = rt__save_folder_of(target);
+    rt_status status =
+        folder ? folder_error(error, path, folder, saved, noun)
+               : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                               "out of memory");
+    free(folder);
+    return status;
 }
 
 /*
@@ -293,42 +335,38 @@ static void sync_folder(const char *target)
     free(folder);
 }
 
-/* Nothing there or a regular file: through a temporary file. */
+/* Nothing there or a regular file: through a temporary file, the
+ * termination signals held meanwhile when `hold`. */
 static rt_status save_through_temporary(const char *path,
                                         const rt_save_target *d,
-                                        const rt_producer *producer,
+                                        const rt_producer *producer, int hold,
                                         rt_error *error)
 {
     fd_sink *s = malloc(sizeof *s);
     if (s == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                              "out of memory");
-    sigset_t signals, previous;
-    termination_signals(&signals);
-    pthread_sigmask(SIG_BLOCK, &signals, &previous);
+    signal_hold signals;
+    hold_signals(&signals, hold);
 
     rt_status status = RT_OK;
     char *temp = NULL;
     int fd = create_temporary(d->path, &temp);
     if (fd < 0) {
-        int saved = errno;
-        char *folder = rt__save_folder_of(d->path);
-        status = folder ? folder_error(error, path, folder, saved,
-                                       noun_of(producer))
-                        : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                                        "out of memory");
-        free(folder);
-        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+        status = temporary_error(error, path, d->path, errno,
+                                 noun_of(producer));
+        release_signals(&signals);
         free(s);
         return status;
     }
-    *s = (fd_sink){.fd = fd, .watch_signals = 1};
+    *s = (fd_sink){.fd = fd, .watch_signals = hold};
     if (d->kind == RT__TARGET_REGULAR)
         keep_attributes(fd, &d->st);
     status = encode(s, producer, error);
     if (status == RT_OK && fsync(fd) != 0)
         status = RT_ERR_IO, s->error = errno;
-    if (status == RT_OK && (s->interrupted = pending_termination()) != 0)
+    if (status == RT_OK && hold &&
+        (s->interrupted = pending_termination()) != 0)
         status = RT_ERR_IO;
     if (status == RT_OK && d->kind == RT__TARGET_LINKED &&
         !copy_in_place(fd, d->path, s))
@@ -348,7 +386,7 @@ static rt_status save_through_temporary(const char *path,
     free(temp);
     free(s);
     /* A signal that came meanwhile is delivered now, the file in order. */
-    pthread_sigmask(SIG_SETMASK, &previous, NULL);
+    release_signals(&signals);
     return status;
 }
 
@@ -423,14 +461,46 @@ static int valid_image(const rt_image *image)
            image->height > 0 && image->stride >= (size_t)image->width * 3;
 }
 
+void rt_save_options_init(rt_save_options *options)
+{
+    if (options == NULL)
+        return;
+    memset(options, 0, sizeof *options);
+    options->size = sizeof *options;
+}
+
+/* Copies the caller's options into *out as far as the caller's size
+ * reaches; later fields keep their defaults (raytrace/render.h's rule for
+ * growing option structs).  NULL: the defaults. */
+static rt_status take_options(const rt_save_options *in, rt_save_options *out,
+                              const char *path, rt_error *error)
+{
+    rt_save_options_init(out);
+    if (in == NULL)
+        return RT_OK;
+    if (in->size == 0 || in->size > sizeof *out)
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "save options of %zu bytes: expected 1..%zu "
+                             "(set by rt_save_options_init)",
+                             in->size, sizeof *out);
+    if (offsetof(rt_save_options, hold_termination_signals) +
+            sizeof in->hold_termination_signals <= in->size)
+        out->hold_termination_signals = in->hold_termination_signals;
+    return RT_OK;
+}
+
 rt_status rt__save(const char *path, const rt_producer *producer,
-                   rt_error *error)
+                   const rt_save_options *options, rt_error *error)
 {
     if (path == NULL || path[0] == '\0' || producer == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
+    rt_save_options o;
+    rt_status status = take_options(options, &o, path, error);
+    if (status != RT_OK)
+        return status;
     rt_save_target d;
-    rt_status status = rt__save_resolve(path, &d, noun_of(producer), error);
+    status = rt__save_resolve(path, &d, noun_of(producer), error);
     /* A descriptor of this process: written through it, at its offset (at
      * the end when it appends), and left open; nothing is truncated or
      * replaced, so what the caller wrote before and writes after stays
@@ -440,7 +510,9 @@ rt_status rt__save(const char *path, const rt_producer *producer,
     else if (status == RT_OK)
         status = d.kind == RT__TARGET_STREAM || d.kind == RT__TARGET_SOCKET
                      ? save_to_stream(path, &d, producer, error)
-                     : save_through_temporary(path, &d, producer, error);
+                     : save_through_temporary(path, &d, producer,
+                                              o.hold_termination_signals,
+                                              error);
     free(d.path);
     return status;
 }
@@ -459,7 +531,8 @@ static rt_status produce_image(rt_write_func write, void *user,
 }
 
 rt_status rt_image_save(const char *path, const rt_image *image,
-                        rt_image_format format, rt_error *error)
+                        rt_image_format format,
+                        const rt_save_options *options, rt_error *error)
 {
     if (path == NULL || path[0] == '\0' || !valid_image(image))
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
@@ -468,16 +541,22 @@ rt_status rt_image_save(const char *path, const rt_image *image,
         return rt__image_format_refusal(format, error);
     image_bytes bytes = {image, format};
     rt_producer producer = {produce_image, &bytes, "image"};
-    return rt__save(path, &producer, error);
+    return rt__save(path, &producer, options, error);
 }
 
-rt_status rt_image_save_check(const char *path, rt_error *error)
+rt_status rt_image_save_check(const char *path,
+                              const rt_save_options *options,
+                              rt_error *error)
 {
     if (path == NULL || path[0] == '\0')
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
+    rt_save_options o;
+    rt_status status = take_options(options, &o, path, error);
+    if (status != RT_OK)
+        return status;
     rt_save_target d;
-    rt_status status = rt__save_resolve(path, &d, "image", error);
+    status = rt__save_resolve(path, &d, "image", error);
     if (status != RT_OK) {
         free(d.path);
         return status;
@@ -497,27 +576,21 @@ rt_status rt_image_save_check(const char *path, rt_error *error)
         if (d.kind == RT__TARGET_LINKED &&
             (fd = open(d.path, O_WRONLY | O_CLOEXEC | O_NOCTTY)) < 0)
             status = cannot_open(error, path);
-        /* The probe exists only between two calls: no signal may end the
-         * program in between, leaving it behind. */
-        sigset_t signals, previous;
-        termination_signals(&signals);
-        pthread_sigmask(SIG_BLOCK, &signals, &previous);
+        /* The probe exists only between two calls: when the options hold
+         * the signals, none may end the program in between, leaving it
+         * behind. */
+        signal_hold signals;
+        hold_signals(&signals, o.hold_termination_signals);
         char *temp = NULL;
         int probe = status == RT_OK ? create_temporary(d.path, &temp) : 0;
         if (probe < 0) {
-            int saved = errno;
-            char *folder = rt__save_folder_of(d.path);
-            status = folder ? folder_error(error, path, folder, saved,
-                                           "image")
-                            : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                                            "out of memory");
-            free(folder);
+            status = temporary_error(error, path, d.path, errno, "image");
         } else if (status == RT_OK) {
             close(probe);
             unlink(temp);
             free(temp);
         }
-        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+        release_signals(&signals);
     }
     if (fd >= 0)
         close(fd);
