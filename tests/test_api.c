@@ -215,23 +215,24 @@ static int refuse(void *user, const void *data, size_t size)
     return 0;
 }
 
-START_TEST(ppm_writers_fill_the_error)
+START_TEST(ppm_writing_fills_the_error)
 {
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, 2, 2, NULL), RT_OK);
     rt_error error;
-    ck_assert_int_eq(rt_ppm_write_to(refuse, NULL, &image, RT_PPM_P6, &error),
+    ck_assert_int_eq(rt_image_write_to(refuse, NULL, &image, RT_IMAGE_P6,
+                                       &error),
                      RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     ck_assert_str_ne(error.message, "");
-    ck_assert_int_eq(rt_ppm_write_to(refuse, NULL, &image, (rt_ppm_format)5,
-                                     &error),
+    ck_assert_int_eq(rt_image_write_to(refuse, NULL, &image,
+                                       (rt_image_format)5, &error),
                      RT_ERR_FORMAT);
-    assert_reported(&error, RT_ERR_FORMAT, "found format 5");
-    ck_assert_int_eq(rt_ppm_write_file(NULL, &image, RT_PPM_P3, &error),
+    assert_reported(&error, RT_ERR_FORMAT, "format 5");
+    ck_assert_int_eq(rt_image_write_file(NULL, &image, RT_IMAGE_P3, &error),
                      RT_ERR_ARGUMENT);
     assert_reported(&error, RT_ERR_ARGUMENT, "stream");
-    ck_assert_int_eq(rt_ppm_write_file(NULL, &image, RT_PPM_P3, NULL),
+    ck_assert_int_eq(rt_image_write_file(NULL, &image, RT_IMAGE_P3, NULL),
                      RT_ERR_ARGUMENT);
     rt_image_release(&image);
 }
@@ -268,7 +269,7 @@ static Suite *api_suite(void)
     tcase_add_test(tc, bad_render_options_say_what_is_wrong);
     tcase_add_test(tc, cancelled_render_says_so);
     tcase_add_test(tc, image_init_refuses_bad_sides_with_the_sizes);
-    tcase_add_test(tc, ppm_writers_fill_the_error);
+    tcase_add_test(tc, ppm_writing_fills_the_error);
     tcase_add_test(tc, format_from_path_names_the_path);
     suite_add_tcase(suite, tc);
     return suite;

@@ -110,7 +110,34 @@ static rt_status view_into(rt_image view, rt_error *error)
 
 static rt_status save_view(rt_image view, rt_error *error)
 {
-    return rt_image_save("/dev/null", &view, RT_IMAGE_P6, error);
+    return rt_image_save("/dev/null", &view, RT_IMAGE_P6, NULL, error);
+}
+
+/* Save options of `size` bytes, the rest their defaults. */
+static rt_save_options save_options_of(size_t size)
+{
+    rt_save_options options;
+    rt_save_options_init(&options);
+    options.size = size;
+    return options;
+}
+
+static rt_status save_sized(size_t size, rt_error *error)
+{
+    rt_save_options options = save_options_of(size);
+    return rt_image_save("/dev/null", &image, RT_IMAGE_P6, &options, error);
+}
+
+static rt_status check_sized(size_t size, rt_error *error)
+{
+    rt_save_options options = save_options_of(size);
+    return rt_image_save_check("/dev/null", &options, error);
+}
+
+static rt_status save_scene_sized(size_t size, rt_error *error)
+{
+    rt_save_options options = save_options_of(size);
+    return rt_scene_save_scn(scene, "/dev/null", 0, NULL, &options, error);
 }
 
 #define NULL_CASES(X)                                                        \
@@ -127,23 +154,29 @@ static rt_status save_view(rt_image view, rt_error *error)
       rt_image_write_file(NULL, &image, RT_IMAGE_P6, error))                 \
     X(n7, RT_ERR_ARGUMENT,                                                   \
       rt_image_write_file(sink_file, NULL, RT_IMAGE_P6, error))              \
-    X(n8, RT_ERR_ARGUMENT, rt_image_save(NULL, &image, RT_IMAGE_P6, error))  \
-    X(n9, RT_ERR_ARGUMENT, rt_image_save("", &image, RT_IMAGE_P6, error))    \
+    X(n8, RT_ERR_ARGUMENT,                                                   \
+      rt_image_save(NULL, &image, RT_IMAGE_P6, NULL, error))                 \
+    X(n9, RT_ERR_ARGUMENT,                                                   \
+      rt_image_save("", &image, RT_IMAGE_P6, NULL, error))                   \
     X(n10, RT_ERR_ARGUMENT,                                                  \
-      rt_image_save("/dev/null", NULL, RT_IMAGE_P6, error))                  \
+      rt_image_save("/dev/null", NULL, RT_IMAGE_P6, NULL, error))            \
     X(n11, RT_ERR_ARGUMENT, save_view(no_pixels(), error))                   \
-    X(n12, RT_ERR_ARGUMENT, rt_image_save_check(NULL, error))                \
-    X(n13, RT_ERR_ARGUMENT, rt_image_save_check("", error))                  \
+    X(n12, RT_ERR_ARGUMENT,                                                  \
+      rt_image_save_check(NULL, NULL, error))                                \
+    X(n13, RT_ERR_ARGUMENT,                                                  \
+      rt_image_save_check("", NULL, error))                                  \
     X(n14, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_to(NULL, NULL, &image, RT_PPM_P6, error))                 \
+      rt_image_write_to(NULL, NULL, &image, RT_IMAGE_P3, error))             \
     X(n15, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_to(sink, NULL, NULL, RT_PPM_P3, error))                   \
+      rt_image_write_to(sink, NULL, NULL, RT_IMAGE_P3, error))               \
     X(n16, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_file(NULL, &image, RT_PPM_P6, error))                     \
+      rt_image_write_file(NULL, &image, RT_IMAGE_P3, error))                 \
     X(n17, RT_ERR_ARGUMENT,                                                  \
-      rt_ppm_write_file(sink_file, NULL, RT_PPM_P6, error))                  \
-    X(n18, RT_ERR_ARGUMENT, rt_ppm_save(NULL, &image, RT_PPM_P6, error))     \
-    X(n19, RT_ERR_ARGUMENT, rt_ppm_save("/dev/null", NULL, RT_PPM_P6, error))\
+      rt_image_write_file(sink_file, NULL, RT_IMAGE_P3, error))              \
+    X(n18, RT_ERR_ARGUMENT,                                                  \
+      rt_image_save(NULL, &image, RT_IMAGE_P3, NULL, error))                 \
+    X(n19, RT_ERR_ARGUMENT,                                                  \
+      rt_image_save("/dev/null", NULL, RT_IMAGE_P3, NULL, error))            \
     X(n20, RT_ERR_ARGUMENT, rt_ppm_parse(NULL, 10, NULL, &out_image, error)) \
     X(n21, RT_ERR_ARGUMENT,                                                  \
       rt_ppm_parse(ppm_text, sizeof ppm_text - 1, NULL, NULL, error))        \
@@ -195,8 +228,9 @@ static rt_status save_view(rt_image view, rt_error *error)
     X(n49, RT_ERR_ARGUMENT,                                                  \
       rt_scene_write_scn(scene, 0, NULL, NULL, NULL, error))                 \
     X(n50, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_save_scn(NULL, "/dev/null", 0, NULL, error))                  \
-    X(n51, RT_ERR_ARGUMENT, rt_scene_save_scn(scene, NULL, 0, NULL, error))  \
+      rt_scene_save_scn(NULL, "/dev/null", 0, NULL, NULL, error))            \
+    X(n51, RT_ERR_ARGUMENT,                                                  \
+      rt_scene_save_scn(scene, NULL, 0, NULL, NULL, error))                  \
     /* raytrace/explain.h */                                                 \
     X(n52, RT_ERR_ARGUMENT,                                                  \
       rt_explain_pixel(NULL, NULL, 0, 0, -1, &out_tree, error))              \
@@ -217,14 +251,19 @@ static rt_status save_view(rt_image view, rt_error *error)
     X(r4, RT_ERR_FORMAT,                                                     \
       rt_image_write_file(sink_file, &image, (rt_image_format)-1, error))    \
     X(r5, RT_ERR_FORMAT,                                                     \
-      rt_image_save("/dev/null", &image, (rt_image_format)99, error))        \
+      rt_image_save("/dev/null", &image, (rt_image_format)99, NULL, error))  \
     X(r6, RT_ERR_ARGUMENT, save_view(narrow_stride(), error))                \
     X(r7, RT_ERR_FORMAT,                                                     \
-      rt_ppm_write_to(sink, NULL, &image, (rt_ppm_format)5, error))          \
+      rt_image_write_to(sink, NULL, &image, (rt_image_format)5, error))      \
     X(r8, RT_ERR_FORMAT,                                                     \
-      rt_ppm_write_file(sink_file, &image, (rt_ppm_format)16, error))        \
+      rt_image_write_file(sink_file, &image, (rt_image_format)4, error))     \
     X(r9, RT_ERR_FORMAT,                                                     \
-      rt_ppm_save("/dev/null", &image, (rt_ppm_format)0, error))             \
+      rt_image_save("/dev/null", &image, (rt_image_format)0, NULL, error))   \
+    X(sv1, RT_ERR_ARGUMENT, save_sized(0, error))                            \
+    X(sv2, RT_ERR_ARGUMENT, save_sized(sizeof(rt_save_options) + 8, error))  \
+    X(sv3, RT_ERR_ARGUMENT, check_sized(0, error))                           \
+    X(sv4, RT_ERR_ARGUMENT,                                                  \
+      save_scene_sized(sizeof(rt_save_options) + 1, error))                  \
     X(r10, RT_ERR_ARGUMENT,                                                  \
       rt_scene_check_precision(scene, (rt_precision)7, error))               \
     X(r11, RT_ERR_ARGUMENT,                                                  \
@@ -547,6 +586,7 @@ START_TEST(functions_without_a_status_take_null_as_their_headers_say)
     rt_image_release(NULL);
     rt_render_options_init(NULL);
     rt_load_options_init(NULL);
+    rt_save_options_init(NULL);
     ck_assert_int_eq(rt_scene_source_count(NULL), 0);
     ck_assert_str_eq(rt_status_string((rt_status)99), "unknown status");
     ck_assert_str_eq(rt_image_format_name((rt_image_format)99), "unknown");

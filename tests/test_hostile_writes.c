@@ -53,17 +53,17 @@ static int failing_write(void *user, const void *data, size_t size)
 START_TEST(failing_sink_stops_the_writer_with_an_io_error)
 {
     rt_image image = rt_test_pattern(37, 11);
-    rt_ppm_format formats[2] = {RT_PPM_P3, RT_PPM_P6};
+    rt_image_format formats[2] = {RT_IMAGE_P3, RT_IMAGE_P6};
     for (int f = 0; f < 2; f++) {
         failing_sink count = {0, INT_MAX, 0, 0};
-        ck_assert_int_eq(rt_ppm_write_to(failing_write, &count, &image,
-                                         formats[f], NULL),
+        ck_assert_int_eq(rt_image_write_to(failing_write, &count, &image,
+                                           formats[f], NULL),
                          RT_OK);
         ck_assert_int_gt(count.calls, 2);
         for (int n = 0; n < count.calls; n++) {
             failing_sink s = {0, n, 0, 0};
-            ck_assert_int_eq(rt_ppm_write_to(failing_write, &s, &image,
-                                             formats[f], NULL),
+            ck_assert_int_eq(rt_image_write_to(failing_write, &s, &image,
+                                               formats[f], NULL),
                              RT_ERR_IO);
             ck_assert_msg(s.calls_after_failure == 0,
                           "P%d: the writer went on after the sink failed "
@@ -75,11 +75,11 @@ START_TEST(failing_sink_stops_the_writer_with_an_io_error)
 END_TEST
 
 /*
- * rt_ppm_write_file on a full device: the bytes sit in the FILE's buffer,
+ * rt_image_write_file on a full device: the bytes sit in the FILE's buffer,
  * so success can only be known after a flush.  A writer that answers RT_OK
  * when nothing reached the device lets a caller believe an image was saved.
  */
-START_TEST(ppm_write_file_reports_a_full_device)
+START_TEST(image_write_file_reports_a_full_device)
 {
     FILE *full = fopen("/dev/full", "wb");
     if (full == NULL) {
@@ -87,7 +87,7 @@ START_TEST(ppm_write_file_reports_a_full_device)
         return;
     }
     rt_image image = rt_test_pattern(4, 4);
-    rt_status status = rt_ppm_write_file(full, &image, RT_PPM_P6, NULL);
+    rt_status status = rt_image_write_file(full, &image, RT_IMAGE_P6, NULL);
     fclose(full);
     rt_image_release(&image);
     ck_assert_msg(status == RT_ERR_IO,
@@ -102,7 +102,8 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     char *path = rt_test_join(dir, "missing/out.ppm");
     rt_image image = rt_test_pattern(8, 8);
     rt_error error;
-    ck_assert_int_eq(rt_ppm_save(path, &image, RT_PPM_P6, &error), RT_ERR_IO);
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error),
+                     RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     char expected[PATH_MAX + 128];
     snprintf(expected, sizeof expected,
@@ -115,14 +116,15 @@ START_TEST(save_into_a_missing_directory_leaves_nothing)
     char *file = rt_test_join(dir, "plain");
     rt_test_write_bytes(file, "x", 1);
     char *through = rt_test_join(dir, "plain/out.ppm");
-    ck_assert_int_eq(rt_ppm_save(through, &image, RT_PPM_P6, &error),
+    ck_assert_int_eq(rt_image_save(through, &image, RT_IMAGE_P6, NULL, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "plain/ is not a folder"));
     rt_test_assert_dir_holds(dir, "plain");
     /* a read-only directory, when permissions apply to this user */
     ck_assert_int_eq(chmod(dir, 0555), 0);
     char *in_readonly = rt_test_join(dir, "out.ppm");
-    rt_status status = rt_ppm_save(in_readonly, &image, RT_PPM_P6, &error);
+    rt_status status =
+        rt_image_save(in_readonly, &image, RT_IMAGE_P6, NULL, &error);
     ck_assert_int_eq(chmod(dir, 0755), 0);
     if (geteuid() != 0) {
         ck_assert_int_eq(status, RT_ERR_IO);
@@ -147,7 +149,7 @@ START_TEST(save_over_a_directory_fails_and_removes_its_temporary_file)
     ck_assert_int_eq(mkdir(target, 0755), 0);
     rt_image image = rt_test_pattern(8, 8);
     rt_error error;
-    ck_assert_int_eq(rt_ppm_save(target, &image, RT_PPM_P6, &error),
+    ck_assert_int_eq(rt_image_save(target, &image, RT_IMAGE_P6, NULL, &error),
                      RT_ERR_IO);
     ck_assert_ptr_nonnull(strstr(error.message, "cannot write the image"));
     rt_test_assert_dir_holds(dir, "image.ppm");
@@ -174,7 +176,7 @@ START_TEST(save_to_the_longest_file_name_works)
     char *path = rt_test_join(dir, name);
     rt_image image = rt_test_pattern(3, 2);
     rt_error error;
-    rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error);
     char *names = rt_test_dir_names(dir);
     ck_assert_ptr_nonnull(names);
     rt_image_release(&image);
@@ -198,7 +200,7 @@ static int save_must_fail(const char *dir, char *message, size_t size)
         return 2;
     }
     rt_error error;
-    rt_status status = rt_ppm_save(path, &image, RT_PPM_P6, &error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error);
     rt_image_release(&image);
     snprintf(message, size, "%s", status == RT_OK ? "saved" : error.message);
     return status == RT_ERR_IO ? 0 : 1;
@@ -325,7 +327,7 @@ static Suite *hostile_writes_suite(void)
     TCase *tc = tcase_create("nothing lost");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, failing_sink_stops_the_writer_with_an_io_error);
-    tcase_add_test(tc, ppm_write_file_reports_a_full_device);
+    tcase_add_test(tc, image_write_file_reports_a_full_device);
     tcase_add_test(tc, save_into_a_missing_directory_leaves_nothing);
     tcase_add_test(tc, save_over_a_directory_fails_and_removes_its_temporary_file);
     tcase_add_test(tc, save_to_the_longest_file_name_works);

@@ -52,16 +52,16 @@ static void assert_same_pixels(const rt_image *a, const rt_image *b)
                   differing, worst);
 }
 
-static void round_trip(rt_ppm_format format, int w, int h)
+static void round_trip(rt_image_format format, int w, int h)
 {
     unsigned char *memory;
     rt_image image = make_pattern(w, h, 5, &memory);
     buffer out = {{NULL, 0, 0}, -1};
-    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, format, NULL),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_image_write_to(buffer_write, &out, &image, format, NULL), RT_OK);
     ck_assert_uint_ge(out.bytes.size, 2);
     ck_assert_int_eq(out.bytes.data[0], 'P');
-    ck_assert_int_eq(out.bytes.data[1], format == RT_PPM_P3 ? '3' : '6');
+    ck_assert_int_eq(out.bytes.data[1], format == RT_IMAGE_P3 ? '3' : '6');
     rt_image back;
     rt_error error;
     rt_status status = rt_ppm_parse(out.bytes.data, out.bytes.size, "<sink>",
@@ -75,15 +75,15 @@ static void round_trip(rt_ppm_format format, int w, int h)
 
 START_TEST(p3_written_to_a_sink_reads_back_identical)
 {
-    round_trip(RT_PPM_P3, 23, 7);
-    round_trip(RT_PPM_P3, 1, 1);
+    round_trip(RT_IMAGE_P3, 23, 7);
+    round_trip(RT_IMAGE_P3, 1, 1);
 }
 END_TEST
 
 START_TEST(p6_written_to_a_sink_reads_back_identical)
 {
-    round_trip(RT_PPM_P6, 23, 7);
-    round_trip(RT_PPM_P6, 1, 1);
+    round_trip(RT_IMAGE_P6, 23, 7);
+    round_trip(RT_IMAGE_P6, 1, 1);
 }
 END_TEST
 
@@ -92,8 +92,8 @@ START_TEST(p6_output_is_header_then_exactly_the_pixels)
     unsigned char *memory;
     rt_image image = make_pattern(4, 3, 7, &memory);
     buffer out = {{NULL, 0, 0}, -1};
-    ck_assert_int_eq(rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P6,
-                                     NULL),
+    ck_assert_int_eq(rt_image_write_to(buffer_write, &out, &image,
+                                       RT_IMAGE_P6, NULL),
                      RT_OK);
     const char *header = "P6\n4 3\n255\n";
     size_t header_size = strlen(header);
@@ -122,8 +122,8 @@ START_TEST(p3_lines_are_at_most_70_characters)
                 memset(rt_image_pixel(&image, 0, y), 255, 40 * 3);
         buffer out = {{NULL, 0, 0}, -1};
         ck_assert_int_eq(
-            rt_ppm_write_to(buffer_write, &out, &image, RT_PPM_P3,
-                            NULL), RT_OK);
+            rt_image_write_to(buffer_write, &out, &image, RT_IMAGE_P3,
+                              NULL), RT_OK);
         size_t line_length = 0, longest = 0, lines = 0;
         for (size_t i = 0; i < out.bytes.size; i++) {
             if (out.bytes.data[i] == '\n') {
@@ -152,8 +152,8 @@ START_TEST(failing_sink_makes_the_writer_fail)
     for (int format = 0; format < 2; format++) {
         for (int after = 0; after < 3; after++) {
             buffer out = {{NULL, 0, 0}, after};
-            rt_status status = rt_ppm_write_to(
-                buffer_write, &out, &image, format ? RT_PPM_P6 : RT_PPM_P3,
+            rt_status status = rt_image_write_to(
+                buffer_write, &out, &image, format ? RT_IMAGE_P6 : RT_IMAGE_P3,
                 NULL);
             /* a writer that made fewer calls than `after` + 1 has not met
              * the failure */
@@ -248,8 +248,8 @@ START_TEST(save_writes_a_complete_file_and_leaves_no_temporary)
     rt_image image = make_pattern(31, 17, 2, &memory);
     for (int format = 0; format < 2; format++) {
         rt_error error;
-        rt_status status = rt_ppm_save(path, &image,
-                                       format ? RT_PPM_P6 : RT_PPM_P3, &error);
+        rt_status status = rt_image_save(
+            path, &image, format ? RT_IMAGE_P6 : RT_IMAGE_P3, NULL, &error);
         ck_assert_msg(status == RT_OK, "%s", error.message);
         rt_test_assert_dir_holds(dir, "out.ppm");
         rt_image back;
@@ -278,7 +278,8 @@ START_TEST(save_replaces_an_existing_file)
     unsigned char *memory;
     rt_image image = make_pattern(2, 2, 0, &memory);
     rt_error error;
-    ck_assert_int_eq(rt_ppm_save(path, &image, RT_PPM_P6, &error), RT_OK);
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error),
+                     RT_OK);
     rt_image back;
     rt_status status = rt_ppm_load(path, &back, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
@@ -299,7 +300,8 @@ START_TEST(save_to_a_missing_directory_fails_and_leaves_nothing)
     rt_image image = make_pattern(2, 2, 0, &memory);
     rt_error error;
     memset(&error, 0, sizeof error);
-    ck_assert_int_eq(rt_ppm_save(path, &image, RT_PPM_P3, &error), RT_ERR_IO);
+    ck_assert_int_eq(rt_image_save(path, &image, RT_IMAGE_P3, NULL, &error),
+                     RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     ck_assert_msg(strstr(error.message, path) != NULL,
                   "message does not name the path: \"%s\"", error.message);

@@ -110,7 +110,8 @@ static void check_expected_image(const char *name, int samples,
             }
         char out[300];
         snprintf(out, sizeof out, "%s.actual.ppm", expected_name);
-        rt_status saved = rt_ppm_save(out, &actual, RT_PPM_P6, &error);
+        rt_status saved =
+            rt_image_save(out, &actual, RT_IMAGE_P6, NULL, &error);
         ck_abort_msg("%s: %ld of %d pixels differ from tests/expected/%s.ppm, "
                      "max channel difference %d, in x %d..%d y %d..%d; "
                      "actual vs expected:%s actual image %s %s",

@@ -63,7 +63,8 @@ static int save_with_umask(void *arg, char *note, size_t size)
     if (rt_test_make_pattern(&image, 5, 3) != RT_OK)
         return rt_test_say(1, note, size, "no memory for the image");
     rt_error error = {0};
-    rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P6, &error);
+    rt_status status =
+        rt_image_save(c->path, &image, RT_IMAGE_P6, NULL, &error);
     rt_image_release(&image);
     return status == RT_OK ? 0 : rt_test_say(1, note, size, "%s",
                                              error.message);
@@ -266,7 +267,8 @@ START_TEST(a_loop_of_links_is_an_io_error_naming_the_path)
         rt_error error;
         rt_test_save_refused(paths[i], strerror(ELOOP), &error);
         rt_error check = {0};
-        ck_assert_int_eq(rt_image_save_check(paths[i], &check), RT_ERR_IO);
+        ck_assert_int_eq(rt_image_save_check(paths[i], NULL, &check),
+                         RT_ERR_IO);
         ck_assert_str_eq(check.message, error.message);
     }
     rt_test_assert_link(one.s, "two");
@@ -297,7 +299,8 @@ static void assert_streamed(const char *dir, const char *name,
     rt_test_child reader = rt_test_child_start(job, arg);
     ck_assert_int_gt(reader.pid, 0);
     rt_error error = {0};
-    rt_status status = rt_image_save(path.s, &image, RT_IMAGE_P6, &error);
+    rt_status status =
+        rt_image_save(path.s, &image, RT_IMAGE_P6, NULL, &error);
     rt_image_release(&image);
     if (rt_test_file_kind(path.s) != kind)
         kill(reader.pid, SIGKILL);  /* it waits for a writer that is gone */
@@ -414,8 +417,9 @@ static int save_without_permission(void *arg, char *note, size_t size)
     for (int i = 0; i < 2; i++) {
         rt_test_path path = rt_test_path_at(dir, names[i]);
         rt_error error = {0}, check = {0};
-        rt_status status = rt_image_save(path.s, &image, RT_IMAGE_P6, &error);
-        rt_status checked = rt_image_save_check(path.s, &check);
+        rt_status status =
+            rt_image_save(path.s, &image, RT_IMAGE_P6, NULL, &error);
+        rt_status checked = rt_image_save_check(path.s, NULL, &check);
         if (status != RT_ERR_IO || !strstr(error.message, path.s) ||
             !strstr(error.message, strerror(EACCES))) {
             rt_image_release(&image);
@@ -479,7 +483,7 @@ START_TEST(save_check_accepts_what_can_be_written_and_creates_nothing)
                             dangling};
     for (int i = 0; i < 5; i++) {
         rt_error error = {0};
-        rt_status status = rt_image_save_check(paths[i].s, &error);
+        rt_status status = rt_image_save_check(paths[i].s, NULL, &error);
         ck_assert_msg(status == RT_OK, "checking %s: %s", paths[i].s,
                       error.message);
     }
@@ -507,9 +511,9 @@ START_TEST(save_check_refuses_what_the_save_refuses_with_its_message)
     rt_image image = rt_test_pattern(3, 3);
     for (int i = 0; i < 4; i++) {
         rt_error check = {0}, error = {0};
-        rt_status checked = rt_image_save_check(paths[i].s, &check);
+        rt_status checked = rt_image_save_check(paths[i].s, NULL, &check);
         rt_status status = rt_image_save(paths[i].s, &image, RT_IMAGE_P6,
-                                         &error);
+                                         NULL, &error);
         ck_assert_msg(checked == RT_ERR_IO && status == RT_ERR_IO,
                       "%s: the check returned %s, the save %s", paths[i].s,
                       rt_status_string(checked), rt_status_string(status));

@@ -124,9 +124,10 @@ static int save_to_device(void *arg, char *note, size_t size)
     if (rt_test_make_pattern(&image, 64, 48) != RT_OK)
         return rt_test_say(1, note, size, "no memory for the image");
     rt_error error = {0}, check = {0};
-    rt_status status = rt_image_save(c->path, &image, RT_IMAGE_P3, &error);
+    rt_status status =
+        rt_image_save(c->path, &image, RT_IMAGE_P3, NULL, &error);
     /* the check only opens the device: a full one passes */
-    rt_status checked = rt_image_save_check(c->path, &check);
+    rt_status checked = rt_image_save_check(c->path, NULL, &check);
     rt_image_release(&image);
     if (status != c->expected ||
         (status != RT_OK && (error.status != status ||
@@ -186,7 +187,7 @@ static int save_to_dev_stdout(void *arg, char *note, size_t size)
     rt_test_child reader = rt_test_child_start(rt_test_copy_job, &copy);
     close(fds[0]);
     rt_error error = {0};
-    status = rt_image_save("/dev/stdout", &image, RT_IMAGE_P6, &error);
+    status = rt_image_save("/dev/stdout", &image, RT_IMAGE_P6, NULL, &error);
     close(1);
     char reader_note[1024];
     int wait_status = reader.pid > 0
@@ -261,8 +262,8 @@ static int refused_read_only(const char *path, char *note, size_t size)
     if (rt_test_make_pattern(&image, 8, 8) != RT_OK)
         return rt_test_say(1, note, size, "no memory for the image");
     rt_error error = {0}, check = {0};
-    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &error);
-    rt_status checked = rt_image_save_check(path, &check);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &error);
+    rt_status checked = rt_image_save_check(path, NULL, &check);
     rt_image_release(&image);
     if (status != RT_ERR_IO || !strstr(error.message, path) ||
         !strstr(error.message, strerror(EROFS)))

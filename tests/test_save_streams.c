@@ -122,7 +122,7 @@ static void write_text_fd(int fd, const char *text)
 static void save_ok(const char *path, const rt_image *image)
 {
     rt_error error = {0};
-    rt_status status = rt_image_save(path, image, RT_IMAGE_P6, &error);
+    rt_status status = rt_image_save(path, image, RT_IMAGE_P6, NULL, &error);
     ck_assert_msg(status == RT_OK, "saving to %s: %s", path, error.message);
 }
 
@@ -296,7 +296,7 @@ START_TEST(a_scene_saved_to_dev_fd_goes_through_the_descriptor)
     int fd = open(file, O_WRONLY | O_APPEND);
     ck_assert_int_ge(fd, 0);
     rt_status status = rt_scene_save_scn(scene, fd_name("/dev/fd/%d", fd).s,
-                                         0, NULL, &error);
+                                         0, NULL, NULL, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     write_text_fd(fd, "# after\n");
     close(fd);
@@ -313,8 +313,8 @@ static void assert_refused(const char *path, const char *reason)
 {
     rt_image image = rt_test_pattern(4, 4);
     rt_error saved = {0}, checked = {0};
-    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, &saved);
-    rt_status check = rt_image_save_check(path, &checked);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, &saved);
+    rt_status check = rt_image_save_check(path, NULL, &checked);
     rt_image_release(&image);
     ck_assert_msg(status == RT_ERR_IO && check == RT_ERR_IO,
                   "%s: the save returned %s, the check %s", path,
@@ -361,8 +361,9 @@ START_TEST(the_check_accepts_an_open_descriptor_and_moves_nothing)
     ck_assert_int_ge(fd, 0);
     ck_assert_int_eq(lseek(fd, 3, SEEK_SET), 3);
     rt_error error = {0};
-    ck_assert_msg(rt_image_save_check(fd_name("/dev/fd/%d", fd).s, &error) ==
-                  RT_OK, "%s", error.message);
+    ck_assert_msg(rt_image_save_check(fd_name("/dev/fd/%d", fd).s, NULL,
+                                      &error) == RT_OK,
+                  "%s", error.message);
     ck_assert_int_eq(lseek(fd, 0, SEEK_CUR), 3);
     close(fd);
     assert_holds(file, "HEADER\n", NULL, "");
@@ -407,7 +408,7 @@ START_TEST(another_process_s_descriptor_has_its_file_rewritten_from_the_start)
     rt_image image = rt_test_pattern(5, 5);
     bytes expected = encode(&image);
     rt_error error = {0};
-    rt_status status = rt_image_save(name, &image, RT_IMAGE_P6, &error);
+    rt_status status = rt_image_save(name, &image, RT_IMAGE_P6, NULL, &error);
     close(wait_fds[1]);
     char note[64];
     ck_assert_int_ne(rt_test_child_finish(&holder, note, sizeof note), -1);
@@ -444,7 +445,8 @@ static int save_to_standard(void *arg, char *note, size_t size)
     memset(image.pixels, 0x5a, image.stride * 7);
     rt_error error = {0};
     ssize_t first = write(c->target, c->first, strlen(c->first));
-    rt_status status = rt_image_save(c->name, &image, RT_IMAGE_P6, &error);
+    rt_status status =
+        rt_image_save(c->name, &image, RT_IMAGE_P6, NULL, &error);
     ssize_t then = write(c->target, c->then, strlen(c->then));
     rt_image_release(&image);
     if (status != RT_OK)

@@ -219,9 +219,11 @@ static int check_before_render(cli_export *ex)
     rt_render_image_size(ex->scene, &whole, &ex->report.full_width,
                          &ex->report.full_height, NULL);
     rt_error error;
+    rt_save_options save = cli_save_options();
     if (rt_scene_check_precision(ex->scene, s->render.precision, &error) !=
             RT_OK ||
-        (!ex->to_stdout && rt_image_save_check(ex->output, &error) != RT_OK)) {
+        (!ex->to_stdout &&
+         rt_image_save_check(ex->output, &save, &error) != RT_OK)) {
         fprintf(stderr, "%s: %s\n", program, error.message);
         return EXIT_BAD_INPUT;
     }
@@ -283,10 +285,11 @@ static rt_status write_image(const cli_export *ex, const rt_image *image)
         return RT_ERR_IO;
     }
     rt_error error;
-    rt_status status = ex->to_stdout
-                           ? rt_image_write_file(stdout, image, format,
-                                                 &error)
-                           : rt_image_save(ex->output, image, format, &error);
+    rt_save_options save = cli_save_options();
+    rt_status status =
+        ex->to_stdout
+            ? rt_image_write_file(stdout, image, format, &error)
+            : rt_image_save(ex->output, image, format, &save, &error);
     if (status == RT_OK || status == RT_ERR_INTERRUPTED)
         return status;
     fprintf(stderr, "%s: %s%s\n", program, ex->to_stdout ? "<stdout>: " : "",

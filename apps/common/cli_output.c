@@ -142,6 +142,14 @@ static void stem_of(const char *path, char *stem, size_t size)
     snprintf(stem, size, "%.*s", (int)length, length ? base : "image");
 }
 
+rt_save_options cli_save_options(void)
+{
+    rt_save_options options;
+    rt_save_options_init(&options);
+    options.hold_termination_signals = 1;
+    return options;
+}
+
 int cli_keep_image(const char *program, const char *path,
                    const rt_image *image, rt_image_format format)
 {
@@ -174,7 +182,8 @@ int cli_keep_image(const char *program, const char *path,
             continue;
         }
         rt_error error;
-        if (rt_image_save(name, image, format, &error) == RT_OK) {
+        rt_save_options save = cli_save_options();
+        if (rt_image_save(name, image, format, &save, &error) == RT_OK) {
             fprintf(stderr, "%s: the image is kept in %s\n", program,
                     cli_printable(name, shown, sizeof shown));
             return 1;

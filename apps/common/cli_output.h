@@ -55,15 +55,22 @@ int cli_refuse_input_as_output(const char *program, const char *output,
                                const rt_scene *scene, const char *operand,
                                const char *what);
 
+/* The save options of every program (rt_image_save, rt_image_save_check,
+ * rt_scene_save_scn): the termination signals held while a temporary file
+ * exists, so that a program ended by Ctrl-C, kill or a closed terminal
+ * during a save leaves the old file and no temporary one
+ * (docs/saving-images.md, "Signals"). */
+rt_save_options cli_save_options(void);
+
 /*
  * Saves `image` (in `format`), whose save to `path` failed, under a new
  * name: first in path's folder (when path names a regular file, or
  * nothing yet), then in $TMPDIR (when set), then in /tmp; `path` NULL (an
  * image meant for standard output) starts at $TMPDIR, as "image".  The
  * name is claimed by creating it (mode 0600: it may sit in a shared /tmp)
- * and the image is saved over it with rt_image_save.  Prints on stderr
- * "PROGRAM: the image is kept in NAME" and returns 1; or "PROGRAM: the
- * image could not be kept either: REASON" and returns 0.
+ * and the image is saved over it with rt_image_save (cli_save_options).
+ * Prints on stderr "PROGRAM: the image is kept in NAME" and returns 1; or
+ * "PROGRAM: the image could not be kept either: REASON" and returns 0.
  */
 int cli_keep_image(const char *program, const char *path,
                    const rt_image *image, rt_image_format format);

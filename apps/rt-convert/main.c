@@ -103,10 +103,12 @@ static int write_scene(const rt_scene *scene, const char *out)
     rt_error error;
     unsigned dropped = 0;
     int to_stdout = strcmp(out, "-") == 0;
+    rt_save_options save = cli_save_options();
     rt_status status =
         to_stdout ? rt_scene_write_scn(scene, extended, write_to_stdout, NULL,
                                        &dropped, &error)
-                  : rt_scene_save_scn(scene, out, extended, &dropped, &error);
+                  : rt_scene_save_scn(scene, out, extended, &dropped, &save,
+                                      &error);
     if (status == RT_OK && to_stdout && fflush(stdout) != 0)
         status = RT_ERR_IO, snprintf(error.message, sizeof error.message,
                                      "<stdout>: cannot write the scene");

@@ -21,6 +21,7 @@
 #include <SDL.h>
 
 #include "cli.h"
+#include "cli_output.h"
 #include "raytrace/raytrace.h"
 #include "view_app.h"
 #include "view_scene.h"
@@ -105,8 +106,9 @@ static const cli_program program = {
 static int run_viewer(const view_app_options *options, const char *scene)
 {
     rt_error error;
-    if (options->output && rt_image_save_check(options->output, &error) !=
-                               RT_OK) {
+    rt_save_options save = cli_save_options();
+    if (options->output &&
+        rt_image_save_check(options->output, &save, &error) != RT_OK) {
         fprintf(stderr, PROGRAM ": %s\n", error.message);
         return 1;
     }

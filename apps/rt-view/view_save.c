@@ -93,8 +93,9 @@ int view_app_save(view_app *app, char *path, size_t size)
         view_app__show_message(app, clash);
     } else {
         rt_error error;
+        rt_save_options save = cli_save_options();
         rt_status status =
-            rt_image_save(path, &copy, app->options.format, &error);
+            rt_image_save(path, &copy, app->options.format, &save, &error);
         if (status == RT_OK) {
             saved = 1;
             if (!claimed)

@@ -11,7 +11,7 @@
  * (rt_image_format_supported says).  Every writer goes to a sink (a
  * callback); the FILE and path variants are thin wrappers.
  *
- * Saving to a path (rt_image_save, and rt_ppm_save over it) never damages
+ * Saving to a path (rt_image_save) never damages
  * what the path names.  The rule, by what the path names once symbolic
  * links are followed to their final target:
  *
@@ -44,15 +44,21 @@
  *     error naming the path and the reason; nothing is created.
  *
  * The temporary file is removed on every failure; a stream or descriptor
- * that fails half-way keeps what was written before the failure.  While the
- * temporary file exists the calling thread blocks SIGINT, SIGTERM and
- * SIGHUP; if one arrives, the
- * temporary file is removed, the target is left as it was, the signal mask is
- * restored (so the signal then takes its usual effect: a program that keeps
- * the default action ends, killed by it) and the call returns
- * RT_ERR_INTERRUPTED.  A program with other threads should block those
- * signals in them, or a signal sent to the process may be taken by another
- * thread while a save is under way.
+ * that fails half-way keeps what was written before the failure.
+ *
+ * Signals are the caller's (rt_save_options).  By default a save neither
+ * blocks nor polls any signal and installs no handler: a signal takes its
+ * usual effect at once, so a program killed during a save may leave its
+ * temporary file behind (the target itself is still either the complete
+ * old file or the complete new one).  A program that asks for
+ * hold_termination_signals has SIGINT, SIGTERM and SIGHUP (those it does
+ * not ignore) blocked in the calling thread while the temporary file
+ * exists; if one arrives, the temporary file is removed, the target is
+ * left as it was, the signal mask is restored (so the signal then takes
+ * its usual effect: a program that keeps the default action ends, killed
+ * by it) and the call returns RT_ERR_INTERRUPTED.  Such a program should
+ * block those signals in its other threads, or a signal sent to the
+ * process may be taken by another thread while a save is under way.
  *
  * Readers accept P3 and P6 with maxval 255 (what the writers produce) from
  * memory or a path.  All functions are thread-safe on distinct images and
@@ -79,11 +85,6 @@ typedef struct rt_image {
     unsigned char *pixels;
 } rt_image;
 
-typedef enum rt_ppm_format {
-    RT_PPM_P3 = 3,          /* ASCII, lines of at most 70 characters */
-    RT_PPM_P6 = 6           /* binary */
-} rt_ppm_format;
-
 /* Fills the caller's `image` with a black width x height image (stride
  * 3 * width) whose pixels it allocates; rt_image_release frees them.  Sides
  * must be in 1..RT_MAX_IMAGE_SIDE.  RT_OK, RT_ERR_ARGUMENT or RT_ERR_NOMEM
@@ -103,10 +104,11 @@ static inline unsigned char *rt_image_pixel(const rt_image *image, int x,
     return image->pixels + (size_t)y * image->stride + (size_t)x * 3;
 }
 
-/* The file formats the library writes.  The PPM values equal
- * rt_ppm_format's. */
+/* The file formats the library writes (the PPM values are the digit of
+ * the magic number, "P3" and "P6"). */
 typedef enum rt_image_format {
-    RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format) */
+    RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format), lines of
+                               at most 70 characters */
     RT_IMAGE_P6 = 6,        /* PPM, binary */
     RT_IMAGE_PNG = 16       /* PNG, 8-bit RGB; needs a build with libpng */
 } rt_image_format;
@@ -150,15 +152,41 @@ RT_API rt_status rt_image_write_file(FILE *file, const rt_image *image,
                                      rt_image_format format, rt_error *error);
 
 /*
+ * How a save to a path treats the process (rt_save_options_init sets the
+ * defaults; the struct grows by the rule of raytrace/render.h: `size`
+ * first, fields beyond it keep their defaults, 0 or a size larger than
+ * the library's is refused with RT_ERR_ARGUMENT).
+ */
+typedef struct rt_save_options {
+    size_t size;                    /* sizeof(rt_save_options); set by
+                                       rt_save_options_init */
+    int hold_termination_signals;   /* non-zero: SIGINT, SIGTERM and SIGHUP
+                                       are held while a temporary file
+                                       exists, and one that arrives makes
+                                       the save return RT_ERR_INTERRUPTED
+                                       (the rule at the top of this header);
+                                       0 (the default): the signal mask and
+                                       the handlers are left alone */
+} rt_save_options;
+
+/* Sets size to sizeof(rt_save_options) and the defaults above (no signal
+ * held).  NULL: no-op.  Thread-safe. */
+RT_API void rt_save_options_init(rt_save_options *options);
+
+/*
  * Saves `image` in `format` at `path` following the rule at the top of this
- * header.  Returns RT_OK; RT_ERR_IO with a message naming the path and the
- * reason ("is a directory", "the folder ... does not exist", "Permission
- * denied", "No space left on device" ...); RT_ERR_FORMAT; RT_ERR_NOMEM;
- * RT_ERR_INTERRUPTED (a signal arrived: nothing was changed); or
- * RT_ERR_ARGUMENT.  Thread-safe on distinct paths.
+ * header, with `options` (NULL: the defaults).  Returns RT_OK; RT_ERR_IO
+ * with a message naming the path and the reason ("is a directory", "the
+ * folder ... does not exist", "Permission denied", "No space left on
+ * device" ...); RT_ERR_FORMAT; RT_ERR_NOMEM; RT_ERR_INTERRUPTED (only when
+ * the options hold the termination signals: one arrived, nothing was
+ * changed); or RT_ERR_ARGUMENT (no path or image, or options of a bad
+ * size).  Thread-safe on distinct paths.
  */
 RT_API rt_status rt_image_save(const char *path, const rt_image *image,
-                               rt_image_format format, rt_error *error);
+                               rt_image_format format,
+                               const rt_save_options *options,
+                               rt_error *error);
 
 /*
  * Checks, without rendering anything, that rt_image_save could write at
@@ -166,24 +194,15 @@ RT_API rt_status rt_image_save(const char *path, const rt_image *image,
  * and removed at once), or the device opens for writing, or the FIFO or
  * socket may be written to, or the descriptor is open for writing (its
  * offset untouched); a directory is refused.  Leaves nothing behind.
- * Returns RT_OK or what rt_image_save would return, with the same
+ * `options` are those the save will have (NULL: the defaults): when they
+ * hold the termination signals, so does the check while its probe file
+ * exists.  Returns RT_OK or what rt_image_save would return, with the same
  * messages.  Programs call it before a long render so that a bad output
  * fails in milliseconds.  Thread-safe.
  */
-RT_API rt_status rt_image_save_check(const char *path, rt_error *error);
-
-/* PPM writers (P3 lines are at most 70 characters); the same as the
- * rt_image_ functions with RT_IMAGE_P3 or RT_IMAGE_P6, the same statuses
- * and messages (a format other than P3 or P6: RT_ERR_FORMAT). */
-RT_API rt_status rt_ppm_write_to(rt_write_func write, void *user,
-                                 const rt_image *image, rt_ppm_format format,
-                                 rt_error *error);
-RT_API rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
-                                   rt_ppm_format format, rt_error *error);
-
-/* rt_image_save with RT_IMAGE_P3 or RT_IMAGE_P6. */
-RT_API rt_status rt_ppm_save(const char *path, const rt_image *image,
-                             rt_ppm_format format, rt_error *error);
+RT_API rt_status rt_image_save_check(const char *path,
+                                     const rt_save_options *options,
+                                     rt_error *error);
 
 /* Parses a P3 or P6 image from `length` bytes at `data` into a new image
  * (free it with rt_image_release).  `name` is used in messages ("<memory>"

@@ -16,7 +16,8 @@
  *     rt_image image;
  *     if (rt_image_init(&image, info.width, info.height, &error) != RT_OK ||
  *         rt_render(scene, NULL, &image, &error) != RT_OK ||  (NULL: defaults)
- *         rt_ppm_save("cubes.ppm", &image, RT_PPM_P6, &error) != RT_OK)
+ *         rt_image_save("cubes.ppm", &image, RT_IMAGE_P6, NULL, &error) !=
+ *             RT_OK)
  *         fprintf(stderr, "%s\n", error.message);
  *     rt_image_release(&image);
  *     rt_scene_destroy(scene);

@@ -201,7 +201,7 @@ typedef struct rt_region {
  * What a render does (rt_render_options_init sets every default).
  *
  * How the option structs grow (rt_render_options here, rt_load_options in
- * raytrace/scene.h): the first field, `size`, is sizeof the struct as the
+ * raytrace/scene.h, rt_save_options in raytrace/image.h): the first field, `size`, is sizeof the struct as the
  * caller was compiled, set by the _init function.  New fields are only ever
  * appended.  The library reads the fields that lie wholly within `size`;
  * every later field keeps its default, so a program built against an older

@@ -462,10 +462,12 @@ RT_API rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
                                     unsigned *dropped, rt_error *error);
 
 /* The same saved at `path` by the rule of raytrace/image.h (atomic
- * replacement, streams written directly).  Thread-safe on distinct
- * paths. */
+ * replacement, streams written directly), with `options` as rt_image_save
+ * takes them (NULL: the defaults, which leave the signal mask alone).
+ * Thread-safe on distinct paths. */
 RT_API rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
                                    int extended, unsigned *dropped,
+                                   const rt_save_options *options,
                                    rt_error *error);
 
 #ifdef __cplusplus

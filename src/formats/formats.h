@@ -22,14 +22,16 @@ typedef struct rt_producer {
 
 /* Writes what `producer` produces at `path` by the rule of
  * raytrace/image.h (atomic replacement, streams written directly, links
- * followed, signals handled).  Errors name `path`. */
+ * followed), with `options` (NULL: the defaults; a bad size is
+ * RT_ERR_ARGUMENT) saying whether the termination signals are held.
+ * Errors name `path`. */
 rt_status rt__save(const char *path, const rt_producer *producer,
-                   rt_error *error);
+                   const rt_save_options *options, rt_error *error);
 
-/* Encodes `image` as PPM to the sink: RT_OK or the bare status (the
- * callers write the message). */
+/* Encodes `image` as PPM (RT_IMAGE_P3 or RT_IMAGE_P6) to the sink: RT_OK
+ * or the bare status (the callers write the message). */
 rt_status rt__ppm_write_to(rt_write_func write, void *user,
-                           const rt_image *image, rt_ppm_format format);
+                           const rt_image *image, rt_image_format format);
 
 #if RAYTRACE_HAVE_PNG
 /* Encodes `image` (valid) as an 8-bit RGB PNG to the sink. */

@@ -92,8 +92,7 @@ rt_status rt_image_write_to(rt_write_func write, void *user,
     if (format == RT_IMAGE_PNG)
         return rt__png_write_to(write, user, image, error);
 #endif
-    rt_status status =
-        rt__ppm_write_to(write, user, image, (rt_ppm_format)format);
+    rt_status status = rt__ppm_write_to(write, user, image, format);
     if (status != RT_OK)
         return rt__error_set(error, status, NULL, 0, 0,
                              "cannot write the image: %s",

@@ -1,9 +1,9 @@
 /*
  * ppm.c - writing and reading PPM images (Netpbm P3 and P6, maxval 255).
  *
- * Writers produce bytes through a sink callback; the FILE variant is a thin
- * wrapper, and saving to a path goes through the one save routine of every
- * format (save.c).  Readers take
+ * The writer produces bytes through a sink callback, for rt_image_write_to
+ * (image_format.c), whose FILE variant and save to a path (save.c) serve
+ * every format.  Readers take
  * exactly what the writers produce plus what other Netpbm tools commonly
  * emit: comments and arbitrary white space in the header.
  */
@@ -55,58 +55,24 @@ static rt_status write_p3_pixels(rt_write_func write, void *user,
 }
 
 rt_status rt__ppm_write_to(rt_write_func write, void *user,
-                           const rt_image *image, rt_ppm_format format)
+                           const rt_image *image, rt_image_format format)
 {
     if (!valid_image(image) || write == NULL)
         return RT_ERR_ARGUMENT;
-    if (format != RT_PPM_P3 && format != RT_PPM_P6)
+    if (format != RT_IMAGE_P3 && format != RT_IMAGE_P6)
         return RT_ERR_FORMAT;
     char header[64];
     int n = snprintf(header, sizeof header, "P%d\n%d %d\n255\n", (int)format,
                      image->width, image->height);
     if (!write(user, header, (size_t)n))
         return RT_ERR_IO;
-    if (format == RT_PPM_P3)
+    if (format == RT_IMAGE_P3)
         return write_p3_pixels(write, user, image);
     for (int y = 0; y < image->height; y++)
         if (!write(user, rt_image_pixel(image, 0, y),
                    (size_t)image->width * 3))
             return RT_ERR_IO;
     return RT_OK;
-}
-
-static rt_status refuse_ppm_format(rt_ppm_format format, rt_error *error)
-{
-    return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
-                         "expected P3 or P6, found format %d", (int)format);
-}
-
-rt_status rt_ppm_write_to(rt_write_func write, void *user,
-                          const rt_image *image, rt_ppm_format format,
-                          rt_error *error)
-{
-    if (format != RT_PPM_P3 && format != RT_PPM_P6)
-        return refuse_ppm_format(format, error);
-    return rt_image_write_to(write, user, image, (rt_image_format)format,
-                             error);
-}
-
-rt_status rt_ppm_write_file(FILE *file, const rt_image *image,
-                            rt_ppm_format format, rt_error *error)
-{
-    if (format != RT_PPM_P3 && format != RT_PPM_P6)
-        return refuse_ppm_format(format, error);
-    return rt_image_write_file(file, image, (rt_image_format)format, error);
-}
-
-rt_status rt_ppm_save(const char *path, const rt_image *image,
-                      rt_ppm_format format, rt_error *error)
-{
-    if (format != RT_PPM_P3 && format != RT_PPM_P6)
-        return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
-                             "expected P3 or P6, found format %d",
-                             (int)format);
-    return rt_image_save(path, image, (rt_image_format)format, error);
 }
 
 /* A cursor over PPM bytes that knows its line and column. */

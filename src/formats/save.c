@@ -11,20 +11,19 @@
  * bash's >(...) passes) is written through that very descriptor, at its
  * offset, so that what the caller wrote before and writes after stays; a
  * multiply linked file is rewritten in place from a complete temporary copy
- * so the links stay one file.  Symbolic links are followed here, link by
- * link, so that the temporary file lands beside the final target and the
- * rename replaces the target, not the link.  SIGINT, SIGTERM and SIGHUP are
- * blocked in the calling thread while a temporary file exists and polled
- * between writes, so an interrupted save removes its temporary file first.
+ * so the links stay one file.  What the path names, its symbolic links
+ * followed to the final target, is save_target.c's (rt__save_resolve): the
+ * temporary file lands beside that target and the rename replaces it, not
+ * the link.  When the caller's rt_save_options ask for it
+ * (hold_termination_signals), SIGINT, SIGTERM and SIGHUP are blocked in the
+ * calling thread while a temporary file exists and polled between writes,
+ * so an interrupted save removes its temporary file first; by default the
+ * save leaves the signal mask and the handlers alone.
  */
-/* realpath is X/Open's, beyond the _POSIX_C_SOURCE every target is built
- * with (cmake/RaytraceWarnings.cmake). */
-#define _XOPEN_SOURCE 700
-
 #include <errno.h>
 #include <fcntl.h>
-#include <limits.h>
 #include <poll.h>
+#include <stddef.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
@@ -39,32 +38,11 @@
 
 #include "base/error.h"
 #include "formats/formats.h"
+#include "formats/save_target.h"
 #include "raytrace/image.h"
 
-/* Links followed before giving up, as the kernel's own limit (ELOOP). */
-#define MAX_LINKS 40
 /* Bytes gathered before each write(2). */
 #define BUFFER_SIZE (1 << 16)
-
-/* What the destination is, once links are followed. */
-typedef enum kind {
-    KIND_ABSENT,            /* nothing there yet */
-    KIND_REGULAR,
-    KIND_LINKED,            /* a regular file with several hard links */
-    KIND_STREAM,            /* device, FIFO, or another process's
-                               descriptor through /proc */
-    KIND_SOCKET,
-    KIND_DIRECTORY,
-    KIND_DESCRIPTOR         /* a descriptor of this process, open for
-                               writing: written through it */
-} kind;
-
-typedef struct destination {
-    char *path;             /* the final target (malloc'd) */
-    kind kind;
-    struct stat st;         /* of the target, when it exists */
-    int fd;                 /* KIND_DESCRIPTOR: the descriptor */
-} destination;
 
 /* A buffered sink over a file descriptor that stops when a blocked
  * termination signal is pending (watch_signals). */
@@ -92,6 +70,30 @@ static void termination_signals(sigset_t *set)
             action.sa_handler != SIG_IGN)
             sigaddset(set, watched[i]);
     }
+}
+
+/* The termination signals blocked while a temporary file exists, when the
+ * options ask (`held`), and the mask to restore. */
+typedef struct signal_hold {
+    int held;
+    sigset_t previous;
+} signal_hold;
+
+static void hold_signals(signal_hold *h, int held)
+{
+    h->held = held;
+    if (held) {
+        sigset_t signals;
+        termination_signals(&signals);
+        pthread_sigmask(SIG_BLOCK, &signals, &h->previous);
+    }
+}
+
+/* Restores the mask: a signal that came meanwhile is delivered now. */
+static void release_signals(const signal_hold *h)
+{
+    if (h->held)
+        pthread_sigmask(SIG_SETMASK, &h->previous, NULL);
 }
 
 /* A termination signal waiting for this thread or the process, or 0. */
@@ -158,253 +160,10 @@ static int sink_write(void *user, const void *data, size_t size)
     return 1;
 }
 
-static char *copy_string(const char *s, size_t length)
-{
-    char *copy = malloc(length + 1);
-    if (copy != NULL) {
-        memcpy(copy, s, length);
-        copy[length] = '\0';
-    }
-    return copy;
-}
-
-/* The folder part of `path` with its slash ("dir/"), or "" (malloc'd). */
-static char *folder_of(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    return copy_string(path, slash ? (size_t)(slash - path) + 1 : 0);
-}
-
-/* A link's target, read relative to the link's folder (malloc'd). */
-static char *follow(const char *link, rt_status *status)
-{
-    size_t capacity = 256;
-    for (;;) {
-        char *target = malloc(capacity);
-        if (target == NULL)
-            return *status = RT_ERR_NOMEM, NULL;
-        ssize_t n = readlink(link, target, capacity);
-        if (n < 0) {
-            free(target);
-            return *status = RT_ERR_IO, NULL;
-        }
-        if ((size_t)n < capacity) {
-            target[n] = '\0';
-            if (target[0] == '/')
-                return target;
-            char *folder = folder_of(link);
-            char *joined = folder ? malloc(strlen(folder) + (size_t)n + 1)
-                                  : NULL;
-            if (joined != NULL) {
-                strcpy(joined, folder);
-                strcat(joined, target);
-            }
-            free(folder);
-            free(target);
-            return joined ? joined : (*status = RT_ERR_NOMEM, NULL);
-        }
-        free(target);
-        if (capacity > (size_t)SSIZE_MAX / 2)
-            return *status = RT_ERR_IO, errno = ENAMETOOLONG, NULL;
-        capacity *= 2;
-    }
-}
-
-/* A path inside /proc names an open descriptor (/dev/stdout leads there);
- * its links are the kernel's, not paths to follow by hand. */
-static int in_proc(const char *path)
-{
-    return strncmp(path, "/proc/", 6) == 0;
-}
-
-static rt_status io_error(rt_error *error, const char *path, int saved,
-                          const char *what)
-{
-    return rt__error_set(error, RT_ERR_IO, path, 0, 0, "%s: %s", what,
-                         strerror(saved));
-}
-
 /* What messages call the producer's bytes. */
 static const char *noun_of(const rt_producer *producer)
 {
     return producer->noun != NULL ? producer->noun : "image";
-}
-
-/* "cannot write the NOUN: reason" for errno `saved`. */
-static rt_status write_error(rt_error *error, const char *path, int saved,
-                             const char *noun)
-{
-    return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                         "cannot write the %s: %s", noun, strerror(saved));
-}
-
-/* The canonical name of folder `folder` ("" for the current one), or NULL
- * (malloc'd). */
-static char *real_folder(const char *folder)
-{
-    return realpath(folder[0] ? folder : ".", NULL);
-}
-
-/* Non-zero when `real` (a canonical folder) is this process's table of
- * descriptors: /proc/PID/fd, or a thread's /proc/PID/task/TID/fd. */
-static int own_descriptor_table(const char *real)
-{
-    char *own = realpath("/proc/self", NULL);
-    int same = 0;
-    if (own != NULL) {
-        size_t n = strlen(own);
-        const char *rest = strncmp(real, own, n) == 0 ? real + n : NULL;
-        if (rest != NULL && strncmp(rest, "/task/", 6) == 0) {
-            rest += 6;
-            if (*rest < '0' || *rest > '9')
-                rest = NULL;
-            while (rest != NULL && *rest >= '0' && *rest <= '9')
-                rest++;
-        }
-        same = rest != NULL && strcmp(rest, "/fd") == 0;
-        free(own);
-    }
-    return same;
-}
-
-/*
- * Non-zero, with *fd set, when `path` names a descriptor of this process:
- * its last part is a number and its folder is the process's table of
- * descriptors once canonical (/dev/fd/N and /proc/self/fd/N lead there, and
- * /dev/stdout is a link to /proc/self/fd/1).  Another process's table
- * (/proc/PID/fd/N) is not: its descriptors are not this process's to write
- * through.
- */
-static int descriptor_named(const char *path, int *fd)
-{
-    const char *slash = strrchr(path, '/');
-    const char *digits = slash ? slash + 1 : path;
-    int number = 0;
-    if (*digits == '\0')
-        return 0;
-    for (const char *c = digits; *c; c++) {
-        if (*c < '0' || *c > '9' || number > (INT_MAX - (*c - '0')) / 10)
-            return 0;
-        number = number * 10 + (*c - '0');
-    }
-    char *folder = copy_string(path, (size_t)(digits - path));
-    char *real = folder ? real_folder(folder) : NULL;
-    int own = real != NULL && own_descriptor_table(real);
-    free(real);
-    free(folder);
-    if (own)
-        *fd = number;
-    return own;
-}
-
-/* Checks that descriptor d->fd is open for writing and not a folder, and
- * fills d->st. */
-static rt_status check_descriptor(const char *path, destination *d,
-                                  const char *noun, rt_error *error)
-{
-    int flags = fcntl(d->fd, F_GETFL);
-    if (flags < 0)
-        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the %s: descriptor %d is not "
-                             "open", noun, d->fd);
-    int mode = flags & O_ACCMODE;
-#ifdef O_PATH
-    if (flags & O_PATH)
-        mode = O_RDONLY;
-#endif
-    if (fstat(d->fd, &d->st) != 0)
-        return write_error(error, path, errno, noun);
-    if (S_ISDIR(d->st.st_mode))
-        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the %s: is a directory", noun);
-    if (mode != O_WRONLY && mode != O_RDWR)
-        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the %s: descriptor %d is open "
-                             "for reading only", noun, d->fd);
-    return RT_OK;
-}
-
-/* Follows `path` to what it finally names and says what that is. */
-static rt_status resolve(const char *path, destination *d,
-                         const char *noun, rt_error *error)
-{
-    memset(d, 0, sizeof *d);
-    char *current = copy_string(path, strlen(path));
-    if (current == NULL)
-        return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                             "out of memory");
-    for (int links = 0;; links++) {
-        if (descriptor_named(current, &d->fd)) {
-            d->path = current;
-            d->kind = KIND_DESCRIPTOR;
-            return check_descriptor(path, d, noun, error);
-        }
-        if (in_proc(current)) {
-            /* Let the kernel follow its own links: stat the whole path. */
-            free(current);
-            d->path = copy_string(path, strlen(path));
-            if (d->path == NULL)
-                return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                                     "out of memory");
-            if (stat(path, &d->st) != 0) {
-                int saved = errno;
-                if (saved == ENOENT || saved == ENOTDIR) {
-                    d->kind = KIND_ABSENT;  /* a new file in a real folder
-                                               reached through /proc */
-                    return RT_OK;
-                }
-                free(d->path);
-                d->path = NULL;
-                return write_error(error, path, saved, noun);
-            }
-            if (S_ISDIR(d->st.st_mode))
-                return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                                     "cannot write the %s: is a "
-                                     "directory", noun);
-            d->kind = KIND_STREAM;
-            return RT_OK;
-        }
-        if (lstat(current, &d->st) != 0) {
-            int saved = errno;
-            /* A missing or non-folder parent is told by the temporary
-             * file's creation, which names the folder. */
-            if (saved != ENOENT && saved != ENOTDIR) {
-                free(current);
-                return write_error(error, path, saved, noun);
-            }
-            d->kind = KIND_ABSENT;
-            break;
-        }
-        if (!S_ISLNK(d->st.st_mode)) {
-            mode_t m = d->st.st_mode;
-            d->kind = S_ISDIR(m)    ? KIND_DIRECTORY
-                      : S_ISSOCK(m) ? KIND_SOCKET
-                      : S_ISREG(m)  ? (d->st.st_nlink > 1 ? KIND_LINKED
-                                                          : KIND_REGULAR)
-                                    : KIND_STREAM;
-            break;
-        }
-        if (links == MAX_LINKS) {
-            free(current);
-            return write_error(error, path, ELOOP, noun);
-        }
-        rt_status status = RT_OK;
-        char *next = follow(current, &status);
-        int saved = errno;
-        free(current);
-        if (next == NULL)
-            return status == RT_ERR_NOMEM
-                       ? rt__error_set(error, status, path, 0, 0,
-                                       "out of memory")
-                       : io_error(error, path, saved,
-                                  "cannot follow the symbolic link");
-        current = next;
-    }
-    d->path = current;
-    if (d->kind == KIND_DIRECTORY)
-        return rt__error_set(error, RT_ERR_IO, path, 0, 0,
-                             "cannot write the %s: is a directory", noun);
-    return RT_OK;
 }
 
 /* The message for a temporary file that cannot be made in `folder`. */
@@ -426,6 +185,21 @@ static rt_status folder_error(rt_error *error, const char *path,
                          noun, shown, strerror(saved));
 }
 
+/* The message for a temporary file that cannot be made beside `target`
+ * (errno `saved`). */
+static rt_status temporary_error(rt_error *error, const char *path,
+                                 const char *target, int saved,
+                                 const char *noun)
+{
+    char *folder = rt__save_folder_of(target);
+    rt_status status =
+        folder ? folder_error(error, path, folder, saved, noun)
+               : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
+                               "out of memory");
+    free(folder);
+    return status;
+}
+
 /*
  * Creates a new file ".rt-save-XXXXXX" in the folder of `target` with mode
  * 0666 (the umask applies, as for any new file).  Returns its descriptor and
@@ -435,7 +209,7 @@ static int create_temporary(const char *target, char **temp)
 {
     static const char letters[] =
         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
-    char *folder = folder_of(target);
+    char *folder = rt__save_folder_of(target);
     char *name = folder ? malloc(strlen(folder) + sizeof ".rt-save-XXXXXX")
                         : NULL;
     if (name == NULL) {
@@ -507,7 +281,8 @@ static rt_status sink_error(const fd_sink *s, rt_status status,
                              "save interrupted by signal %d; the file was "
                              "left as it was", s->interrupted);
     if (status == RT_ERR_IO)
-        return write_error(error, path, s->error ? s->error : EIO, noun);
+        return rt__save_write_error(error, path, s->error ? s->error : EIO,
+                                    noun);
     return status;          /* the encoder filled *error */
 }
 
@@ -549,7 +324,7 @@ static int copy_in_place(int temp_fd, const char *target, fd_sink *s)
  * refuse fsync on a folder). */
 static void sync_folder(const char *target)
 {
-    char *folder = folder_of(target);
+    char *folder = rt__save_folder_of(target);
     if (folder == NULL)
         return;
     int fd = open(folder[0] ? folder : ".", O_RDONLY | O_CLOEXEC);
@@ -560,63 +335,65 @@ static void sync_folder(const char *target)
     free(folder);
 }
 
-/* Nothing there or a regular file: through a temporary file. */
+/* Nothing there or a regular file: through a temporary file, the
+ * termination signals held meanwhile when `hold`. */
 static rt_status save_through_temporary(const char *path,
-                                        const destination *d,
-                                        const rt_producer *producer,
+                                        const rt_save_target *d,
+                                        const rt_producer *producer, int hold,
                                         rt_error *error)
 {
     fd_sink *s = malloc(sizeof *s);
     if (s == NULL)
         return rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
                              "out of memory");
-    sigset_t signals, previous;
-    termination_signals(&signals);
-    pthread_sigmask(SIG_BLOCK, &signals, &previous);
+    signal_hold signals;
+    hold_signals(&signals, hold);
 
     rt_status status = RT_OK;
     char *temp = NULL;
     int fd = create_temporary(d->path, &temp);
     if (fd < 0) {
-        int saved = errno;
-        char *folder = folder_of(d->path);
-        status = folder ? folder_error(error, path, folder, saved,
-                                       noun_of(producer))
-                        : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                                        "out of memory");
-        free(folder);
-        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+        status = temporary_error(error, path, d->path, errno,
+                                 noun_of(producer));
+        release_signals(&signals);
         free(s);
         return status;
     }
-    *s = (fd_sink){.fd = fd, .watch_signals = 1};
-    if (d->kind == KIND_REGULAR)
+    *s = (fd_sink){.fd = fd, .watch_signals = hold};
+    if (d->kind == RT__TARGET_REGULAR)
         keep_attributes(fd, &d->st);
     status = encode(s, producer, error);
     if (status == RT_OK && fsync(fd) != 0)
         status = RT_ERR_IO, s->error = errno;
-    if (status == RT_OK && (s->interrupted = pending_termination()) != 0)
+    if (status == RT_OK && hold &&
+        (s->interrupted = pending_termination()) != 0)
         status = RT_ERR_IO;
-    if (status == RT_OK && d->kind == KIND_LINKED &&
+    if (status == RT_OK && d->kind == RT__TARGET_LINKED &&
         !copy_in_place(fd, d->path, s))
         status = RT_ERR_IO;
     if (close(fd) != 0 && status == RT_OK)
         status = RT_ERR_IO, s->error = errno;
-    if (status == RT_OK && d->kind != KIND_LINKED) {
+    if (status == RT_OK && d->kind != RT__TARGET_LINKED) {
         if (rename(temp, d->path) != 0)
             status = RT_ERR_IO, s->error = errno;
         else
             sync_folder(d->path);
     }
-    if (status != RT_OK || d->kind == KIND_LINKED)
+    if (status != RT_OK || d->kind == RT__TARGET_LINKED)
         unlink(temp);
     if (status != RT_OK)
         status = sink_error(s, status, path, noun_of(producer), error);
     free(temp);
     free(s);
     /* A signal that came meanwhile is delivered now, the file in order. */
-    pthread_sigmask(SIG_SETMASK, &previous, NULL);
+    release_signals(&signals);
     return status;
+}
+
+/* "cannot open for writing: reason" for errno. */
+static rt_status cannot_open(rt_error *error, const char *path)
+{
+    return rt__save_io_error(error, path, errno, "cannot open for writing");
 }
 
 /* Opens a Unix socket's listener as a stream, or -1 with errno set. */
@@ -663,18 +440,18 @@ static rt_status stream_to(int fd, int owned, const char *path,
 
 /* A device, FIFO, socket or another process's descriptor: opened and
  * written as a stream. */
-static rt_status save_to_stream(const char *path, const destination *d,
+static rt_status save_to_stream(const char *path, const rt_save_target *d,
                                 const rt_producer *producer, rt_error *error)
 {
     /* A regular file behind another process's /proc/PID/fd/N is rewritten
      * from its start: its offset is that process's. */
-    int truncate = d->kind == KIND_STREAM && S_ISREG(d->st.st_mode);
-    int fd = d->kind == KIND_SOCKET
+    int truncate = d->kind == RT__TARGET_STREAM && S_ISREG(d->st.st_mode);
+    int fd = d->kind == RT__TARGET_SOCKET
                  ? connect_socket(d->path)
                  : open(d->path, O_WRONLY | O_CLOEXEC | O_NOCTTY |
                                      (truncate ? O_TRUNC : 0));
     if (fd < 0)
-        return io_error(error, path, errno, "cannot open for writing");
+        return cannot_open(error, path);
     return stream_to(fd, 1, path, producer, error);
 }
 
@@ -684,24 +461,58 @@ static int valid_image(const rt_image *image)
            image->height > 0 && image->stride >= (size_t)image->width * 3;
 }
 
+void rt_save_options_init(rt_save_options *options)
+{
+    if (options == NULL)
+        return;
+    memset(options, 0, sizeof *options);
+    options->size = sizeof *options;
+}
+
+/* Copies the caller's options into *out as far as the caller's size
+ * reaches; later fields keep their defaults (raytrace/render.h's rule for
+ * growing option structs).  NULL: the defaults. */
+static rt_status take_options(const rt_save_options *in, rt_save_options *out,
+                              const char *path, rt_error *error)
+{
+    rt_save_options_init(out);
+    if (in == NULL)
+        return RT_OK;
+    if (in->size == 0 || in->size > sizeof *out)
+        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
+                             "save options of %zu bytes: expected 1..%zu "
+                             "(set by rt_save_options_init)",
+                             in->size, sizeof *out);
+    if (offsetof(rt_save_options, hold_termination_signals) +
+            sizeof in->hold_termination_signals <= in->size)
+        out->hold_termination_signals = in->hold_termination_signals;
+    return RT_OK;
+}
+
 rt_status rt__save(const char *path, const rt_producer *producer,
-                   rt_error *error)
+                   const rt_save_options *options, rt_error *error)
 {
     if (path == NULL || path[0] == '\0' || producer == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
-    destination d;
-    rt_status status = resolve(path, &d, noun_of(producer), error);
+    rt_save_options o;
+    rt_status status = take_options(options, &o, path, error);
+    if (status != RT_OK)
+        return status;
+    rt_save_target d;
+    status = rt__save_resolve(path, &d, noun_of(producer), error);
     /* A descriptor of this process: written through it, at its offset (at
      * the end when it appends), and left open; nothing is truncated or
      * replaced, so what the caller wrote before and writes after stays
      * around the bytes. */
-    if (status == RT_OK && d.kind == KIND_DESCRIPTOR)
+    if (status == RT_OK && d.kind == RT__TARGET_DESCRIPTOR)
         status = stream_to(d.fd, 0, path, producer, error);
     else if (status == RT_OK)
-        status = d.kind == KIND_STREAM || d.kind == KIND_SOCKET
+        status = d.kind == RT__TARGET_STREAM || d.kind == RT__TARGET_SOCKET
                      ? save_to_stream(path, &d, producer, error)
-                     : save_through_temporary(path, &d, producer, error);
+                     : save_through_temporary(path, &d, producer,
+                                              o.hold_termination_signals,
+                                              error);
     free(d.path);
     return status;
 }
@@ -720,7 +531,8 @@ static rt_status produce_image(rt_write_func write, void *user,
 }
 
 rt_status rt_image_save(const char *path, const rt_image *image,
-                        rt_image_format format, rt_error *error)
+                        rt_image_format format,
+                        const rt_save_options *options, rt_error *error)
 {
     if (path == NULL || path[0] == '\0' || !valid_image(image))
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
@@ -729,56 +541,56 @@ rt_status rt_image_save(const char *path, const rt_image *image,
         return rt__image_format_refusal(format, error);
     image_bytes bytes = {image, format};
     rt_producer producer = {produce_image, &bytes, "image"};
-    return rt__save(path, &producer, error);
+    return rt__save(path, &producer, options, error);
 }
 
-rt_status rt_image_save_check(const char *path, rt_error *error)
+rt_status rt_image_save_check(const char *path,
+                              const rt_save_options *options,
+                              rt_error *error)
 {
     if (path == NULL || path[0] == '\0')
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
-    destination d;
-    rt_status status = resolve(path, &d, "image", error);
+    rt_save_options o;
+    rt_status status = take_options(options, &o, path, error);
+    if (status != RT_OK)
+        return status;
+    rt_save_target d;
+    status = rt__save_resolve(path, &d, "image", error);
     if (status != RT_OK) {
         free(d.path);
         return status;
     }
     int fd = -1;
-    if (d.kind == KIND_DESCRIPTOR) {
-        /* resolve() found it open for writing: nothing more to try */
-    } else if (d.kind == KIND_STREAM && !S_ISFIFO(d.st.st_mode)) {
+    if (d.kind == RT__TARGET_DESCRIPTOR) {
+        /* rt__save_resolve() found it open for writing: nothing more to try */
+    } else if (d.kind == RT__TARGET_STREAM && !S_ISFIFO(d.st.st_mode)) {
         fd = open(d.path, O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
         if (fd < 0)
-            status = io_error(error, path, errno, "cannot open for writing");
-    } else if (d.kind == KIND_STREAM || d.kind == KIND_SOCKET) {
+            status = cannot_open(error, path);
+    } else if (d.kind == RT__TARGET_STREAM || d.kind == RT__TARGET_SOCKET) {
         /* A FIFO would wait for its reader: its permission is enough. */
         if (access(d.path, W_OK) != 0)
-            status = io_error(error, path, errno, "cannot open for writing");
+            status = cannot_open(error, path);
     } else {
-        if (d.kind == KIND_LINKED &&
+        if (d.kind == RT__TARGET_LINKED &&
             (fd = open(d.path, O_WRONLY | O_CLOEXEC | O_NOCTTY)) < 0)
-            status = io_error(error, path, errno, "cannot open for writing");
-        /* The probe exists only between two calls: no signal may end the
-         * program in between, leaving it behind. */
-        sigset_t signals, previous;
-        termination_signals(&signals);
-        pthread_sigmask(SIG_BLOCK, &signals, &previous);
+            status = cannot_open(error, path);
+        /* The probe exists only between two calls: when the options hold
+         * the signals, none may end the program in between, leaving it
+         * behind. */
+        signal_hold signals;
+        hold_signals(&signals, o.hold_termination_signals);
         char *temp = NULL;
         int probe = status == RT_OK ? create_temporary(d.path, &temp) : 0;
         if (probe < 0) {
-            int saved = errno;
-            char *folder = folder_of(d.path);
-            status = folder ? folder_error(error, path, folder, saved,
-                                           "image")
-                            : rt__error_set(error, RT_ERR_NOMEM, path, 0, 0,
-                                            "out of memory");
-            free(folder);
+            status = temporary_error(error, path, d.path, errno, "image");
         } else if (status == RT_OK) {
             close(probe);
             unlink(temp);
             free(temp);
         }
-        pthread_sigmask(SIG_SETMASK, &previous, NULL);
+        release_signals(&signals);
     }
     if (fd >= 0)
         close(fd);

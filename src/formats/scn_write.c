@@ -128,12 +128,13 @@ static rt_status produce_scn(rt_write_func write, void *user,
 }
 
 rt_status rt_scene_save_scn(const rt_scene *scene, const char *path,
-                            int extended, unsigned *dropped, rt_error *error)
+                            int extended, unsigned *dropped,
+                            const rt_save_options *options, rt_error *error)
 {
     if (scene == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a scene");
     scn_bytes bytes = {scene, extended, dropped};
     rt_producer producer = {produce_scn, &bytes, "scene"};
-    return rt__save(path, &producer, error);
+    return rt__save(path, &producer, options, error);
 }

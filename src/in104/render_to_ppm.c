@@ -98,7 +98,13 @@ int renderToPPM(const scene *s, const char *ppmFile)
         status = rt_render(built, NULL, &image, NULL);
     rt_error error;
     if (status == RT_OK) {
-        status = rt_ppm_save(ppmFile, &image, RT_PPM_P3, &error);
+        /* The course's programs are ended by Ctrl-C as any other: the
+         * termination signals are held while the temporary file exists, so
+         * that the old file stays and no temporary one is left behind. */
+        rt_save_options save;
+        rt_save_options_init(&save);
+        save.hold_termination_signals = 1;
+        status = rt_image_save(ppmFile, &image, RT_IMAGE_P3, &save, &error);
         if (status != RT_OK)
             fail(status, error.message);
     } else {

@@ -58,7 +58,7 @@ int main(void)
     if (status == RT_OK)
         status = rt_render(scene, NULL, &image, NULL);
     if (status == RT_OK)
-        status = rt_ppm_write_to(append, &out, &image, RT_PPM_P6, NULL);
+        status = rt_image_write_to(append, &out, &image, RT_IMAGE_P6, NULL);
     rt_image_release(&image);
     rt_scene_destroy(scene);
     if (status != RT_OK) {

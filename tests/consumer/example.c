@@ -24,7 +24,7 @@ int main(int argc, char **argv)
     if (status == RT_OK)
         status = rt_render(scene, NULL, &image, &error);  /* default options */
     if (status == RT_OK)
-        status = rt_ppm_save(argv[2], &image, RT_PPM_P6, &error);
+        status = rt_image_save(argv[2], &image, RT_IMAGE_P6, NULL, &error);
     if (status == RT_OK)
         printf("%s\n", argv[2]);
     else

@@ -43,10 +43,10 @@ static int append(void *user, const void *data, size_t size)
     return 1;
 }
 
-static void round_trip(const rt_image *image, rt_ppm_format format)
+static void round_trip(const rt_image *image, rt_image_format format)
 {
     buffer out = {NULL, 0, 0};
-    require(rt_ppm_write_to(append, &out, image, format, NULL) == RT_OK);
+    require(rt_image_write_to(append, &out, image, format, NULL) == RT_OK);
     rt_image again;
     rt_error error;
     require(rt_ppm_parse(out.bytes, out.used, "again", &again, &error) ==
@@ -75,8 +75,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         require(image.pixels != NULL);
         /* Keep the round trip cheap: large images are only parsed. */
         if ((size_t)image.width * (size_t)image.height <= 4096) {
-            round_trip(&image, RT_PPM_P6);
-            round_trip(&image, RT_PPM_P3);
+            round_trip(&image, RT_IMAGE_P6);
+            round_trip(&image, RT_IMAGE_P3);
         }
         rt_image_release(&image);
     } else {

@@ -67,9 +67,9 @@ void rt_test_assert_same_image(const rt_image *actual,
     if (differ != 0) {
         char path[256];
         snprintf(path, sizeof path, "%s-actual.ppm", name);
-        rt_image_save(path, actual, RT_IMAGE_P6, NULL);
+        rt_image_save(path, actual, RT_IMAGE_P6, NULL, NULL);
         snprintf(path, sizeof path, "%s-expected.ppm", name);
-        rt_image_save(path, expected, RT_IMAGE_P6, NULL);
+        rt_image_save(path, expected, RT_IMAGE_P6, NULL, NULL);
     }
     ck_assert_msg(differ == 0,
                   "%s: %ld pixels differ (by up to %d), images written to "
@@ -143,7 +143,7 @@ void rt_test_save_ok(const char *path, const rt_image *image,
                      rt_image_format format)
 {
     rt_error error = {0};
-    rt_status status = rt_image_save(path, image, format, &error);
+    rt_status status = rt_image_save(path, image, format, NULL, &error);
     ck_assert_msg(status == RT_OK, "saving to %s returned %s: %s", path,
                   rt_status_string(status), error.message);
 }
@@ -153,7 +153,7 @@ void rt_test_save_refused(const char *path, const char *reason,
 {
     rt_image image = rt_test_pattern(6, 4);
     memset(error, 0, sizeof *error);
-    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, error);
+    rt_status status = rt_image_save(path, &image, RT_IMAGE_P6, NULL, error);
     rt_image_release(&image);
     ck_assert_msg(status == RT_ERR_IO, "saving to %s returned %s, expected "
                   "an input/output error", path, rt_status_string(status));
