@@ -25,6 +25,14 @@
 #include "scene/scene_internal.h"
 #include "testutil.h"
 
+/* Under valgrind or AddressSanitizer (a Debug build, 50 times slower) the
+ * comparisons run on fewer rays and smaller images: the same code paths,
+ * the full counts being the normal pass's. */
+static int reduced(void)
+{
+    return rt_test_memcheck() || RT_TEST_UNDER_ASAN;
+}
+
 /* The size to render at; 0: the scene's. */
 typedef struct image_size {
     int width, height;
@@ -117,7 +125,7 @@ static size_t check_directory(const char *dir, int side)
 START_TEST(project_scenes_render_identically_through_the_octree)
 {
     ck_assert_uint_gt(check_directory(rt_test_source_path("scenes"),
-                                      rt_test_memcheck() ? 16 : 160),
+                                      reduced() ? 16 : 160),
                       0);
 }
 END_TEST
@@ -126,9 +134,9 @@ START_TEST(generated_meshes_render_identically_through_the_octree)
 {
     rt_scene *scene;
     rt_error error;
-    int side = rt_test_memcheck() ? 12 : 64;
+    int side = reduced() ? 12 : 64;
     int sizes[] = {100, 2000, 20000};
-    for (int i = 0; i < (rt_test_memcheck() ? 2 : 3); i++) {
+    for (int i = 0; i < (reduced() ? 2 : 3); i++) {
         ck_assert_int_eq(bench_sphere(sizes[i], side, side, &scene, &error),
                          RT_OK);
         check_scene(scene, (image_size){0, 0}, "sphere");
@@ -225,7 +233,7 @@ START_TEST(facets_all_in_one_spot_render_identically)
 {
     soup s = {0};
     rt_vec3 c = {0.1, 0.2, 0.3};
-    for (int i = 0; i < (rt_test_memcheck() ? 200 : 3000); i++)
+    for (int i = 0; i < (reduced() ? 200 : 3000); i++)
         soup_add(&s, jitter(c, 1e-3), jitter(c, 1e-3), jitter(c, 1e-3),
                  i % 4 == 0 ? 0.5 : 0.0);
     /* and one big floor far away, so the box is large */
@@ -233,7 +241,7 @@ START_TEST(facets_all_in_one_spot_render_identically)
              (rt_vec3){0, 50, -1}, 0.3);
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
                                  c, (rt_vec3){1, 1, 3},
-                                     rt_test_memcheck() ? 12 : 48);
+                                     reduced() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "one spot");
     rt_scene_destroy(scene);
 }
@@ -252,7 +260,7 @@ START_TEST(a_few_facets_spanning_everything_render_identically)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
                                  (rt_vec3){3, -4, 12},
-                                     rt_test_memcheck() ? 12 : 48);
+                                     reduced() ? 12 : 48);
     check_scene(scene, (image_size){0, 0}, "spanning");
     rt_scene_destroy(scene);
 }
@@ -266,7 +274,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
              (rt_vec3){0, 5, 1e6}, 0.5);
     soup_add(&s, (rt_vec3){-1e6, -1e6, -2}, (rt_vec3){1e6, -1e6, -2},
              (rt_vec3){0, 1e6, -2}, 0.0);
-    for (int i = 0; i < (rt_test_memcheck() ? 100 : 1500); i++) {
+    for (int i = 0; i < (reduced() ? 100 : 1500); i++) {
         rt_vec3 p = {uniform(-2, 2), uniform(-1, 3), uniform(-1.5, 1.5)};
         rt_vec3 q = jitter(p, 1.0);
         rt_vec3 m = {(p.x + q.x) / 2 + uniform(-1e-6, 1e-6),
@@ -278,7 +286,7 @@ START_TEST(slivers_beside_huge_walls_render_identically)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.3, -6, 1.5},
                                  (rt_vec3){0, 1, 0}, (rt_vec3){-2, -3, 4},
-                                 rt_test_memcheck() ? 12 : 56);
+                                 reduced() ? 12 : 56);
     check_scene(scene, (image_size){0, 0}, "slivers and walls");
     rt_scene_destroy(scene);
 }
@@ -290,7 +298,7 @@ END_TEST
 START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
 {
     soup s = {0};
-    int n = rt_test_memcheck() ? 60 : 600;
+    int n = reduced() ? 60 : 600;
     for (int i = 0; i < n; i++) {
         double x = uniform(-3, 3), y = uniform(-3, 3);
         double size = uniform(0.2, 2.5);
@@ -303,7 +311,7 @@ START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
     }
     rt_scene *scene = soup_scene(&s, (rt_vec3){0.5, -7, 6},
                                  (rt_vec3){0, 0, 0}, (rt_vec3){1, -2, 9},
-                                 rt_test_memcheck() ? 12 : 64);
+                                 reduced() ? 12 : 64);
     check_scene(scene, (image_size){0, 0}, "coincident");
     rt_scene_destroy(scene);
 }
@@ -324,12 +332,12 @@ START_TEST(far_and_inside_cameras_render_identically)
                  s.f[i].k);
     rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
-                               rt_test_memcheck() ? 12 : 40);
+                               reduced() ? 12 : 40);
     check_scene(far, (image_size){0, 0}, "far camera");
     rt_scene_destroy(far);
     rt_scene *inside = soup_scene(&t, (rt_vec3){0.01, 0.02, 0.03},
                                   (rt_vec3){1, 0.5, 0.2}, (rt_vec3){0, 0, 0},
-                                  rt_test_memcheck() ? 12 : 40);
+                                  reduced() ? 12 : 40);
     check_scene(inside, (image_size){0, 0}, "inside");
     rt_scene_destroy(inside);
 }
@@ -341,7 +349,7 @@ END_TEST
 START_TEST(transparency_lights_and_lens_render_identically)
 {
     soup s = {0};
-    for (int i = 0; i < (rt_test_memcheck() ? 150 : 1200); i++) {
+    for (int i = 0; i < (reduced() ? 150 : 1200); i++) {
         rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
         if (i % 3 == 0) {
@@ -354,8 +362,8 @@ START_TEST(transparency_lights_and_lens_render_identically)
     rt_scene_desc desc = {
         .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
         .screen_right = {0.8, -3, 0.45},
-        .width = rt_test_memcheck() ? 12 : 48,
-            .height = rt_test_memcheck() ? 12 : 48,
+        .width = reduced() ? 12 : 48,
+            .height = reduced() ? 12 : 48,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {30, 40, 50},
@@ -386,8 +394,8 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
     rt_scene_desc desc = {
         .observer = {0, -1e151, 5e150}, .screen_center = {0, 0, 4e150},
         .screen_right = {1e151, 0, 4e150},
-        .width = rt_test_memcheck() ? 8 : 32,
-            .height = rt_test_memcheck() ? 8 : 32,
+        .width = reduced() ? 8 : 32,
+            .height = reduced() ? 8 : 32,
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {20, 30, 40},
@@ -468,7 +476,7 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
-    int count = rt_test_memcheck() ? 300 : 6000;
+    int count = reduced() ? 300 : 6000;
     for (int i = 0; i < count; i++) {
         rt_vec3 o, t;
         switch (i % 4) {
@@ -505,7 +513,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
-    for (int i = 0; i < (rt_test_memcheck() ? 200 : 6000); i++) {
+    for (int i = 0; i < (reduced() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
         rt_facet_info f;
         rt_scene_facet(scene, (int)uniform(0, 3000), &f);
@@ -656,8 +664,8 @@ START_TEST(shared_scenes_render_identically_through_the_octree)
     char seed[4096], spd[4096];
     snprintf(seed, sizeof seed, "%s", rt_test_shared_path("seed-scenes"));
     snprintf(spd, sizeof spd, "%s", rt_test_shared_path("spd-scenes"));
-    size_t scenes = check_directory(seed, rt_test_memcheck() ? 16 : 160) +
-                    check_directory(spd, rt_test_memcheck() ? 8 : 48);
+    size_t scenes = check_directory(seed, reduced() ? 16 : 160) +
+                    check_directory(spd, reduced() ? 8 : 48);
     ck_assert_uint_gt(scenes, 0);
 }
 END_TEST
