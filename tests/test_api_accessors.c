@@ -31,7 +31,8 @@ static void setup(void)
 {
     ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
                                     strlen(rt_test_centred_facet_scene), NULL,
-                                     &scene, NULL), RT_OK);
+                                    NULL, &scene, NULL),
+                     RT_OK);
 }
 
 static void teardown(void)

@@ -141,8 +141,8 @@ static int check_terms(const char *path, int step)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load_with(path, NULL, &scene, &error) == RT_OK,
-                  "%s", error.message);
+    ck_assert_msg(rt_scene_load(path, NULL, &scene, &error) == RT_OK, "%s",
+                  error.message);
     rt_render_options options;
     rt_render_options_init(&options);
     rt_scene_info info;
@@ -210,8 +210,9 @@ START_TEST(viewer_names_a_total_internal_reflection_the_t_ct_term)
     write_tir_scene(rt_test_in_dir(dir, "tir.scn"), "0", "1");
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_load_with(rt_test_in_dir(dir, "tir.scn"), NULL,
-                                        &scene, &error), RT_OK);
+    ck_assert_int_eq(
+        rt_scene_load(rt_test_in_dir(dir, "tir.scn"), NULL, &scene, &error),
+        RT_OK);
     rt_render_options options;
     rt_render_options_init(&options);
     view_explanation e;

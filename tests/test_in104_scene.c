@@ -69,7 +69,7 @@ static void assert_parse_agrees_with_core(const char *path)
 {
     rt_scene *core = NULL;
     rt_error error;
-    ck_assert_msg(rt_scene_load(path, &core, &error) == RT_OK, "%s",
+    ck_assert_msg(rt_scene_load(path, NULL, &core, &error) == RT_OK, "%s",
                   error.message);
     rt_scene_info info;
     rt_scene_get_info(core, &info);
@@ -211,7 +211,7 @@ START_TEST(parse_prints_the_loaders_message_and_returns_nonzero)
     rt_test_write_file("in104_bad.scn", text);
     rt_scene *core = NULL;
     rt_error error;
-    rt_status expected = rt_scene_load("in104_bad.scn", &core, &error);
+    rt_status expected = rt_scene_load("in104_bad.scn", NULL, &core, &error);
     ck_assert_int_ne(expected, RT_OK);
 
     scene s;
@@ -368,7 +368,7 @@ static void assert_render_matches_core(const char *path)
     ck_assert_msg(rt_ppm_load("in104_render.ppm", &got, &error) == RT_OK,
                   "%s", error.message);
     rt_scene *core = NULL;
-    ck_assert(rt_scene_load(path, &core, &error) == RT_OK);
+    ck_assert(rt_scene_load(path, NULL, &core, &error) == RT_OK);
     expected = rt_test_render(core, RT_DEFAULT_DEPTH, 0);
     ck_assert_int_eq(got.width, expected.width);
     ck_assert_int_eq(got.height, expected.height);

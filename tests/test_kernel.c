@@ -81,7 +81,8 @@ START_TEST(project_scenes_render_identically_with_both_kernels)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
         check_scene(scene, (image_size){0, 0}, g.gl_pathv[i]);
         rt_scene_destroy(scene);
@@ -101,7 +102,8 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
         /* 48 x 48 keeps the scalar renders of 10,000 facets short (and
          * 8 x 8 under valgrind) */
@@ -338,7 +340,7 @@ START_TEST(the_cubes_scene_casts_fewer_shadow_rays_than_it_has_hits)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_load(rt_test_source_path("scenes/cubes.scn"),
-                                   &scene, &error),
+                                   NULL, &scene, &error),
                      RT_OK);
     rt_render_stats stats;
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,

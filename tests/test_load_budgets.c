@@ -38,10 +38,9 @@ static rt_status parse_as(rt_scene_format format, const char *text,
     options.tessellation = tolerance;
     options.cancel = cancel;
     memset(error, 0, sizeof *error);
-    return rt_scene_parse_with(text, length,
-                               format == RT_SCENE_FORMAT_NFF ? "t.nff"
-                                                             : "t.scn",
-                               &options, scene, error);
+    return rt_scene_parse(text, length,
+                          format == RT_SCENE_FORMAT_NFF ? "t.nff" : "t.scn",
+                          &options, scene, error);
 }
 
 static rt_scene *load_nff(const char *text)

@@ -24,8 +24,8 @@ static rt_scene *parse_scn(const rt_test_text *t, const char *name)
 {
     rt_scene *scene;
     rt_error error;
-    rt_status status = rt_scene_parse(t->data, t->length, name, &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(t->data, t->length, name, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     return scene;
 }
@@ -465,8 +465,8 @@ START_TEST(repeats_of_another_material_change_no_pixel_of_the_project_scenes)
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         rt_scene *file;
         rt_error error;
-        ck_assert_msg(rt_scene_load(rt_test_source_path(scenes[i]), &file,
-                                    &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(rt_test_source_path(scenes[i]), NULL,
+                                    &file, &error) == RT_OK,
                       "%s", error.message);
         rt_scene *left_out = rebuilt(file, 1), *kept = rebuilt(file, 1);
         ck_assert_int_eq(rt_test_scene_info(left_out).live_facet_count,
@@ -531,7 +531,7 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     const char *name = "evil\x1b]0;owned\x07.scn";
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse("0 0\n", 4, name, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse("0 0\n", 4, name, NULL, &scene, &error),
                      RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "evil\\x1B]0;owned\\x07.scn:1:4: expected 3 values for "
@@ -553,8 +553,8 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     static const char nff[] = "v from 0 -9 0 at 0 0 0 up 0 0 1 angle 45 "
                               "hither 1 resolution 8 8\np 3 0 0 0 1 0 0 0 "
                               "0 1\n";
-    ck_assert_int_eq(rt_scene_parse_with(nff, sizeof nff - 1, "n\x1b.nff",
-                                         &options, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(nff, sizeof nff - 1, "n\x1b.nff", &options,
+                                    &scene, &error),
                      RT_OK);
     for (int i = 0; i < rt_test_scene_info(scene).warning_count; i++) {
         m = rt_scene_warning(scene, i)->message;

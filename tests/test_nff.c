@@ -29,8 +29,7 @@ static rt_status parse_nff(const char *text, double tolerance,
     options.format = RT_SCENE_FORMAT_NFF;
     options.tessellation = tolerance;
     memset(error, 0, sizeof *error);
-    return rt_scene_parse_with(text, strlen(text), "t.nff", &options, scene,
-                               error);
+    return rt_scene_parse(text, strlen(text), "t.nff", &options, scene, error);
 }
 
 static rt_scene *load_nff(const char *text, double tolerance)
@@ -553,9 +552,9 @@ START_TEST(the_loader_picks_nff_by_extension)
     const char *text = VIEW "s 0 0 0 1\n";
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), "ball.NFF", NULL,
-                                         &scene, &error),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), "ball.NFF", NULL, &scene, &error),
+        RT_OK);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -571,7 +570,7 @@ static rt_scene *load_shared(const char *file)
     ck_assert_ptr_nonnull(path);
     rt_scene *scene;
     rt_error error;
-    rt_status status = rt_scene_load_with(path, NULL, &scene, &error);
+    rt_status status = rt_scene_load(path, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     return scene;
 }

@@ -34,8 +34,8 @@ static void refused(const char *text, rt_status status, int line, int column,
     rt_load_options options;
     rt_load_options_init(&options);
     options.format = RT_SCENE_FORMAT_OBJ;
-    rt_status got = rt_scene_parse_with(text, strlen(text), "bad.obj",
-                                        &options, &scene, &error);
+    rt_status got = rt_scene_parse(text, strlen(text), "bad.obj", &options,
+                                   &scene, &error);
     ck_assert_msg(got == status, "status %d, expected %d: %s", (int)got,
                   (int)status, error.message);
     ck_assert_ptr_null(scene);
@@ -512,15 +512,15 @@ START_TEST(binary_and_utf16_input_are_refused_by_the_shared_checks)
     rt_load_options_init(&options);
     options.format = RT_SCENE_FORMAT_OBJ;
     static const char utf16[] = "\xFF\xFEv\0 \0001\0";
-    ck_assert_int_eq(rt_scene_parse_with(utf16, sizeof utf16 - 1, "u.obj",
-                                         &options, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(utf16, sizeof utf16 - 1, "u.obj", &options,
+                                    &scene, &error),
                      RT_ERR_FORMAT);
     ck_assert_ptr_null(scene);
     ck_assert_ptr_nonnull(strstr(error.message, "UTF-16"));
     static const char mac[] = "v 0 0 0\rv 1 0 0\r";
-    ck_assert_int_eq(rt_scene_parse_with(mac, sizeof mac - 1, "m.obj",
-                                         &options, &scene, &error),
-                     RT_ERR_FORMAT);
+    ck_assert_int_eq(
+        rt_scene_parse(mac, sizeof mac - 1, "m.obj", &options, &scene, &error),
+        RT_ERR_FORMAT);
     ck_assert_ptr_nonnull(strstr(error.message, "old Mac line endings"));
 }
 END_TEST

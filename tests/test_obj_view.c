@@ -182,7 +182,8 @@ START_TEST(an_obj_written_as_scn_renders_the_same_bytes)
                          RT_OK);
         rt_scene *again = NULL;
         ck_assert_msg(rt_scene_parse((const char *)b.data, b.size,
-                                     "converted.scn", &again, &error) == RT_OK,
+                                     "converted.scn", NULL, &again,
+                                     &error) == RT_OK,
                       "%s", error.message);
         rt_image direct = rt_test_render(scene, 5, 2);
         rt_image converted = rt_test_render(again, 5, 2);
@@ -217,8 +218,7 @@ START_TEST(real_models_in_raytrace_obj_models_load_and_render)
         options.width = options.height = 64;
         rt_scene *scene = NULL;
         rt_error error;
-        ck_assert_msg(rt_scene_load_with(path, &options, &scene, &error) ==
-                          RT_OK,
+        ck_assert_msg(rt_scene_load(path, &options, &scene, &error) == RT_OK,
                       "%s", error.message);
         rt_scene_info info;
         rt_scene_get_info(scene, &info);

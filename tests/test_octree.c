@@ -100,7 +100,8 @@ static size_t check_directory(const char *dir, int side)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
         rt_scene_info info;
         rt_scene_get_info(scene, &info);

@@ -25,7 +25,8 @@ static rt_scene *parse_ok(const char *text, size_t length)
 {
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, length, "<test>", &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, length, "<test>", NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "status %s: %s", rt_status_string(status),
                   error.message);
     ck_assert_ptr_nonnull(scene);
@@ -232,8 +233,9 @@ START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
                       "0 0 10 255 255 255\n";
     rt_scene *none = NULL;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse(bad, strlen(bad), "<test>", &none, &error),
-                     RT_ERR_SYNTAX);
+    ck_assert_int_eq(
+        rt_scene_parse(bad, strlen(bad), "<test>", NULL, &none, &error),
+        RT_ERR_SYNTAX);
     ck_assert_int_eq(error.line, 4);
     ck_assert_int_eq(error.column, 7);
     setlocale(LC_ALL, "C");

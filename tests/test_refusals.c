@@ -236,8 +236,8 @@ static rt_status parse(const char *text, const char *name,
 {
     rt_scene *scene = NULL;
     memset(error, 0, sizeof *error);
-    rt_status status = rt_scene_parse_with(text, strlen(text), name, options,
-                                           &scene, error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), name, options, &scene, error);
     rt_scene_destroy(scene);
     return status;
 }

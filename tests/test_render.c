@@ -51,7 +51,7 @@ static rt_scene *load_scene(const char *path)
 {
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(path, &scene, &error);
+    rt_status status = rt_scene_load(path, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s does not load: %s", path,
                   error.message);
     return scene;

@@ -59,7 +59,7 @@ static rt_scene *load(const char *path)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load(path, &scene, &error) == RT_OK, "%s",
+    ck_assert_msg(rt_scene_load(path, NULL, &scene, &error) == RT_OK, "%s",
                   error.message);
     return scene;
 }

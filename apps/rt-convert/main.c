@@ -134,7 +134,7 @@ int main(int argc, char **argv)
 
     rt_scene *scene;
     rt_error error;
-    if (rt_scene_load_with(in, &s.load, &scene, &error) != RT_OK) {
+    if (rt_scene_load(in, &s.load, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-convert: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }

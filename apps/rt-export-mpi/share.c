@@ -243,8 +243,8 @@ int share_scene(share_input *input, int verdict, const char *name,
         rt_load_options options = *load;
         options.resolve = share_serve;
         options.resolve_user = &input->files;
-        if (rt_scene_parse_with(input->text, input->length, name, &options,
-                                scene, &error) != RT_OK) {
+        if (rt_scene_parse(input->text, input->length, name, &options, scene,
+                           &error) != RT_OK) {
             fprintf(stderr, "rt-export-mpi: rank %d: %s\n", rank,
                     error.message);
             *scene = NULL;

@@ -7,7 +7,7 @@
  *
  *     rt_scene *scene;
  *     rt_error error;
- *     if (rt_scene_load("cubes.scn", &scene, &error) != RT_OK) {
+ *     if (rt_scene_load("cubes.scn", NULL, &scene, &error) != RT_OK) {
  *         fprintf(stderr, "%s\n", error.message);
  *         return 1;
  *     }

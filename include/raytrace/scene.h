@@ -8,10 +8,11 @@
  * so every function below that takes a `const rt_scene *` may be called from
  * any number of threads at once.
  *
- * The loader reads from memory (rt_scene_parse); rt_scene_load is a thin
- * wrapper that reads a file first.  On failure the out-pointer is set to NULL,
- * nothing is leaked, and the rt_error (if given) says what and where; a NULL
- * where an object or out-pointer is expected is RT_ERR_ARGUMENT.
+ * The loader reads from memory (rt_scene_parse); rt_scene_load reads a
+ * file first.  Both take rt_load_options (NULL for the defaults).  On
+ * failure the out-pointer is set to NULL, nothing is leaked, and the
+ * rt_error (if given) says what and where; a NULL where an object or
+ * out-pointer is expected is RT_ERR_ARGUMENT.
  *
  * The accessors (rt_scene_get_info, rt_scene_vertex, rt_scene_facet,
  * rt_scene_light, rt_scene_source_at, rt_scene_warning) and the queries
@@ -175,22 +176,6 @@ typedef struct rt_scene_desc {
 RT_API rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                                  rt_error *error);
 
-/*
- * Parses a scene from `length` bytes at `text` (no terminating NUL needed).
- * `name` is used in messages as the file name ("<memory>" when NULL).
- * Numbers are read in the C locale whatever the process's locale.
- * Thread-safe.
- */
-RT_API rt_status rt_scene_parse(const char *text, size_t length,
-                                const char *name, rt_scene **scene,
-                                rt_error *error);
-
-/* Reads the file at `path` and parses it in the format its extension
- * names (see rt_scene_format_from_path; .scn when it names none);
- * messages name `path`.  Thread-safe. */
-RT_API rt_status rt_scene_load(const char *path, rt_scene **scene,
-                               rt_error *error);
-
 /* The scene file formats the loader reads. */
 typedef enum rt_scene_format {
     RT_SCENE_FORMAT_AUTO = 0,   /* from the name's extension */
@@ -244,7 +229,7 @@ typedef rt_status (*rt_resolve_func)(void *user, const char *scene_name,
                                      rt_resolved_file *file, rt_error *error);
 
 /*
- * The default resolver of rt_scene_load_with (docs/robustness-input.md,
+ * The default resolver of rt_scene_load (docs/robustness-input.md,
  * "Files a scene names"): `reference` is taken relative to the folder of
  * `scene_name` (the current folder when it has no slash or is NULL) and
  * must stay inside it: no absolute path, no `..` component, no symbolic
@@ -292,7 +277,7 @@ typedef struct rt_load_options {
     rt_cancel *cancel;          /* optional: the load polls it and returns
                                    RT_ERR_CANCELLED soon after it is raised */
     rt_resolve_func resolve;    /* opens the files the scene names; NULL:
-                                   rt_resolve_in_folder for rt_scene_load_with,
+                                   rt_resolve_in_folder for rt_scene_load,
                                    no file at all for a parse from memory */
     void *resolve_user;         /* passed to resolve */
 } rt_load_options;
@@ -332,15 +317,18 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
                                       double *value, rt_error *error);
 
 /*
- * Parses a scene in any format from memory, as rt_scene_parse does for
- * .scn.  `name` names the input in messages and is what the options'
- * resolver locates the files the scene names from (an OBJ's material
- * libraries); without a resolver no file is read (a warning says so).
- * With RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension
- * (.scn when it has none).  `options` may be NULL (the defaults).  Every
- * field of the options is checked whatever the format reads, and one
- * outside its domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond
- * the library's, a format the enum does not name, a tessellation outside
+ * Parses a scene in any format from `length` bytes at `text` (no
+ * terminating NUL needed).  `name` names the input in messages as the
+ * file name ("<memory>" when NULL) and is what the options' resolver
+ * locates the files the scene names from (an OBJ's material libraries);
+ * without a resolver no file is read (a warning says so).  With
+ * RT_SCENE_FORMAT_AUTO (the default) the format comes from `name`'s
+ * extension (.scn when it has none or names no format).  Numbers are read
+ * in the C locale whatever the process's locale.  `options` may be NULL
+ * (the defaults, as rt_load_options_init sets them).  Every field of the
+ * options is checked whatever the format reads, and one outside its
+ * domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond the
+ * library's, a format the enum does not name, a tessellation outside
  * (0, 1) but 0, a side outside 1..RT_MAX_IMAGE_SIDE but 0, a given field
  * of view outside (0, 180), a given look-from, look-at or up that is not
  * finite, a negative light count or lights without an array.  NULL `text`
@@ -348,20 +336,22 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
  * scene's sources (rt_scene_source_at) are the files the resolver gave.
  * Thread-safe.
  */
-RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
-                                     const char *name,
-                                     const rt_load_options *options,
-                                     rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_parse(const char *text, size_t length,
+                                const char *name,
+                                const rt_load_options *options,
+                                rt_scene **scene, rt_error *error);
 
 /* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
  * the first NUL byte, which no scene file holds; FIFOs and terminals are
- * read to their end) and parses it as rt_scene_parse_with does, the files
- * it names read by the options' resolver, rt_resolve_in_folder when they
- * give none.  The scene's first source is the file at `path`.
- * Thread-safe. */
-RT_API rt_status rt_scene_load_with(const char *path,
-                                    const rt_load_options *options,
-                                    rt_scene **scene, rt_error *error);
+ * read to their end) and parses it as rt_scene_parse does, in the format
+ * its extension names by default (see rt_scene_format_from_path; .scn
+ * when it names none); messages name `path`.  The files it names are read
+ * by the options' resolver, rt_resolve_in_folder when they give none (or
+ * `options` is NULL).  The scene's first source is the file at `path`.
+ * A NULL `path` or `scene` is RT_ERR_ARGUMENT.  Thread-safe. */
+RT_API rt_status rt_scene_load(const char *path,
+                               const rt_load_options *options,
+                               rt_scene **scene, rt_error *error);
 
 /* Frees a scene.  rt_scene_destroy(NULL) does nothing.  Not thread-safe on
  * the same scene (no other call may be using it). */

@@ -451,12 +451,3 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
     rt__lex_close(&p.lex);
     return status;
 }
-
-rt_status rt_scene_parse(const char *text, size_t length, const char *name,
-                         rt_scene **scene, rt_error *error)
-{
-    rt_status status = rt__parse_arguments(text, length, name, scene, error);
-    if (status != RT_OK)
-        return status;
-    return rt__scn_parse(text, length, name, NULL, scene, error);
-}

@@ -76,7 +76,7 @@ int parse(char *fname, scene *s)
 
     rt_scene *loaded = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(fname, &loaded, &error);
+    rt_status status = rt_scene_load(fname, NULL, &loaded, &error);
     if (status != RT_OK) {
         fprintf(stderr, "%s\n", error.message);
         return (int)status;

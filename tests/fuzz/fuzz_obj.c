@@ -174,8 +174,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     memset(&error, 0x55, sizeof error);
-    rt_status status = rt_scene_parse_with(text, obj_size, obj_name,
-                                           &options, &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, obj_size, obj_name, &options, &scene, &error);
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);

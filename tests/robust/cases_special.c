@@ -59,8 +59,9 @@ void rb_case_v1(rb_method method, rt_precision precision, rb_result *r)
         }
         rt_scene *scene = NULL;
         rt_error error;
-        if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", &scene,
-                           &error) == RT_OK || scene != NULL)
+        if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", NULL,
+                           &scene, &error) == RT_OK ||
+            scene != NULL)
             r->failures++;
         rt_scene_destroy(scene);
     }

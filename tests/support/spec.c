@@ -324,7 +324,8 @@ void rt_test_spec_check(const char *name, const rt_test_spec *s, double scale,
     char *t = rt_test_spec_text(s, scale);
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(t, strlen(t), name, &scene, &error);
+    rt_status status =
+        rt_scene_parse(t, strlen(t), name, NULL, &scene, &error);
     free(t);
     if (status != RT_OK) {
         ck_assert_msg(may_refuse, "%s: the scene did not load: %s", name,

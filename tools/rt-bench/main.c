@@ -214,7 +214,7 @@ int main(int argc, char **argv)
     const rt_render_options *options = &a.cli.render;
     rt_scene *scene;
     rt_error error;
-    if (rt_scene_load(a.scene, &scene, &error) != RT_OK) {
+    if (rt_scene_load(a.scene, NULL, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-bench: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }

@@ -134,7 +134,7 @@ static rt_status make_scene(const entry *e, const char *shared_dir,
     if (length < 0 || (size_t)length >= sizeof path)
         return RT_ERR_ARGUMENT;
     /* Rendered at the entry's size through the render options. */
-    return rt_scene_load(path, scene, error);
+    return rt_scene_load(path, NULL, scene, error);
 }
 
 /* A hardware counter of this process's threads (those it starts later
