@@ -94,8 +94,10 @@ static void assert_parse_agrees_with_core(const char *path)
     ck_assert_double_eq_tol(s.screenB.z - s.screenA.z, info.camera.right.z,
                             1e-12 * (1 + fabs(s.screenA.z)));
     assert_same_color(s.back, info.background);
-    assert_same_point(s.s.p, info.light_position);
-    assert_same_color(s.s.cp, info.light_color);
+    rt_light light;
+    rt_scene_light(core, 0, &light);
+    assert_same_point(s.s.p, light.position);
+    assert_same_color(s.s.cp, light.color);
     for (int i = 0; i < s.nbPoints; i++)
         assert_same_point(s.points[i], rt_scene_vertex(core, i));
     for (int i = 0; i < s.nbFacets; i++) {

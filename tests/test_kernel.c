@@ -174,8 +174,8 @@ static rt_scene *grid_scene(int n, int jitter)
         .width = 8, .height = 8,
         .vertices = v, .vertex_count = nv, .facets = f, .facet_count = m,
         .background = {10, 20, 30},
-        .light_position = {n / 3.0, n / 4.0, n},
-        .light_color = {255, 255, 255}};
+        .lights = &(rt_light){{n / 3.0, n / 4.0, n}, {255, 255, 255}},
+        .light_count = 1};
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_create(&desc, &scene, &error), RT_OK);

@@ -322,9 +322,10 @@ START_TEST(the_builder_refuses_more_lights_than_the_limit)
     static const rt_vec3 vertices[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     static const rt_facet_desc facet = {{0, 1, 2}, 0, {255, 255, 255},
                                         0, 0, 0, 0};
-    rt_light more[RT_MAX_LIGHTS];
+    rt_light lights[RT_MAX_LIGHTS + 1];
+    lights[0] = (rt_light){{0, 0, 4}, {255, 255, 255}};
     for (int i = 0; i < RT_MAX_LIGHTS; i++)
-        more[i] = (rt_light){{i, 0, 4}, {10, 10, 10}};
+        lights[1 + i] = (rt_light){{i, 0, 4}, {10, 10, 10}};
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     d.observer = (rt_vec3){0, 0, 10};
@@ -335,15 +336,13 @@ START_TEST(the_builder_refuses_more_lights_than_the_limit)
     d.vertex_count = 3;
     d.facets = &facet;
     d.facet_count = 1;
-    d.light_position = (rt_vec3){0, 0, 4};
-    d.light_color = (rt_rgb8){255, 255, 255};
-    d.more_lights = more;
-    d.more_light_count = RT_MAX_LIGHTS - 1;
+    d.lights = lights;
+    d.light_count = RT_MAX_LIGHTS;
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);
     rt_scene_destroy(scene);
-    d.more_light_count = RT_MAX_LIGHTS;
+    d.light_count = RT_MAX_LIGHTS + 1;
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_ERR_LIMIT);
     ck_assert_ptr_null(scene);
     ck_assert_str_eq(error.message, "expected at most 64 lights (each one "

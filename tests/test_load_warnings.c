@@ -340,10 +340,8 @@ static rt_scene *rebuilt(const rt_scene *s, int doubled)
     d.facets = f;
     d.facet_count = n;
     d.background = info.background;
-    d.light_position = l[0].position;
-    d.light_color = l[0].color;
-    d.more_lights = l + 1;
-    d.more_light_count = info.light_count - 1;
+    d.lights = l;
+    d.light_count = info.light_count;
     d.aperture = info.camera.aperture;
     d.focal_distance = info.camera.focal_distance;
     rt_scene *out;
@@ -386,8 +384,8 @@ static rt_scene *tie_scene(const int *order, int n)
     d.vertex_count = 9;
     d.facets = f;
     d.facet_count = n;
-    d.light_position = (rt_vec3){0, 0, 9};
-    d.light_color = (rt_rgb8){255, 255, 255};
+    d.lights = &(rt_light){{0, 0, 9}, {255, 255, 255}};
+    d.light_count = 1;
     rt_scene *scene;
     rt_error error;
     ck_assert_msg(rt_scene_create(&d, &scene, &error) == RT_OK, "%s",

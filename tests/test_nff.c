@@ -344,9 +344,11 @@ START_TEST(a_file_without_light_gets_a_white_light_at_the_eye)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.light_count, 1);
-    ck_assert(info.light_position.x == 1 && info.light_position.y == 2 &&
-              info.light_position.z == 3);
-    ck_assert_int_eq(info.light_color.r, 255);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
+    ck_assert(light.position.x == 1 && light.position.y == 2 &&
+              light.position.z == 3);
+    ck_assert_int_eq(light.color.r, 255);
     ck_assert_int_eq(rt_test_count_warnings(scene, "no light"), 1);
     rt_scene_destroy(scene);
 }

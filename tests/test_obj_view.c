@@ -120,7 +120,10 @@ START_TEST(the_view_and_light_options_replace_the_automatic_ones)
     rt_scene_info info;
     rt_scene_get_info(scene, &info);
     ck_assert(info.camera.observer.z == 10 && info.camera.observer.x == 0);
-    ck_assert(info.light_position.x == 1 && info.light_color.b == 30);
+    ck_assert_int_eq(info.light_count, 1);
+    rt_light first;
+    rt_scene_light(scene, 0, &first);
+    ck_assert(first.position.x == 1 && first.color.b == 30);
     rt_scene_destroy(scene);
 }
 END_TEST

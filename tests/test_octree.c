@@ -212,7 +212,7 @@ static rt_scene *soup_scene(soup *s, rt_vec3 eye, rt_vec3 at, rt_vec3 light,
         .vertices = s->v, .vertex_count = s->nv,
         .facets = s->f, .facet_count = s->nf,
         .background = {20, 30, 40},
-        .light_position = light, .light_color = {255, 240, 220}};
+        .lights = &(rt_light){light, {255, 240, 220}}, .light_count = 1};
     return soup_create(&desc, s);
 }
 
@@ -350,7 +350,8 @@ START_TEST(transparency_lights_and_lens_render_identically)
             s.f[s.nf - 1].n = i % 2 ? 1.5 : 0.7;
         }
     }
-    rt_light lights[2] = {{{-3, 2, 4}, {120, 200, 90}},
+    rt_light lights[3] = {{{1, -2, 5}, {255, 255, 255}},
+                          {{-3, 2, 4}, {120, 200, 90}},
                           {{2, -4, -3}, {200, 80, 150}}};
     rt_scene_desc desc = {
         .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
@@ -360,8 +361,7 @@ START_TEST(transparency_lights_and_lens_render_identically)
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {30, 40, 50},
-        .light_position = {1, -2, 5}, .light_color = {255, 255, 255},
-        .more_lights = lights, .more_light_count = 2,
+        .lights = lights, .light_count = 3,
         .aperture = 0.05, .focal_distance = 4};
     rt_scene *scene = soup_create(&desc, &s);
     check_scene(scene, (image_size){0, 0}, "transparency, lights, lens");
@@ -392,8 +392,8 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {20, 30, 40},
-        .light_position = {1e150, -2e150, 5e151},
-        .light_color = {255, 255, 255}};
+        .lights = &(rt_light){{1e150, -2e150, 5e151}, {255, 255, 255}},
+        .light_count = 1};
     rt_scene *scene = soup_create(&desc, &s);
     for (int samples = 1; samples <= 4; samples += 3) {
         rt_render_stats stats;

@@ -231,7 +231,7 @@ static rt_scene *mesh_scene(mesh *m, rt_vec3 eye, rt_vec3 at, double half,
         .vertices = m->v, .vertex_count = m->nv,
         .facets = m->f, .facet_count = m->nf,
         .background = {20, 30, 40},
-        .light_position = light, .light_color = {255, 240, 220}};
+        .lights = &(rt_light){light, {255, 240, 220}}, .light_count = 1};
     rt_scene *scene;
     rt_error error;
     ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",

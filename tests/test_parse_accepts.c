@@ -222,7 +222,9 @@ START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
     rt_scene_get_info(scene, &info);
     ck_assert_double_eq(info.camera.observer.z, 5.5);
     ck_assert_double_eq(info.camera.screen_center.z, 4.5);
-    ck_assert_double_eq(info.light_position.z, 10.75);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
+    ck_assert_double_eq(light.position.z, 10.75);
     ck_assert_double_eq(rt_scene_vertex(scene, 0).x, -1.5);
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);

@@ -156,16 +156,16 @@ START_TEST(coordinates_beyond_the_arithmetic_are_refused_where_they_are)
     /* the builder refuses it too, for every reader */
     rt_vec3 v[3] = {{0, 0, 0}, {2e152, 0, 0}, {0, 1, 0}};
     rt_facet_desc f = {{0, 1, 2}, 0, {255, 0, 0}};
+    rt_light light = {{0, 0, 10}, {255, 255, 255}};
     rt_scene_desc d = {.observer = {0, 0, 10}, .screen_center = {0, 0, 5},
                        .screen_right = {1, 0, 5}, .width = 8, .height = 8,
                        .vertices = v, .vertex_count = 3, .facets = &f,
-                       .facet_count = 1, .light_position = {0, 0, 10},
-                       .light_color = {255, 255, 255}};
+                       .facet_count = 1, .lights = &light, .light_count = 1};
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_ERR_RANGE);
     ck_assert_ptr_nonnull(strstr(error.message, "at most 1e+152"));
     /* at the limit, and a light far beyond it, the scene loads */
     v[1].x = 1e152;
-    d.light_position = (rt_vec3){0, 0, 1e200};
+    light.position = (rt_vec3){0, 0, 1e200};
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);
     rt_scene_destroy(scene);
 }
@@ -186,8 +186,9 @@ START_TEST(float_refuses_a_scene_it_cannot_resolve)
                            .screen_right = {o + 1, o, o + 5}, .width = 8,
                            .height = 8, .vertices = v, .vertex_count = 3,
                            .facets = &f, .facet_count = 1,
-                           .light_position = {o, o, o + 10},
-                           .light_color = {255, 255, 255}};
+                           .lights = &(rt_light){{o, o, o + 10},
+                                                 {255, 255, 255}},
+                           .light_count = 1};
         rt_scene *scene;
         rt_error error;
         ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);

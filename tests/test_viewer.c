@@ -76,8 +76,8 @@ static rt_scene *heavy_scene(int count, int width, int height)
         .facets = facets,
         .facet_count = count + 1,
         .background = {30, 30, 60},
-        .light_position = {-3, 2, 20},
-        .light_color = {255, 255, 255},
+        .lights = &(rt_light){{-3, 2, 20}, {255, 255, 255}},
+        .light_count = 1,
     };
     rt_scene *scene = NULL;
     rt_error error;

@@ -119,10 +119,8 @@ typedef struct rt_scene_info {
     int warning_count;      /* warnings stored (rt_scene_warning); a warning
                                may stand for many ("... and N more") */
     rt_rgb8 background;
-    rt_vec3 light_position; /* the first light */
-    rt_rgb8 light_color;
     rt_camera camera;
-    int light_count;        /* 1 or more; see rt_scene_light */
+    int light_count;        /* 1..RT_MAX_LIGHTS; each is rt_scene_light */
     int transparent_facet_count; /* live facets with t > 0 */
 } rt_scene_info;
 
@@ -154,10 +152,8 @@ typedef struct rt_scene_desc {
     const rt_facet_desc *facets;
     int facet_count;
     rt_rgb8 background;
-    rt_vec3 light_position; /* the first light */
-    rt_rgb8 light_color;
-    const rt_light *more_lights;    /* further lights (copied), or NULL */
-    int more_light_count;
+    const rt_light *lights; /* the point lights (copied) */
+    int light_count;        /* 1..RT_MAX_LIGHTS */
     double aperture;        /* thin-lens radius a >= 0 (0: pinhole) */
     double focal_distance;  /* f > 0; 0 stands for |AO| */
 } rt_scene_desc;
@@ -166,9 +162,10 @@ typedef struct rt_scene_desc {
  * Builds a scene from `desc`, checking the rules of the rendering model
  * (docs/rendering-model.md): finite coordinates, k and t in [0, 1] with
  * k + t <= 1, n > 0, d >= 0, indices in range, sizes, a >= 0, f >= 0, a
- * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA), at most
- * RT_MAX_LIGHTS lights.  A NULL `desc` or `scene`, a negative count or a
- * missing array is RT_ERR_ARGUMENT.  Messages have no file position;
+ * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA), at least
+ * one light (RT_ERR_RANGE) and at most RT_MAX_LIGHTS (RT_ERR_LIMIT).  A
+ * NULL `desc` or `scene`, a negative count or a missing array is
+ * RT_ERR_ARGUMENT.  Messages have no file position;
  * zero-area facets give warnings (the first 8 one by one, then one that
  * counts the others and lists their lines), and exact repeats of the facet
  * before them one warning.  Thread-safe.

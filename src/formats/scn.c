@@ -376,17 +376,18 @@ static rt_status parse(parser *p, const rt_load_options *options,
     TRY(expect_record(p, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
     TRY(expect_record(p, 6, "the light source `x, y, z, R, G, B`"));
-    TRY(point(p, 0, &d.light_position));
-    TRY(color(p, 3, &d.light_color));
+    rt_light first;
+    TRY(point(p, 0, &first.position));
+    TRY(color(p, 3, &first.color));
 
     /* Further lights, one a line, to the end of the file. */
-    if (p->record_lines_left > 0) {
-        lights = malloc((size_t)p->record_lines_left * sizeof *lights);
-        if (lights == NULL)
-            goto nomem;
-    }
+    lights = malloc((1 + (size_t)p->record_lines_left) * sizeof *lights);
+    if (lights == NULL)
+        goto nomem;
+    lights[0] = first;
+    d.light_count = 1;
     while (p->record_lines_left > 0) {
-        rt_light *light = &lights[d.more_light_count];
+        rt_light *light = &lights[d.light_count];
         static const char what[] = "a further light `x, y, z, R, G, B`";
         TRY(expect_values(p, 1, 6, what));
         /* Something that is not a number is named before any count. */
@@ -405,9 +406,9 @@ static rt_status parse(parser *p, const rt_load_options *options,
         }
         TRY(point(p, 0, &light->position));
         TRY(color(p, 3, &light->color));
-        d.more_light_count++;
+        d.light_count++;
     }
-    d.more_lights = lights;
+    d.lights = lights;
     if (rt__load_cancelled(options)) {
         status = rt__load_cancel(p->error, p->name);
         goto done;

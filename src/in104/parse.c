@@ -112,8 +112,10 @@ int parse(char *fname, scene *s)
     s->screenA = in104_point(info.camera.screen_center);
     s->screenB = in104_point(v3_add(info.camera.screen_center,
                                     info.camera.right));
-    s->s.p = in104_point(info.light_position);
-    s->s.cp = to_color(info.light_color);
+    rt_light light;
+    rt_scene_light(loaded, 0, &light);
+    s->s.p = in104_point(light.position);
+    s->s.cp = to_color(light.color);
     rt_scene_destroy(loaded);
     return 0;
 }

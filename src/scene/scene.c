@@ -93,10 +93,8 @@ static rt_status check_finite(const check *c, const rt_scene_desc *d)
                           camera_fields[i], part, expected, words,
                           "the camera and the light");
     }
-    for (int i = 0; i <= d->more_light_count; i++) {
-        rt_vec3 p = i == 0 ? d->light_position
-                           : d->more_lights[i - 1].position;
-        int part = bad_coordinate(p, 1);
+    for (int i = 0; i < d->light_count; i++) {
+        int part = bad_coordinate(d->lights[i].position, 1);
         if (part >= 0)
             return refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, i,
                           RT_FIELD_POSITION, part, expected, words,
@@ -216,11 +214,17 @@ static rt_status check_desc(const check *c, const rt_scene_desc *d,
         return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
                       "vertex and facet arrays",
                       "expected vertex and facet arrays");
-    if (d->more_light_count < 0 ||
-        (d->more_light_count > 0 && d->more_lights == NULL))
+    if (d->light_count < 0 || (d->light_count > 0 && d->lights == NULL))
         return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
-                      "an array of further lights",
-                      "expected an array of further lights");
+                      "an array of lights", "expected an array of lights");
+    if (d->light_count == 0) {
+        rt_status status = refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, 0,
+                                  RT_FIELD_NONE, 0, RT_RULE_A_LIGHT,
+                                  "expected %s, found none", RT_RULE_A_LIGHT);
+        if (c->refusal != NULL)
+            snprintf(c->refusal->found, sizeof c->refusal->found, "none");
+        return status;
+    }
     rt_status status = check_finite(c, d);
     if (status == RT_OK)
         status = check_camera(c, d, camera);
@@ -232,11 +236,11 @@ static rt_status check_desc(const check *c, const rt_scene_desc *d,
     }
     for (int i = 0; status == RT_OK && i < d->facet_count; i++)
         status = check_facet(c, d, i);
-    if (status == RT_OK && d->more_light_count > RT_MAX_LIGHTS - 1) {
+    if (status == RT_OK && d->light_count > RT_MAX_LIGHTS) {
         status = refuse(c, RT_ERR_LIMIT, RT_ITEM_LIGHT, RT_MAX_LIGHTS,
                         RT_FIELD_NONE, 0, RT_RULE_LIGHTS,
-                        "expected %s, found %.0f", RT_RULE_LIGHTS,
-                        1.0 + d->more_light_count);
+                        "expected %s, found %d", RT_RULE_LIGHTS,
+                        d->light_count);
         if (c->refusal != NULL)
             snprintf(c->refusal->found, sizeof c->refusal->found,
                      "light %d", RT_MAX_LIGHTS + 1);
@@ -402,7 +406,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
-    s->light_count = 1 + d->more_light_count;
+    s->light_count = d->light_count;
     s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
     if ((name && !s->name) || !s->vertices || !s->facets || !s->lights) {
         rt_scene_destroy(s);
@@ -413,9 +417,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
     s->background = d->background;
-    s->lights[0] = (rt_light){d->light_position, d->light_color};
-    for (int i = 0; i < d->more_light_count; i++)
-        s->lights[1 + i] = d->more_lights[i];
+    memcpy(s->lights, d->lights, (size_t)s->light_count * sizeof *s->lights);
     if (d->aperture > 0.0)
         s->camera.aperture = d->aperture;
     if (d->focal_distance > 0.0)
@@ -515,8 +517,6 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
     info->reflective_facet_count = s->reflective_count;
     info->warning_count = s->warning_count;
     info->background = s->background;
-    info->light_position = s->lights[0].position;
-    info->light_color = s->lights[0].color;
     info->camera = s->camera;
     info->light_count = s->light_count;
     info->transparent_facet_count = s->transparent_count;

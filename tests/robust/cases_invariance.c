@@ -37,8 +37,8 @@ void rb_invariance_scene(rb_mesh *m, rb_view *v)
 static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
 {
     uint64_t sig = 1469598103934665603u;
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
     for (int bounce = 0; bounce < 6; bounce++) {
         rt_hit h;
         if (!rt_scene_nearest_hit(scene, ray, INFINITY, &h))
@@ -46,8 +46,8 @@ static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
         rt_facet_info f;
         rt_scene_facet(scene, h.facet, &f);
         rt_vec3 off = rb_add(h.point, rb_scale(h.normal, 1e-9));
-        int lit = rb_dot(h.normal, rb_sub(info.light_position, h.point)) > 0 &&
-                  !rt_scene_occluded(scene, off, info.light_position, h.facet);
+        int lit = rb_dot(h.normal, rb_sub(light.position, h.point)) > 0 &&
+                  !rt_scene_occluded(scene, off, light.position, h.facet);
         sig = (sig ^ (uint64_t)(h.facet * 2 + lit + 7)) * 1099511628211u;
         if (f.k == 0)
             break;

@@ -270,8 +270,16 @@ rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view)
 }
 
 rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
-                          const rt_light *more_lights, int more_light_count)
+                          const rt_light *further, int further_count)
 {
+    rt_light lights[RT_MAX_LIGHTS];
+    if (further_count < 0 || further_count > RT_MAX_LIGHTS - 1) {
+        fprintf(stderr, "robust: %d further lights\n", further_count);
+        return NULL;
+    }
+    lights[0] = (rt_light){view->light, view->light_color};
+    for (int i = 0; i < further_count; i++)
+        lights[1 + i] = further[i];
     rt_scene_desc desc = {
         .observer = view->observer,
         .screen_center = view->screen_center,
@@ -283,10 +291,8 @@ rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
         .facets = mesh->facets,
         .facet_count = mesh->facet_count,
         .background = view->background,
-        .light_position = view->light,
-        .light_color = view->light_color,
-        .more_lights = more_lights,
-        .more_light_count = more_light_count};
+        .lights = lights,
+        .light_count = 1 + further_count};
     rt_scene *scene = NULL;
     rt_error error;
     if (rt_scene_create(&desc, &scene, &error) != RT_OK) {

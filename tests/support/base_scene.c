@@ -56,8 +56,11 @@ void rt_test_assert_base_scene(const rt_scene *scene)
     ck_assert_int_eq(info.background.r, 10);
     ck_assert_int_eq(info.background.g, 20);
     ck_assert_int_eq(info.background.b, 30);
-    ck_assert_double_eq(info.light_position.z, 10.0);
-    ck_assert_int_eq(info.light_color.g, 255);
+    ck_assert_int_eq(info.light_count, 1);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
+    ck_assert_double_eq(light.position.z, 10.0);
+    ck_assert_int_eq(light.color.g, 255);
     ck_assert_double_eq(info.camera.observer.z, 5.0);
     ck_assert_double_eq(info.camera.screen_center.z, 4.0);
     ck_assert_double_eq(info.camera.right.x, 1.0);
