@@ -240,7 +240,7 @@ START_TEST(the_tree_says_what_the_formula_adds)
     ck_assert_int_eq(n[0].kind, RT_RAY_CAMERA);
     ck_assert_int_eq(n[0].facet, 0);
     ck_assert_int_eq(n[0].line, 26);   /* "1, 2, 3, 0.5, ..." */
-    ck_assert_double_eq(n[0].k, 0.5);
+    ck_assert_double_eq(n[0].reflection, 0.5);
     ck_assert_int_eq(n[1].kind, RT_RAY_SHADOW);
     ck_assert_double_eq(n[1].n_dot_s, 1.0);
     ck_assert_double_eq(n[1].e, 1.0);

@@ -170,9 +170,9 @@ static int check_terms(const char *path, int step)
                                   "%s pixel %d,%d ray %zu: terms %.17g, "
                                   "carries %.17g", path, x, y, i, sums[c],
                                   want[c]);
-                if (n[i].transmission == 0)
+                if (n[i].transparency == 0)
                     ck_assert(t.r == 0 && t.g == 0 && t.b == 0);
-                if (n[i].k == 0)
+                if (n[i].reflection == 0)
                     ck_assert(r.r == 0 && r.g == 0 && r.b == 0);
             }
             rt_ray_tree_destroy(tree);

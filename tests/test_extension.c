@@ -182,8 +182,8 @@ START_TEST(clear_sheet_of_index_one_is_invisible)
     for (int i = 0; i < 2; i++) {
         rt_facet_desc *f = i == 0 ? facet(&w, a, b, c, (rt_rgb8){9, 9, 9})
                                   : facet(&w, a, c, d, (rt_rgb8){9, 9, 9});
-        f->t = 1.0;
-        f->n = 1.0;
+        f->transparency = 1.0;
+        f->refractive_index = 1.0;
     }
     w.lights[0].position = (rt_vec3){-3, 2, 12};
     rt_scene *sheet = build(&w);
@@ -274,8 +274,8 @@ START_TEST(slab_shifts_what_is_behind_it_without_deforming_it)
     wall_world(&w);
     int first = box(&w, -6, -4, -400, 400, -40, 40, (rt_rgb8){0, 0, 0});
     for (int i = first; i < w.nf; i++) {
-        w.f[i].t = 1.0;
-        w.f[i].n = 1.5;
+        w.f[i].transparency = 1.0;
+        w.f[i].refractive_index = 1.5;
     }
     rt_scene *slab = build(&w);
     static const double degrees[] = {0, 10, 30, 50, 70};
@@ -307,8 +307,8 @@ START_TEST(total_internal_reflection_begins_at_the_critical_angle)
     int a = vertex(&w, -100, -100, 0), b = vertex(&w, 100, -100, 0),
         c = vertex(&w, 100, 100, 0), d = vertex(&w, -100, 100, 0);
     quad(&w, a, b, c, d, (rt_rgb8){0, 0, 0});
-    w.f[0].t = w.f[1].t = 1.0;
-    w.f[0].n = w.f[1].n = 1.5;
+    w.f[0].transparency = w.f[1].transparency = 1.0;
+    w.f[0].refractive_index = w.f[1].refractive_index = 1.5;
     /* a red floor inside the glass, lit from inside */
     int e = vertex(&w, -100, -100, -5), f = vertex(&w, 100, -100, -5),
         g = vertex(&w, 100, 100, -5), h = vertex(&w, -100, 100, -5);
@@ -466,11 +466,11 @@ START_TEST(builder_refuses_what_the_model_forbids)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         world w;
         cube_world(&w, 8, 8);
-        w.f[3].k = cases[i].k;
-        w.f[3].t = cases[i].t;
-        w.f[3].n = cases[i].n;
-        w.f[3].d = cases[i].d;
-        w.f[3].d_given = cases[i].d_given;
+        w.f[3].reflection = cases[i].k;
+        w.f[3].transparency = cases[i].t;
+        w.f[3].refractive_index = cases[i].n;
+        w.f[3].diffuse = cases[i].d;
+        w.f[3].diffuse_given = cases[i].d_given;
         w.d.aperture = cases[i].aperture;
         w.d.focal_distance = cases[i].focal;
         w.d.vertices = w.v;

@@ -107,7 +107,7 @@ static void assert_parse_agrees_with_core(const char *path)
         assert_same_point(f.a, rt_scene_vertex(core, record.vertex[0]));
         assert_same_point(f.b, rt_scene_vertex(core, record.vertex[1]));
         assert_same_point(f.c, rt_scene_vertex(core, record.vertex[2]));
-        ck_assert_double_eq(f.k, record.k);
+        ck_assert_double_eq(f.k, record.reflection);
         assert_same_color(f.cp, record.color);
         /* exactly createFacet's normal; the core's to a few roundings */
         facet made = createFacet(f.a, f.b, f.c);

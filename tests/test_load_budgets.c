@@ -362,9 +362,9 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
                                "f 1 1 1 1 1e308 0 1e308 1.5\ns 0 0 0 1\n");
     rt_facet_info f;
     rt_scene_facet(scene, 0, &f);
-    ck_assert_double_eq(f.k, 0.5);
-    ck_assert_double_eq(f.t, 0.5);
-    ck_assert_double_eq(f.n, 1.5);
+    ck_assert_double_eq(f.reflection, 0.5);
+    ck_assert_double_eq(f.transparency, 0.5);
+    ck_assert_double_eq(f.refractive_index, 1.5);
     ck_assert_int_eq(rt_test_scene_info(scene).transparent_facet_count,
                      rt_test_scene_info(scene).live_facet_count);
     ck_assert_int_eq(rt_test_count_warnings(scene,
@@ -378,9 +378,9 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
                      "resolution 8 8\nf 1 1 1 1 1.5e308 0 1e308 1.5\n"
                      "s 0 0 0 1\n");
     rt_scene_facet(scene, 0, &f);
-    ck_assert_double_eq_tol(f.k, 0.6, 1e-15);
-    ck_assert_double_eq_tol(f.t, 0.4, 1e-15);
-    ck_assert(f.k + f.t <= 1.0);
+    ck_assert_double_eq_tol(f.reflection, 0.6, 1e-15);
+    ck_assert_double_eq_tol(f.transparency, 0.4, 1e-15);
+    ck_assert(f.reflection + f.transparency <= 1.0);
     rt_scene_destroy(scene);
 }
 END_TEST

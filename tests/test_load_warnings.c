@@ -310,14 +310,15 @@ static rt_scene *rebuilt(const rt_scene *s, int doubled)
     for (int i = 0; i < info.facet_count; i++) {
         rt_facet_info r;
         rt_scene_facet(s, i, &r);
-        rt_facet_desc d = {{r.vertex[0], r.vertex[1], r.vertex[2]}, r.k,
-                           r.color, r.t, r.n, r.d, 1};
+        rt_facet_desc d = {{r.vertex[0], r.vertex[1], r.vertex[2]},
+                           r.reflection, r.color, r.transparency,
+                           r.refractive_index, r.diffuse, 1};
         f[n++] = d;
         if (doubled) {
             d.color = (rt_rgb8){(unsigned char)(255 - r.color.r), 3, 250};
-            d.k = r.k > 0 ? 0 : 0.5;
-            d.t = 0.25;
-            d.d = 0.25;
+            d.reflection = r.reflection > 0 ? 0 : 0.5;
+            d.transparency = 0.25;
+            d.diffuse = 0.25;
             f[n++] = d;
         }
     }

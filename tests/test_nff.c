@@ -286,10 +286,12 @@ START_TEST(colours_and_materials_map_to_the_model)
     ck_assert_int_eq(f.color.r, 51);
     ck_assert_int_eq(f.color.g, 102);
     ck_assert_int_eq(f.color.b, 153);
-    ck_assert(f.d == 0.7 && f.k == 0.2 && f.t == 0.5 && f.n == 1.3);
+    ck_assert(f.diffuse == 0.7 && f.reflection == 0.2 &&
+              f.transparency == 0.5 && f.refractive_index == 1.3);
     /* Kd above 1 stays (the model needs only d >= 0); T = 0: n = 1 */
     rt_scene_facet(scene, 1, &f);
-    ck_assert(f.d == 2 && f.k == 0.25 && f.t == 0 && f.n == 1);
+    ck_assert(f.diffuse == 2 && f.reflection == 0.25 && f.transparency == 0 &&
+              f.refractive_index == 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "Shine"), 1);
     rt_scene_destroy(scene);
 }
@@ -302,9 +304,9 @@ START_TEST(ks_plus_t_above_one_is_scaled_down_with_a_warning)
                                0);
     rt_facet_info f;
     rt_scene_facet(scene, 0, &f);
-    ck_assert_double_eq_tol(f.k, 0.4, 1e-12);
-    ck_assert_double_eq_tol(f.t, 0.6, 1e-12);
-    ck_assert(f.k + f.t <= 1);
+    ck_assert_double_eq_tol(f.reflection, 0.4, 1e-12);
+    ck_assert_double_eq_tol(f.transparency, 0.6, 1e-12);
+    ck_assert(f.reflection + f.transparency <= 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "Ks + T = 1.5"), 1);
     rt_scene_destroy(scene);
 }

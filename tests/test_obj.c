@@ -306,10 +306,10 @@ static void material_is(const rt_scene *scene, int facet, int r, int g,
     ck_assert_msg(f.color.r == r && f.color.g == g && f.color.b == b,
                   "facet %d: colour (%d, %d, %d), expected (%d, %d, %d)",
                   facet, f.color.r, f.color.g, f.color.b, r, g, b);
-    ck_assert_double_eq_tol(f.k, k, 1e-12);
-    ck_assert_double_eq_tol(f.t, t, 1e-12);
-    ck_assert_double_eq_tol(f.n, n, 1e-12);
-    ck_assert_double_eq_tol(f.d, d, 1e-12);
+    ck_assert_double_eq_tol(f.reflection, k, 1e-12);
+    ck_assert_double_eq_tol(f.transparency, t, 1e-12);
+    ck_assert_double_eq_tol(f.refractive_index, n, 1e-12);
+    ck_assert_double_eq_tol(f.diffuse, d, 1e-12);
 }
 
 START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)

@@ -322,7 +322,7 @@ START_TEST(far_and_inside_cameras_render_identically)
     soup t = {0};
     for (int i = 0; i < s.nf; i++)
         soup_add(&t, s.v[3 * i], s.v[3 * i + 1], s.v[3 * i + 2],
-                 s.f[i].k);
+                 s.f[i].reflection);
     rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
                                rt_test_memcheck() ? 12 : 40);
@@ -346,8 +346,8 @@ START_TEST(transparency_lights_and_lens_render_identically)
         rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
         if (i % 3 == 0) {
-            s.f[s.nf - 1].t = 0.6;
-            s.f[s.nf - 1].n = i % 2 ? 1.5 : 0.7;
+            s.f[s.nf - 1].transparency = 0.6;
+            s.f[s.nf - 1].refractive_index = i % 2 ? 1.5 : 0.7;
         }
     }
     rt_light lights[3] = {{{1, -2, 5}, {255, 255, 255}},

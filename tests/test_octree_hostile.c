@@ -328,7 +328,7 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
     for (int i = 0; i < info.facet_count; i++) {
         rt_facet_info f;
         rt_scene_facet(soup, i, &f);
-        mesh_facet(&m, f.vertex[0], f.vertex[1], f.vertex[2], f.k);
+        mesh_facet(&m, f.vertex[0], f.vertex[1], f.vertex[2], f.reflection);
     }
     rt_scene_destroy(soup);
     /* a fan through the soup, tilted, every sliver through its corner */

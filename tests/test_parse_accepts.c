@@ -67,7 +67,7 @@ START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
     rt_scene *scene = parse_ok(text, strlen(text));
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 1.0);
+    ck_assert_double_eq(facet.reflection, 1.0);
     rt_scene_destroy(scene);
     rt_test_base_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL,
                        "\n");
@@ -228,7 +228,7 @@ START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
     ck_assert_double_eq(rt_scene_vertex(scene, 0).x, -1.5);
     rt_facet_info facet;
     rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 0.5);
+    ck_assert_double_eq(facet.reflection, 0.5);
     rt_scene_destroy(scene);
     /* and "1,5 0 0" is four values, not three, whatever the locale */
     const char *bad = "0 0 5\n0 0 4 1 0 0 2 2\n1\n1,5 0 0\n0\n10 20 30\n"

@@ -77,7 +77,7 @@ START_TEST(the_builder_names_the_facet_and_field_it_refuses)
     world w;
     rt_error error;
     make_world(&w);
-    w.facets[1].k = 1.5;
+    w.facets[1].reflection = 1.5;
     rt_refusal r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_K, 0, RT_RULE_K);
     ck_assert_str_eq(r.found, "");
@@ -85,20 +85,20 @@ START_TEST(the_builder_names_the_facet_and_field_it_refuses)
                                     "coefficient k in [0, 1], found 1.5");
     ck_assert_int_eq(error.line, 0);
     make_world(&w);
-    w.facets[0].k = 0.5;
-    w.facets[0].t = 0.6;
+    w.facets[0].reflection = 0.5;
+    w.facets[0].transparency = 0.6;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 0, RT_FIELD_T, 0, RT_RULE_T);
-    w.facets[0].t = -0.1;
+    w.facets[0].transparency = -0.1;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 0, RT_FIELD_T, 0, RT_RULE_T_SIGN);
     make_world(&w);
-    w.facets[1].n = -1.5;
+    w.facets[1].refractive_index = -1.5;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_N, 0, RT_RULE_N);
     make_world(&w);
-    w.facets[1].d_given = 1;
-    w.facets[1].d = -2;
+    w.facets[1].diffuse_given = 1;
+    w.facets[1].diffuse = -2;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_D, 0, RT_RULE_D);
     make_world(&w);
@@ -205,7 +205,7 @@ START_TEST(the_first_rule_a_file_states_is_the_first_refused)
     world w;
     rt_error error;
     make_world(&w);
-    w.facets[0].k = 2;
+    w.facets[0].reflection = 2;
     w.vertices[0].x = 2e152;
     w.d.light_count = RT_MAX_LIGHTS + 1;
     rt_refusal r = refused(&w, RT_ERR_RANGE, &error);
@@ -221,7 +221,7 @@ START_TEST(the_first_rule_a_file_states_is_the_first_refused)
     assert_refusal(&r, RT_ITEM_CAMERA, 0, RT_FIELD_SCREEN_RIGHT, 0,
                    RT_RULE_COORDINATE);
     make_world(&w);
-    w.facets[1].t = 3;
+    w.facets[1].transparency = 3;
     w.d.light_count = RT_MAX_LIGHTS + 1;
     r = refused(&w, RT_ERR_RANGE, &error);
     ck_assert_int_eq(r.item, RT_ITEM_FACET);
@@ -242,7 +242,7 @@ START_TEST(a_build_that_refuses_nothing_leaves_no_refusal)
     ck_assert_int_eq(r.status, RT_OK);
     rt_scene_destroy(scene);
     /* a name puts "name: " before the builder's words */
-    w.facets[0].k = -1;
+    w.facets[0].reflection = -1;
     ck_assert_int_eq(rt__scene_build(&w.d, "named.scn", NULL, NULL, NULL,
                                      &scene, &error, NULL),
                      RT_ERR_RANGE);

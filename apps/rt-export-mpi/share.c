@@ -177,7 +177,8 @@ uint64_t share_digest(const rt_scene *scene)
     for (int i = 0; i < info.facet_count; i++) {
         rt_facet_info f;
         rt_scene_facet(scene, i, &f);
-        double numbers[4] = {f.k, f.t, f.n, f.d};
+        double numbers[4] = {f.reflection, f.transparency, f.refractive_index,
+                             f.diffuse};
         h = mix(h, f.vertex, sizeof f.vertex);
         h = mix(h, numbers, sizeof numbers);
         h = mix(h, &f.color, sizeof f.color);

@@ -88,15 +88,15 @@ typedef struct rt_camera {
 /* What a facet record of the file says. */
 typedef struct rt_facet_info {
     int vertex[3];          /* 0-based indices into the vertex list */
-    double k;               /* reflection coefficient in [0, 1] */
+    double reflection;      /* reflection coefficient k in [0, 1] */
     rt_rgb8 color;
     rt_vec3 normal;         /* unit (b-a)x(c-a); zero for a zero-area facet */
     int degenerate;         /* 0, or why no ray ever meets the facet:
                                RT_FACET_ZERO_AREA, RT_FACET_REPEATED */
     int line;               /* line of the record in the source */
-    double t;               /* transparency in [0, 1], k + t <= 1 */
-    double n;               /* refractive index, > 0 (1 when not given) */
-    double d;               /* diffuse weight >= 0 (1 - k - t in .scn) */
+    double transparency;    /* t in [0, 1], k + t <= 1 */
+    double refractive_index; /* n > 0 (1 when not given) */
+    double diffuse;         /* diffuse weight d >= 0 (1 - k - t in .scn) */
 } rt_facet_info;
 
 /* Values of rt_facet_info.degenerate: facets the renderer leaves out, as
@@ -115,27 +115,29 @@ typedef struct rt_scene_info {
     int facet_count;        /* as in the file, degenerate ones included */
     int live_facet_count;   /* facets that can be hit: facet_count less the
                                zero-area and repeated ones */
-    int reflective_facet_count; /* live facets with k > 0 */
+    int reflective_facet_count; /* live facets with reflection k > 0 */
     int warning_count;      /* warnings stored (rt_scene_warning); a warning
                                may stand for many ("... and N more") */
     rt_rgb8 background;
     rt_camera camera;
     int light_count;        /* 1..RT_MAX_LIGHTS; each is rt_scene_light */
-    int transparent_facet_count; /* live facets with t > 0 */
+    int transparent_facet_count; /* live facets with transparency t > 0 */
 } rt_scene_info;
 
 /*
- * A facet to build a scene from.  A description zeroed beyond `color` is a
- * handout facet: opaque (t = 0), n = 1, d = 1 - k.
+ * A facet to build a scene from, with the rendering model's symbols
+ * (docs/rendering-model.md) in the comments.  A description zeroed beyond
+ * `color` is a handout facet: opaque (t = 0), n = 1, d = 1 - k.
  */
 typedef struct rt_facet_desc {
     int vertex[3];          /* 0-based indices into the vertex array */
-    double k;               /* reflection coefficient in [0, 1] */
+    double reflection;      /* reflection coefficient k in [0, 1] */
     rt_rgb8 color;
-    double t;               /* transparency: t >= 0, k + t <= 1 */
-    double n;               /* refractive index > 0; 0 stands for 1 */
-    double d;               /* diffuse weight >= 0, used when d_given */
-    int d_given;            /* 0: d = 1 - k - t (the .scn rule) */
+    double transparency;    /* t >= 0, k + t <= 1 */
+    double refractive_index; /* n > 0; 0 stands for 1 */
+    double diffuse;         /* diffuse weight d >= 0, used when
+                               diffuse_given */
+    int diffuse_given;      /* 0: d = 1 - k - t (the .scn rule) */
 } rt_facet_desc;
 
 /*

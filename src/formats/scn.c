@@ -242,10 +242,10 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
 {
     rt_status status = RT_OK;
     if (p->value_count > 7)
-        status = number(p, 7, &f->t);
+        status = number(p, 7, &f->transparency);
     if (status == RT_OK && p->value_count > 8) {
-        status = number(p, 8, &f->n);
-        if (status == RT_OK && f->n == 0.0)
+        status = number(p, 8, &f->refractive_index);
+        if (status == RT_OK && f->refractive_index == 0.0)
             status = fail_at(p, RT_ERR_RANGE, RT_RULE_N, &p->values[8]);
     }
     return status;
@@ -366,7 +366,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
             TRY(integer(p, j, 1, d.vertex_count, "a vertex index", &vertex));
             f->vertex[j] = vertex - 1;
         }
-        TRY(number(p, 3, &f->k));
+        TRY(number(p, 3, &f->reflection));
         TRY(color(p, 4, &f->color));
         TRY(transparency(p, f));
         facet_lines[i] = p->record_line;

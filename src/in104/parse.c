@@ -54,7 +54,7 @@ static int copy_geometry(const rt_scene *loaded, const rt_scene_info *info,
         f->a = s->points[record.vertex[0]];
         f->b = s->points[record.vertex[1]];
         f->c = s->points[record.vertex[2]];
-        f->k = record.k;
+        f->k = record.reflection;
         f->cp = to_color(record.color);
         /* The normal createFacet() gives, so both agree to the last bit. */
         in104_frame frame;

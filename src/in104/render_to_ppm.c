@@ -51,7 +51,7 @@ static rt_status build(const scene *s, rt_scene **built)
         facets[i].vertex[0] = 3 * i;
         facets[i].vertex[1] = 3 * i + 1;
         facets[i].vertex[2] = 3 * i + 2;
-        facets[i].k = f->k;
+        facets[i].reflection = f->k;
         facets[i].color = to_rgb8(f->cp);
     }
 

@@ -173,20 +173,20 @@ static rt_status check_facet(const check *c, const rt_scene_desc *d, int i)
                           "facet %d: expected a vertex index in 0..%d, "
                           "found %d", i, d->vertex_count - 1, f->vertex[j]);
     static const char words[] = "facet %d: expected %s, found %g";
-    if (!(f->k >= 0.0 && f->k <= 1.0))
+    if (!(f->reflection >= 0.0 && f->reflection <= 1.0))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_K, 0,
-                      RT_RULE_K, words, i, RT_RULE_K, f->k);
-    if (!(f->t >= 0.0 && f->t <= 1.0 - f->k)) {
-        const char *rule = f->t >= 0.0 ? RT_RULE_T : RT_RULE_T_SIGN;
+                      RT_RULE_K, words, i, RT_RULE_K, f->reflection);
+    if (!(f->transparency >= 0.0 && f->transparency <= 1.0 - f->reflection)) {
+        const char *rule = f->transparency >= 0.0 ? RT_RULE_T : RT_RULE_T_SIGN;
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_T, 0, rule,
-                      words, i, rule, f->t);
+                      words, i, rule, f->transparency);
     }
-    if (!(f->n >= 0.0 && isfinite(f->n)))
+    if (!(f->refractive_index >= 0.0 && isfinite(f->refractive_index)))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_N, 0,
-                      RT_RULE_N, words, i, RT_RULE_N, f->n);
-    if (f->d_given && !(f->d >= 0.0 && isfinite(f->d)))
+                      RT_RULE_N, words, i, RT_RULE_N, f->refractive_index);
+    if (f->diffuse_given && !(f->diffuse >= 0.0 && isfinite(f->diffuse)))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_D, 0,
-                      RT_RULE_D, words, i, RT_RULE_D, f->d);
+                      RT_RULE_D, words, i, RT_RULE_D, f->diffuse);
     return RT_OK;
 }
 
@@ -344,10 +344,13 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
         rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
                 c = d->vertices[f->vertex[2]];
         memcpy(info->vertex, f->vertex, sizeof info->vertex);
-        info->k = f->k;
-        info->t = f->t;
-        info->n = f->n > 0.0 ? f->n : 1.0;
-        info->d = f->d_given ? f->d : 1.0 - f->k - f->t;
+        info->reflection = f->reflection;
+        info->transparency = f->transparency;
+        info->refractive_index =
+            f->refractive_index > 0.0 ? f->refractive_index : 1.0;
+        info->diffuse = f->diffuse_given
+                            ? f->diffuse
+                            : 1.0 - f->reflection - f->transparency;
         info->color = f->color;
         info->line = facet_lines ? facet_lines[i] : 0;
         info->normal = facet_normal(a, b, c);
@@ -367,8 +370,8 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
         check_edge_on(notes, name, i, info->line, info->normal, a, b, c,
                       d->observer);
         s->live_count++;
-        s->reflective_count += f->k > 0.0;
-        s->transparent_count += f->t > 0.0;
+        s->reflective_count += f->reflection > 0.0;
+        s->transparent_count += f->transparency > 0.0;
     }
     add_repeat_warning(notes, name, &r);
     return 1;

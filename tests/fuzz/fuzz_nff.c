@@ -55,8 +55,9 @@ static void inspect(const rt_scene *scene)
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.t >= 0.0 && facet.k + facet.t <= 1.0);
-        require(facet.d >= 0.0 && facet.n > 0.0);
+        require(facet.reflection >= 0.0 && facet.transparency >= 0.0 &&
+                facet.reflection + facet.transparency <= 1.0);
+        require(facet.diffuse >= 0.0 && facet.refractive_index > 0.0);
     }
     for (int i = 0; i < info.light_count; i++) {
         rt_light light;

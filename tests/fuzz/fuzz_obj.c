@@ -113,8 +113,9 @@ static void inspect(const rt_scene *scene)
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.t >= 0.0 && facet.k + facet.t <= 1.0);
-        require(facet.n > 0.0 && facet.d >= 0.0);
+        require(facet.reflection >= 0.0 && facet.transparency >= 0.0 &&
+                facet.reflection + facet.transparency <= 1.0);
+        require(facet.refractive_index > 0.0 && facet.diffuse >= 0.0);
     }
     for (int i = 0; i < info.warning_count; i++) {
         const rt_warning *w = rt_scene_warning(scene, i);

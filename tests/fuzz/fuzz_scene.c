@@ -69,7 +69,7 @@ static void inspect(const rt_scene *scene)
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.k <= 1.0);
+        require(facet.reflection >= 0.0 && facet.reflection <= 1.0);
     }
     for (int i = 0; i < info.warning_count; i++) {
         const rt_warning *w = rt_scene_warning(scene, i);

@@ -49,7 +49,7 @@ static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
         int lit = rb_dot(h.normal, rb_sub(light.position, h.point)) > 0 &&
                   !rt_scene_occluded(scene, off, light.position, h.facet);
         sig = (sig ^ (uint64_t)(h.facet * 2 + lit + 7)) * 1099511628211u;
-        if (f.k == 0)
+        if (f.reflection == 0)
             break;
         rt_vec3 d = rb_scale(ray.direction, 1 / rb_length(ray.direction));
         d = rb_sub(d, rb_scale(h.normal, 2 * rb_dot(d, h.normal)));
@@ -101,7 +101,7 @@ rt_image rb_render_view(const rb_mesh *base, const rb_view *base_view,
         rb_mesh_vertex(&m, rb_transform_point(base->vertices[i], scale, shift));
     for (int i = 0; i < base->facet_count; i++)
         rb_mesh_facet(&m, base->facets[i].vertex[0], base->facets[i].vertex[1],
-                      base->facets[i].vertex[2], base->facets[i].k,
+                      base->facets[i].vertex[2], base->facets[i].reflection,
                       base->facets[i].color);
     rb_view view = *base_view;
     rb_view_transform(&view, scale, shift);

@@ -203,10 +203,10 @@ static N(scene) *N(create)(const rt_scene *scene, int method)
         f->b = N(from)(rt_scene_vertex(scene, fi.vertex[1]));
         f->c = N(from)(rt_scene_vertex(scene, fi.vertex[2]));
         f->n = N(unit)(N(cross)(N(sub)(f->b, f->a), N(sub)(f->c, f->a)));
-        f->k = (R)fi.k;
-        f->t = (R)fi.t;
-        f->ior = (R)fi.n;
-        f->d = (R)fi.d;
+        f->k = (R)fi.reflection;
+        f->t = (R)fi.transparency;
+        f->ior = (R)fi.refractive_index;
+        f->d = (R)fi.diffuse;
         f->color[0] = fi.color.r, f->color[1] = fi.color.g,
         f->color[2] = fi.color.b;
     }

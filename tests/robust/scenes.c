@@ -256,11 +256,11 @@ void rb_mesh_orient_outward(rb_mesh *m, int first, rt_vec3 inside)
 void rb_mesh_glass(rb_mesh *m, int first, double t, double n)
 {
     for (int i = first; i < m->facet_count; i++) {
-        m->facets[i].k = 0;
-        m->facets[i].t = t;
-        m->facets[i].n = n;
-        m->facets[i].d = 0;
-        m->facets[i].d_given = 1;
+        m->facets[i].reflection = 0;
+        m->facets[i].transparency = t;
+        m->facets[i].refractive_index = n;
+        m->facets[i].diffuse = 0;
+        m->facets[i].diffuse_given = 1;
     }
 }
 

@@ -76,7 +76,7 @@ void rt_test_assert_base_scene(const rt_scene *scene)
     ck_assert_int_eq(facet.vertex[0], 0);
     ck_assert_int_eq(facet.vertex[1], 1);
     ck_assert_int_eq(facet.vertex[2], 2);
-    ck_assert_double_eq(facet.k, 0.0);
+    ck_assert_double_eq(facet.reflection, 0.0);
     ck_assert_int_eq(facet.color.r, 255);
     ck_assert_int_eq(facet.color.g, 0);
     ck_assert_int_eq(facet.degenerate, 0);

@@ -48,9 +48,11 @@ bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
         rt_scene_facet(scene, i, &f);
         if (f.degenerate)
             continue;
-        double carried = f.k + f.t;
-        double local = f.d * max3(light[0] * f.color.r, light[1] * f.color.g,
-                                  light[2] * f.color.b) / 255.0;
+        double carried = f.reflection + f.transparency;
+        double local = f.diffuse *
+                       max3(light[0] * f.color.r, light[1] * f.color.g,
+                            light[2] * f.color.b) /
+                       255.0;
         b.peak = fmax(b.peak, bench_peak_needed(local, carried));
         if (top < 0 || carried > b.k_max) {
             top = i;
@@ -74,7 +76,8 @@ bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
             coplanar &= distance_to_plane(rt_scene_vertex(scene, g.vertex[v]),
                                           a, f.normal) <= tolerance;
         if (!coplanar)
-            b.pair = fmax(b.pair, (f.k + f.t) * (g.k + g.t));
+            b.pair = fmax(b.pair, (f.reflection + f.transparency) *
+                                      (g.reflection + g.transparency));
     }
     return b;
 }

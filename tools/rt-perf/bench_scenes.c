@@ -132,7 +132,7 @@ rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
         f[i].vertex[0] = 3 * i;
         f[i].vertex[1] = 3 * i + 1;
         f[i].vertex[2] = 3 * i + 2;
-        f[i].k = i % 3 == 0 ? 0.3 : 0.0;
+        f[i].reflection = i % 3 == 0 ? 0.3 : 0.0;
         f[i].color = (rt_rgb8){(unsigned char)(64 + next(&state) % 192),
                                (unsigned char)(64 + next(&state) % 192),
                                (unsigned char)(64 + next(&state) % 192)};
