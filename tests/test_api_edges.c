@@ -324,6 +324,15 @@ static rt_region region(int x0, int y0, int x1, int y1)
     return (rt_region){x0, y0, x1, y1};
 }
 
+/* Stats whose size the caller set to `size` (0 or short of the layout
+ * of 0.3 are refused before any work). */
+static rt_render_stats *stats_of_size(size_t size)
+{
+    static rt_render_stats stats;
+    stats.size = size;
+    return &stats;
+}
+
 #define EDIT(name, word, statement)                                          \
     static void name(rt_render_options *o) { statement; }
 #define EDIT_ROW(name, word, statement) {#statement, word, name},
@@ -352,7 +361,10 @@ static rt_region region(int x0, int y0, int x1, int y1)
     X(e21, "pixels", o->height = RT_MAX_IMAGE_SIDE + 1)                      \
     X(e22, "region", o->region = region(0, 0, 41, 1))                        \
     X(e23, "region", o->region = region(1, 1, 1, 1))                         \
-    X(e24, "region", o->region = region(-1, 0, 1, 1))
+    X(e24, "region", o->region = region(-1, 0, 1, 1))                        \
+    X(e25, "render stats", o->stats = stats_of_size(0))                      \
+    X(e26, "render stats",                                                   \
+      o->stats = stats_of_size(offsetof(rt_render_stats, refraction_rays)))
 
 OPTION_EDITS(EDIT)
 

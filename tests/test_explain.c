@@ -203,7 +203,7 @@ START_TEST(the_reported_blocker_really_blocks)
                 if (n[i].kind != RT_RAY_SHADOW || !n[i].cast || n[i].e > 0)
                     continue;
                 ck_assert_int_ge(n[i].blocker, 0);
-                rt_facet_info f;
+                rt_facet_info f = {.size = sizeof f};
                 rt_scene_facet(scene, n[i].blocker, &f);
                 ck_assert_int_eq(n[i].blocker_line, f.line);
                 ck_assert_int_gt(f.line, 0);

@@ -145,7 +145,7 @@ static int check_terms(const char *path, int step)
                   error.message);
     rt_render_options options;
     rt_render_options_init(&options);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     int total = 0;
     for (int y = 0; y < info.height; y += step)

@@ -135,7 +135,7 @@ START_TEST(two_lights_add_up_channel_by_channel)
     w.lights[1] = lights[1];
     w.d.light_count = 2;
     rt_scene *scene = build(&w);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.light_count, 2);
     rt_image both = render_with(scene, 5, 1, -1, 0);

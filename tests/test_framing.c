@@ -118,7 +118,7 @@ static rt_camera loaded_camera(const char *text, const char *name,
     ck_assert_msg(rt_scene_parse(text, strlen(text), name, options, &scene,
                                  &error) == RT_OK,
                   "%s", error.message);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_scene_destroy(scene);
     return info.camera;

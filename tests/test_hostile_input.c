@@ -62,7 +62,7 @@ START_TEST(scene_corpus_replays_without_fault)
         ck_assert_msg(!broken || status != RT_OK, "%s loaded",
                       entry->d_name);
         if (status == RT_OK) {
-            rt_scene_info info;
+            rt_scene_info info = {.size = sizeof info};
             rt_scene_get_info(scene, &info);
             rt_ray ray = rt_camera_ray(&info.camera, info.width - 1,
                                        info.height - 1);

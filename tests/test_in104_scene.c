@@ -71,7 +71,7 @@ static void assert_parse_agrees_with_core(const char *path)
     rt_error error;
     ck_assert_msg(rt_scene_load(path, NULL, &core, &error) == RT_OK, "%s",
                   error.message);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(core, &info);
 
     scene s;
@@ -101,7 +101,7 @@ static void assert_parse_agrees_with_core(const char *path)
     for (int i = 0; i < s.nbPoints; i++)
         assert_same_point(s.points[i], rt_scene_vertex(core, i));
     for (int i = 0; i < s.nbFacets; i++) {
-        rt_facet_info record;
+        rt_facet_info record = {.size = sizeof record};
         rt_scene_facet(core, i, &record);
         facet f = s.facets[i];
         assert_same_point(f.a, rt_scene_vertex(core, record.vertex[0]));

@@ -360,7 +360,7 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
     rt_scene *scene = load_nff("v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 "
                                "hither 1 resolution 8 8\n"
                                "f 1 1 1 1 1e308 0 1e308 1.5\ns 0 0 0 1\n");
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, 0, &f);
     ck_assert_double_eq(f.reflection, 0.5);
     ck_assert_double_eq(f.transparency, 0.5);

@@ -216,10 +216,10 @@ START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
                      "just before them exactly (the same vertices in the "
                      "same order), the first facet 2: they are never hit "
                      "and change no pixel");
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(b, 5000, &f);
     ck_assert_int_eq(f.degenerate, RT_FACET_REPEATED);
-    rt_render_stats sa, sb;
+    rt_render_stats sa = {.size = sizeof sa}, sb = {.size = sizeof sb};
     rt_render_options options;
     rt_render_options_init(&options);
     options.accel = RT_ACCEL_NONE;  /* tests as brute force counts them */
@@ -237,7 +237,7 @@ START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
      * with 10 001 times the tests. */
     rt_scene *kept = parse_scn(&many, "many.scn");
     keep_repeats(kept);
-    rt_render_stats sk;
+    rt_render_stats sk = {.size = sizeof sk};
     options.stats = &sk;
     rt_image ik = rt_test_render_with(kept, &options);
     ck_assert_mem_eq(ia.pixels, ik.pixels, (size_t)ia.height * ia.stride);
@@ -276,7 +276,7 @@ START_TEST(only_a_repeat_of_the_facet_kept_just_before_is_left_out)
     static const int expected[6] = {0, RT_FACET_ZERO_AREA, RT_FACET_REPEATED,
                                     RT_FACET_REPEATED, 0, 0};
     for (int i = 0; i < 6; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert_msg(f.degenerate == expected[i], "facet %d: %d", i + 1,
                       f.degenerate);
@@ -308,7 +308,7 @@ static rt_scene *rebuilt(const rt_scene *s, int doubled)
         v[i] = rt_scene_vertex(s, i);
     int n = 0;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info r;
+        rt_facet_info r = {.size = sizeof r};
         rt_scene_facet(s, i, &r);
         rt_facet_desc d = {{r.vertex[0], r.vertex[1], r.vertex[2]},
                            r.reflection, r.color, r.transparency,

@@ -52,7 +52,7 @@ static void refused(const char *text, rt_status status, int line, int column,
 
 static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, i, &f);
     ck_assert_msg(f.vertex[0] == a && f.vertex[1] == b && f.vertex[2] == c,
                   "facet %d is (%d, %d, %d), expected (%d, %d, %d)", i,
@@ -61,7 +61,7 @@ static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
 
 static int facet_count(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     return info.facet_count;
 }
@@ -176,7 +176,7 @@ static void check_polygon(const double (*p)[2], int n, rt_vec3 origin,
     ck_assert_int_eq(facet_count(scene), n - 2);
     double total = 0;
     for (int i = 0; i < n - 2; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert(!f.degenerate);
         rt_vec3 a = rt_scene_vertex(scene, f.vertex[0]),
@@ -277,12 +277,12 @@ START_TEST(corners_on_a_straight_line_and_repeated_corners_add_no_facet)
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 1 0\nv 2 2 0\n"
                           "v 1 2 0\nv 0 2 0\nv 0 1 0\n"
                           "f 1 2 2 3 4 5 6 7 8\n");
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
     double total = 0;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         total += tri_area(rt_scene_vertex(scene, f.vertex[0]),
                           rt_scene_vertex(scene, f.vertex[1]),
@@ -301,7 +301,7 @@ END_TEST
 static void material_is(const rt_scene *scene, int facet, int r, int g,
                         int b, double k, double t, double n, double d)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, facet, &f);
     ck_assert_msg(f.color.r == r && f.color.g == g && f.color.b == b,
                   "facet %d: colour (%d, %d, %d), expected (%d, %d, %d)",
@@ -363,7 +363,7 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     rt_scene *scene =
         rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 0);
     rt_scene_destroy(scene);
@@ -404,7 +404,7 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
     ck_assert_int_eq(rt_test_count_warnings(scene, "`p` statements"), 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "vertex normals"), 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:6:1: warning"), 1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 5);
     rt_scene_destroy(scene);
@@ -459,7 +459,7 @@ START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
     ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:7: warning: `1` "
                                           "refers to no normal"),
                      1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 2);
     rt_scene_destroy(scene);

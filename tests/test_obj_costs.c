@@ -170,7 +170,7 @@ START_TEST(a_convex_face_of_100000_corners_gives_n_minus_2_facets_cut_balanced)
     int *uses = calloc((size_t)n, sizeof *uses), most = 0;
     ck_assert_ptr_nonnull(uses);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert(f.normal.z > 0);      /* the face's winding */
         for (int k = 0; k < 3; k++)

@@ -75,7 +75,7 @@ static rt_scene *load(const char *dir, const char *name)
 
 static rt_rgb8 facet_color(const rt_scene *scene, int i)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, i, &f);
     return f.color;
 }
@@ -639,10 +639,10 @@ START_TEST(the_obj_corpus_replays_without_fault)
         rt_status status =
             rt_scene_parse(text, size, name, &options, &scene, &error);
         if (status == RT_OK) {
-            rt_scene_info info;
+            rt_scene_info info = {.size = sizeof info};
             rt_scene_get_info(scene, &info);
             for (int i = 0; i < info.facet_count; i++) {
-                rt_facet_info facet;
+                rt_facet_info facet = {.size = sizeof facet};
                 rt_scene_facet(scene, i, &facet);
                 ck_assert_msg(facet.degenerate != RT_FACET_ZERO_AREA,
                               "%s: a facet without area", entry->d_name);

@@ -55,7 +55,7 @@ static void every_vertex_inside_the_image(const char *text, int width,
     rt_error error;
     ck_assert_msg(rt_test_parse_obj(text, &options, &scene, &error) == RT_OK,
                   "%s", error.message);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, width > 0 ? width : height > 0 ? height : 512);
     ck_assert_int_eq(info.height, height > 0 ? height : info.width);
@@ -117,7 +117,7 @@ START_TEST(the_view_and_light_options_replace_the_automatic_ones)
     ck_assert_int_eq(rt_test_parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
                                        &options, &scene, &error),
                      RT_OK);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert(info.camera.observer.z == 10 && info.camera.observer.x == 0);
     ck_assert_int_eq(info.light_count, 1);
@@ -139,7 +139,7 @@ static int is_background(const rt_image *image, int x, int y,
 START_TEST(a_cube_renders_framed_with_its_red_top_lit)
 {
     rt_scene *scene = rt_test_load_source_scene("tests/data/obj/cube.obj");
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 12);
     ck_assert_int_eq(info.live_facet_count, 12);
@@ -223,7 +223,7 @@ START_TEST(real_models_in_raytrace_obj_models_load_and_render)
         rt_error error;
         ck_assert_msg(rt_scene_load(path, &options, &scene, &error) == RT_OK,
                       "%s", error.message);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         ck_assert_int_gt(info.live_facet_count, 0);
         rt_image image = rt_test_render(scene, 1, 2);

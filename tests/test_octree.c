@@ -61,7 +61,8 @@ static void check_scene(const rt_scene *scene, image_size size,
         if (rt_scene_check_precision(scene, precision, NULL) != RT_OK)
             continue;
         for (int samples = 1; samples <= 4; samples += 3) {
-            rt_render_stats s_ref, s_oct;
+            rt_render_stats s_ref = {.size = sizeof s_ref};
+            rt_render_stats s_oct = {.size = sizeof s_oct};
             rt_image ref = render(scene, &size, precision, RT_ACCEL_NONE, 1,
                                   samples,
                                   &s_ref);
@@ -103,7 +104,7 @@ static size_t check_directory(const char *dir, int side)
         ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
                           RT_OK,
                       "%s", error.message);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         int w = side && info.width > side ? side : info.width;
         int h = side && info.height > side ? side : info.height;
@@ -396,7 +397,7 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
         .light_count = 1};
     rt_scene *scene = soup_create(&desc, &s);
     for (int samples = 1; samples <= 4; samples += 3) {
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         rt_image ref = render(scene, &full_size, RT_PRECISION_DOUBLE,
                               RT_ACCEL_NONE, 1,
                               samples, NULL);
@@ -508,7 +509,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
     for (int i = 0; i < (rt_test_memcheck() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, (int)uniform(0, 3000), &f);
         rt_vec3 t = rt_scene_vertex(scene, f.vertex[i % 3]);
         if (i % 2)
@@ -547,7 +548,7 @@ START_TEST(auto_uses_the_octree_from_the_threshold_on)
                      RT_OK);
     ck_assert_int_eq(bench_soup(RT_ACCEL_AUTO_FACETS * 4, 8, 8, &big, &error),
                      RT_OK);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image a = render(small, &full_size, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO,
                         1, 1,
                         &stats);
@@ -574,7 +575,8 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(bench_sphere(3000, 16, 16, &scene, &error), RT_OK);
-    rt_render_stats first, second;
+    rt_render_stats first = {.size = sizeof first};
+    rt_render_stats second = {.size = sizeof second};
     rt_image a = render(scene, &full_size, RT_PRECISION_FLOAT,
                         RT_ACCEL_OCTREE, 2, 1,
                         &first);
@@ -603,7 +605,7 @@ START_TEST(a_degenerate_scene_keeps_the_octree_bounded)
         soup_add(&s, c, jitter(c, 10), jitter(c, 10), 0.0);
     rt_scene *scene = soup_scene(&s, (rt_vec3){1, -30, 1}, c,
                                  (rt_vec3){5, -5, 20}, 4);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
                             RT_ACCEL_OCTREE, 1, 1,
                             &stats);

@@ -98,7 +98,7 @@ static int row_equals(const rt_image *a, const rt_image *b, int y)
  * the window shows at the end. */
 static rt_image show_until_done(rt_scene *scene, int threads)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     view_window *window = rt_test_view_window_open(info.width, info.height);
     view_session *session = rt_test_view_session(scene, threads, NULL, NULL);

@@ -165,7 +165,7 @@ int cli_export_load(cli_export *ex, int check_output)
 
 void cli_export_print_warnings(const cli_export *ex)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(ex->scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "%s: %s\n", ex->program->name,
@@ -334,8 +334,7 @@ int cli_export_render(cli_export *ex)
                        ex->report.height, ex->report.width,
                        ex->settings->render.samples);
     cli_progress *shown = wants_progress(ex) ? &progress : NULL;
-    rt_render_stats stats;
-    memset(&stats, 0, sizeof stats);
+    rt_render_stats stats = {.size = sizeof stats};
     code = ex->config.bands
                ? ex->config.bands(ex->config.user, ex, shown, &image, &stats)
                : render_here(ex, shown, &image, &stats);

@@ -138,7 +138,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "rt-convert: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-convert: %s\n", rt_scene_warning(scene, i)->message);

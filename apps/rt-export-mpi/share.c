@@ -157,7 +157,7 @@ static uint64_t mix(uint64_t h, const void *data, size_t size)
 uint64_t share_digest(const rt_scene *scene)
 {
     uint64_t h = 14695981039346656037u;
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *c = &info.camera;
     h = mix(h, &c->observer, sizeof c->observer);
@@ -175,7 +175,7 @@ uint64_t share_digest(const rt_scene *scene)
         h = mix(h, &v, sizeof v);
     }
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         double numbers[4] = {f.reflection, f.transparency, f.refractive_index,
                              f.diffuse};

@@ -85,8 +85,26 @@ typedef struct rt_camera {
                                distance that stays sharp (default |AO|) */
 } rt_camera;
 
+/*
+ * How the structs the library fills grow (rt_scene_info, rt_facet_info
+ * here, rt_render_stats in raytrace/render.h), as the option structs do
+ * (raytrace/render.h, above rt_render_options): the first field, `size`,
+ * is set by the caller to sizeof the struct as it was compiled (`info.size
+ * = sizeof info`, or `rt_scene_info info = {.size = sizeof info}`) before
+ * each call, and the library keeps it.  New fields are only ever appended.
+ * The library fills the fields that lie wholly within `size` and writes
+ * nothing beyond it; bytes within `size` past the fields it knows (a
+ * program built against a newer header) it sets to zero.  A size of 0 (a
+ * struct never set) or one that does not reach the last field of the
+ * layout of 0.3, the first with `size`, is a programmer's error: where the
+ * function returns a status it is RT_ERR_ARGUMENT with a message giving
+ * both sizes; the accessors below assert, and where NDEBUG compiles the
+ * assert out they write nothing at all.
+ */
+
 /* What a facet record of the file says. */
 typedef struct rt_facet_info {
+    size_t size;            /* sizeof(rt_facet_info), set by the caller */
     int vertex[3];          /* 0-based indices into the vertex list */
     double reflection;      /* reflection coefficient k in [0, 1] */
     rt_rgb8 color;
@@ -110,6 +128,7 @@ typedef struct rt_facet_info {
 
 /* Sizes and settings of a scene. */
 typedef struct rt_scene_info {
+    size_t size;            /* sizeof(rt_scene_info), set by the caller */
     int width, height;
     int vertex_count;
     int facet_count;        /* as in the file, degenerate ones included */
@@ -356,7 +375,8 @@ RT_API rt_status rt_scene_load(const char *path,
  * the same scene (no other call may be using it). */
 RT_API void rt_scene_destroy(rt_scene *scene);
 
-/* Fills `info` (a zeroed info for a NULL scene where asserts are compiled
+/* Fills `info`, whose size the caller has set (the rule above rt_facet_info;
+ * a zeroed info, size kept, for a NULL scene where asserts are compiled
  * out).  Thread-safe. */
 RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 
@@ -365,7 +385,8 @@ RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 RT_API rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
 
 /* The i-th facet record (0-based, i < facet_count; else asserted, or a
- * zeroed *facet where NDEBUG is defined).  Thread-safe. */
+ * zeroed *facet, size kept, where NDEBUG is defined) into `facet`, whose
+ * size the caller has set (the rule above rt_facet_info).  Thread-safe. */
 RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 
 /* The i-th light (0-based, i < light_count; 0 is the first; else asserted,

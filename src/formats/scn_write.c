@@ -58,7 +58,7 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
                              "expected a scene and a sink");
     unsigned lost = 0;
     out o = {write, user, 0};
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *c = &info.camera;
     put(&o, "# written by libraytrace %s\n", rt_version_string());
@@ -78,7 +78,7 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
         put_point(&o, rt_scene_vertex(scene, i), "\n");
     put(&o, "%d\n", info.facet_count);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         put(&o, "%d, %d, %d, %.17g, %d, %d, %d", f.vertex[0] + 1,
             f.vertex[1] + 1, f.vertex[2] + 1, f.reflection, f.color.r,

@@ -48,7 +48,7 @@ static int copy_geometry(const rt_scene *loaded, const rt_scene_info *info,
     for (int i = 0; i < info->vertex_count; i++)
         s->points[i] = in104_point(rt_scene_vertex(loaded, i));
     for (int i = 0; i < info->facet_count; i++) {
-        rt_facet_info record;
+        rt_facet_info record = {.size = sizeof record};
         rt_scene_facet(loaded, i, &record);
         facet *f = &s->facets[i];
         f->a = s->points[record.vertex[0]];
@@ -82,7 +82,7 @@ int parse(char *fname, scene *s)
         return (int)status;
     }
 
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(loaded, &info);
     if (info.light_count > 1 || info.transparent_facet_count > 0 ||
         info.camera.aperture > 0.0) {

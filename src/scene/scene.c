@@ -17,6 +17,7 @@
 
 #include "base/error.h"
 #include "base/exact.h"
+#include "base/sized.h"
 #include "kernel/plane_crossing.h"
 #include "scene_internal.h"
 #include "base/vecmath.h"
@@ -343,6 +344,7 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
         rt_facet_info *info = &s->facets[i];
         rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
                 c = d->vertices[f->vertex[2]];
+        info->size = sizeof *info;
         memcpy(info->vertex, f->vertex, sizeof info->vertex);
         info->reflection = f->reflection;
         info->transparency = f->transparency;
@@ -505,24 +507,31 @@ void rt_scene_destroy(rt_scene *scene)
     free(scene);
 }
 
+/* The least sizes of the filled structs: their layouts of 0.3
+ * (raytrace/scene.h, above rt_facet_info). */
+#define SCENE_INFO_SIZE_0_3                                                  \
+    RT__FIELD_END(rt_scene_info, transparent_facet_count)
+#define FACET_INFO_SIZE_0_3 RT__FIELD_END(rt_facet_info, diffuse)
+
 void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
 {
-    if (!RT__EXPECT(info != NULL))
+    if (!RT__EXPECT(info != NULL && info->size >= SCENE_INFO_SIZE_0_3))
         return;
-    memset(info, 0, sizeof *info);
-    if (!RT__EXPECT(s != NULL))
-        return;
-    info->width = s->camera.width;
-    info->height = s->camera.height;
-    info->vertex_count = s->vertex_count;
-    info->facet_count = s->facet_count;
-    info->live_facet_count = s->live_count;
-    info->reflective_facet_count = s->reflective_count;
-    info->warning_count = s->warning_count;
-    info->background = s->background;
-    info->camera = s->camera;
-    info->light_count = s->light_count;
-    info->transparent_facet_count = s->transparent_count;
+    rt_scene_info full = {0};
+    if (RT__EXPECT(s != NULL))
+        full = (rt_scene_info){
+            .width = s->camera.width,
+            .height = s->camera.height,
+            .vertex_count = s->vertex_count,
+            .facet_count = s->facet_count,
+            .live_facet_count = s->live_count,
+            .reflective_facet_count = s->reflective_count,
+            .warning_count = s->warning_count,
+            .background = s->background,
+            .camera = s->camera,
+            .light_count = s->light_count,
+            .transparent_facet_count = s->transparent_count};
+    rt__sized_fill(info, &full, sizeof full);
 }
 
 /* The accessors' index rule: `i` in 0..count-1 of a scene (raytrace/scene.h:
@@ -539,13 +548,12 @@ rt_vec3 rt_scene_vertex(const rt_scene *scene, int i)
 
 void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
 {
-    if (!RT__EXPECT(facet != NULL))
+    if (!RT__EXPECT(facet != NULL && facet->size >= FACET_INFO_SIZE_0_3))
         return;
-    if (!INDEX_OK(scene, i, facet_count)) {
-        memset(facet, 0, sizeof *facet);
-        return;
-    }
-    *facet = scene->facets[i];
+    static const rt_facet_info zero = {0};
+    rt__sized_fill(facet,
+                   INDEX_OK(scene, i, facet_count) ? &scene->facets[i] : &zero,
+                   sizeof *facet);
 }
 
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)

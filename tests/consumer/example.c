@@ -6,7 +6,7 @@
 int main(int argc, char **argv)
 {
     rt_scene *scene;
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_image image;
     rt_error error;
     rt_status status;

@@ -42,7 +42,7 @@ static void check_refusal(rt_status status, const rt_scene *scene,
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
@@ -50,7 +50,7 @@ static void inspect(const rt_scene *scene)
     require(info.live_facet_count <= info.facet_count);
     require(info.light_count >= 1);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&

@@ -98,14 +98,14 @@ static rt_status resolve(void *user, const char *scene_name,
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
     require(info.live_facet_count <= info.facet_count);
     require(rt_scene_source_count(scene) <= 1 + 1024);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         /* No facet without area is made (the triangulator drops them);
          * repeats of the facet before may be left out by the builder. */
@@ -127,7 +127,7 @@ static void inspect(const rt_scene *scene)
                   c->screen_center.y - c->observer.y,
                   c->screen_center.z - c->observer.z};
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         rt_vec3 p = rt_scene_vertex(scene, facet.vertex[0]);
         double along = (p.x - c->observer.x) * ao.x +

@@ -55,7 +55,7 @@ static void trace_some_pixels(const rt_scene *scene, const rt_scene_info *info)
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
@@ -64,7 +64,7 @@ static void inspect(const rt_scene *scene)
     for (int i = 0; i < info.vertex_count; i++)
         (void)rt_scene_vertex(scene, i);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&

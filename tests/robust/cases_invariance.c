@@ -43,7 +43,7 @@ static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
         rt_hit h;
         if (!rt_scene_nearest_hit(scene, ray, INFINITY, &h))
             return sig * 1099511628211u;
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, h.facet, &f);
         rt_vec3 off = rb_add(h.point, rb_scale(h.normal, 1e-9));
         int lit = rb_dot(h.normal, rb_sub(light.position, h.point)) > 0 &&
@@ -60,7 +60,7 @@ static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
 
 static unsigned char *edge_mask(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     int w = info.width, hgt = info.height;
     uint64_t *sig = malloc(sizeof *sig * (size_t)(w * hgt));

@@ -190,13 +190,13 @@ static void N(trace)(const N(scene) *s, N(vec) o, N(vec) d, int depth,
 
 static N(scene) *N(create)(const rt_scene *scene, int method)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     N(scene) *s = calloc(1, sizeof *s);
     s->tris = calloc((size_t)(info.facet_count + 1), sizeof *s->tris);
     s->method = method;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info fi;
+        rt_facet_info fi = {.size = sizeof fi};
         rt_scene_facet(scene, i, &fi);
         N(tri) *f = &s->tris[s->count++];
         f->a = N(from)(rt_scene_vertex(scene, fi.vertex[0]));

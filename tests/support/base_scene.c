@@ -45,7 +45,7 @@ void rt_test_base_scene(char *buffer, size_t size, int replace,
 
 void rt_test_assert_base_scene(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, 2);
     ck_assert_int_eq(info.height, 2);
@@ -71,7 +71,7 @@ void rt_test_assert_base_scene(const rt_scene *scene)
     v = rt_scene_vertex(scene, 2);
     ck_assert_double_eq(v.x, 0.0);
     ck_assert_double_eq(v.y, 1.0);
-    rt_facet_info facet;
+    rt_facet_info facet = {.size = sizeof facet};
     rt_scene_facet(scene, 0, &facet);
     ck_assert_int_eq(facet.vertex[0], 0);
     ck_assert_int_eq(facet.vertex[1], 1);

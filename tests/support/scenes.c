@@ -95,7 +95,7 @@ void rt_test_write_two_facet_scene(const char *path, const char *background)
 
 rt_scene_info rt_test_scene_info(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     return info;
 }

@@ -283,7 +283,8 @@ void rt_test_kernels_check(const char *name, const rt_scene *scene,
             options.sampling = c->sampling;
             char what[512];
             snprintf(what, sizeof what, "%s (%s, %s", name, pname, c->name);
-            rt_render_stats s_ref, s_fast;
+            rt_render_stats s_ref = {.size = sizeof s_ref};
+            rt_render_stats s_fast = {.size = sizeof s_fast};
             options.kernel = RT_KERNEL_SCALAR;
             options.threads = 1;
             options.stats = &s_ref;

@@ -27,7 +27,7 @@ static double max3(double a, double b, double c)
  */
 bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     bench_depth_bound b = {max3(info.background.r, info.background.g,
                                 info.background.b), 0.0, 0.0};
@@ -43,7 +43,7 @@ bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
         extent = fmax(extent, max3(fabs(v.x), fabs(v.y), fabs(v.z)));
     }
     int top = -1;
-    rt_facet_info f, g;
+    rt_facet_info f = {.size = sizeof f}, g = {.size = sizeof g};
     for (int i = 0; i < info.facet_count; i++) {
         rt_scene_facet(scene, i, &f);
         if (f.degenerate)

@@ -218,7 +218,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "rt-bench: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     int width, height;
     if (rt_render_image_size(scene, options, &width, &height, &error) !=
