@@ -88,9 +88,9 @@ START_TEST(options_of_size_zero_or_too_large_are_refused)
     rt_load_options load;
     memset(&load, 0, sizeof load);
     rt_scene *loaded = (rt_scene *)&load;       /* must become NULL */
-    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
-                                         strlen(rt_test_centred_facet_scene),
-                                         "a.scn", &load, &loaded, &error),
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene),
+                                    "a.scn", &load, &loaded, &error),
                      RT_ERR_ARGUMENT);
     ck_assert_ptr_null(loaded);
     assert_reported(&error, RT_ERR_ARGUMENT, "load options of 0 bytes");
@@ -108,9 +108,9 @@ START_TEST(old_load_options_read_only_their_fields)
     load.fov = -1.0;                    /* refused if it were read */
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse_with(rt_test_centred_facet_scene,
-                                         strlen(rt_test_centred_facet_scene),
-                                         "a.scn", &load, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
+                                    strlen(rt_test_centred_facet_scene),
+                                    "a.scn", &load, &scene, &error),
                      RT_OK);
     rt_scene_destroy(scene);
 }

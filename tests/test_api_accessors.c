@@ -31,7 +31,8 @@ static void setup(void)
 {
     ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
                                     strlen(rt_test_centred_facet_scene), NULL,
-                                     &scene, NULL), RT_OK);
+                                    NULL, &scene, NULL),
+                     RT_OK);
 }
 
 static void teardown(void)
@@ -48,21 +49,39 @@ typedef struct accessor_case {
     int (*zero)(void);
 } accessor_case;
 
-static rt_facet_info filled_facet(void)
+/* A facet info full of 0x7f bytes but its size, `size`. */
+static rt_facet_info filled_facet(size_t size)
 {
     rt_facet_info f;
     memset(&f, 0x7f, sizeof f);
+    f.size = size;
     return f;
+}
+
+static int all_bytes(const void *data, size_t size, unsigned char value)
+{
+    const unsigned char *b = data;
+    for (size_t i = 0; i < size; i++)
+        if (b[i] != value)
+            return 0;
+    return 1;
 }
 
 static int is_zero(const void *data, size_t size)
 {
-    const unsigned char *b = data;
-    for (size_t i = 0; i < size; i++)
-        if (b[i] != 0)
-            return 0;
-    return 1;
+    return all_bytes(data, size, 0);
 }
+
+/* A filled struct's zero value: its size kept, every other byte 0. */
+#define SIZED_IS_ZERO(s)                                                     \
+    ((s).size == sizeof(s) &&                                                \
+     is_zero((const char *)&(s) + sizeof(s).size, sizeof(s) - sizeof(s).size))
+
+/* What a call left untouched: its size and every 0x7f byte after it. */
+#define SIZED_UNTOUCHED(s, expected_size)                                    \
+    ((s).size == (expected_size) &&                                          \
+     all_bytes((const char *)&(s) + sizeof(s).size,                          \
+               sizeof(s) - sizeof(s).size, 0x7f))
 
 static const rt_ray some_ray = {{0, 0, -5}, {0, 0, 1}};
 
@@ -78,9 +97,18 @@ static int vertex_is_zero(int i)
 
 static int facet_is_zero(int i)
 {
-    rt_facet_info f = filled_facet();
+    rt_facet_info f = filled_facet(sizeof f);
     rt_scene_facet(scene, i, &f);
-    return is_zero(&f, sizeof f);
+    return SIZED_IS_ZERO(f);
+}
+
+/* A size the library refuses (0, or short of the layout of 0.3): nothing
+ * is written. */
+static int facet_with_size_is_untouched(size_t size)
+{
+    rt_facet_info f = filled_facet(size);
+    rt_scene_facet(scene, 0, &f);
+    return SIZED_UNTOUCHED(f, size);
 }
 
 static int light_is_zero(int i)
@@ -95,8 +123,18 @@ static int info_is_zero(void)
 {
     rt_scene_info info;
     memset(&info, 0x7f, sizeof info);
+    info.size = sizeof info;
     rt_scene_get_info(NULL, &info);
-    return is_zero(&info, sizeof info);
+    return SIZED_IS_ZERO(info);
+}
+
+static int info_with_size_is_untouched(size_t size)
+{
+    rt_scene_info info;
+    memset(&info, 0x7f, sizeof info);
+    info.size = size;
+    rt_scene_get_info(scene, &info);
+    return SIZED_UNTOUCHED(info, size);
 }
 
 static int camera_ray_is_zero(void)
@@ -149,7 +187,13 @@ static int tree_value_is_zero(void)
     X(a20, "rt_trace", trace_is_zero())                                      \
     X(a21, "rt_ray_tree_nodes", tree_nodes_are_none())                       \
     X(a22, "rt_ray_tree_value", tree_value_is_zero())                        \
-    X(a23, "rt_ray_tree_truncated", rt_ray_tree_truncated(NULL) == 0)
+    X(a23, "rt_ray_tree_truncated", rt_ray_tree_truncated(NULL) == 0)      \
+    X(a24, "rt_scene_facet", facet_with_size_is_untouched(0))                \
+    X(a25, "rt_scene_facet",                                                 \
+      facet_with_size_is_untouched(sizeof(rt_facet_info) - sizeof(double)))  \
+    X(a26, "rt_scene_get_info", info_with_size_is_untouched(0))              \
+    X(a27, "rt_scene_get_info",                                              \
+      info_with_size_is_untouched(offsetof(rt_scene_info, light_count)))
 
 ACCESSOR_CASES(ACCESSOR)
 

@@ -33,7 +33,7 @@ static void setup(void)
 {
     ck_assert_int_eq(rt_scene_parse(rt_test_centred_facet_scene,
                                     strlen(rt_test_centred_facet_scene), NULL,
-                                     &scene, NULL), RT_OK);
+                                    NULL, &scene, NULL), RT_OK);
     ck_assert_int_eq(rt_image_init(&image, 40, 30, NULL), RT_OK);
     sink_file = fopen("/dev/null", "wb");
     ck_assert_ptr_nonnull(sink_file);
@@ -78,6 +78,8 @@ static rt_ray_tree *out_tree;
 static rt_image_format out_image_format;
 static rt_scene_format out_scene_format;
 static int out_width, out_height;
+/* Load options as rt_load_options_init sets them (size, then zeros). */
+static const rt_load_options defaults = {sizeof(rt_load_options)};
 
 static rt_image no_pixels(void)
 {
@@ -203,26 +205,27 @@ static rt_status save_scene_sized(size_t size, rt_error *error)
     X(n35, RT_ERR_ARGUMENT, rt_scene_create(NULL, &out_scene, error))        \
     X(n36, RT_ERR_ARGUMENT,                                                  \
       rt_scene_create(&(rt_scene_desc){0}, NULL, error))                     \
-    X(n37, RT_ERR_ARGUMENT, rt_scene_parse(NULL, 5, NULL, &out_scene, error))\
+    X(n37, RT_ERR_ARGUMENT,                                                  \
+      rt_scene_parse(NULL, 5, NULL, NULL, &out_scene, error))                \
     X(n38, RT_ERR_ARGUMENT,                                                  \
       rt_scene_parse(rt_test_centred_facet_scene,                            \
-                     strlen(rt_test_centred_facet_scene), NULL, NULL,        \
-                     error))                                                 \
-    X(n39, RT_ERR_ARGUMENT, rt_scene_load(NULL, &out_scene, error))          \
-    X(n40, RT_ERR_ARGUMENT, rt_scene_load("x.scn", NULL, error))             \
+                     strlen(rt_test_centred_facet_scene), NULL, &defaults,   \
+                     NULL, error))                                           \
+    X(n39, RT_ERR_ARGUMENT,                                                  \
+      rt_scene_load(NULL, &defaults, &out_scene, error))                     \
+    X(n40, RT_ERR_ARGUMENT, rt_scene_load("x.scn", &defaults, NULL, error))  \
     X(n41, RT_ERR_ARGUMENT,                                                  \
       rt_scene_format_from_path(NULL, &out_scene_format, error))             \
     X(n42, RT_ERR_ARGUMENT, rt_scene_format_from_path("a.scn", NULL, error)) \
     X(n43, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse_with(NULL, 5, "a.nff", NULL, &out_scene, error))        \
+      rt_scene_parse(NULL, 5, "a.nff", NULL, &out_scene, error))             \
     X(n44, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse_with(NULL, 5, "a.obj", NULL, &out_scene, error))        \
+      rt_scene_parse(NULL, 5, "a.obj", NULL, &out_scene, error))             \
     X(n45, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_parse_with(rt_test_centred_facet_scene, 5, NULL, NULL, NULL,  \
-                          error))                                            \
-    X(n46, RT_ERR_ARGUMENT,                                                  \
-      rt_scene_load_with(NULL, NULL, &out_scene, error))                     \
-    X(n47, RT_ERR_ARGUMENT, rt_scene_load_with("x.scn", NULL, NULL, error))  \
+      rt_scene_parse(rt_test_centred_facet_scene, 5, NULL, NULL, NULL,       \
+                     error))                                                 \
+    X(n46, RT_ERR_ARGUMENT, rt_scene_load(NULL, NULL, &out_scene, error))    \
+    X(n47, RT_ERR_ARGUMENT, rt_scene_load("x.scn", NULL, NULL, error))       \
     X(n48, RT_ERR_ARGUMENT,                                                  \
       rt_scene_write_scn(NULL, 0, sink, NULL, NULL, error))                  \
     X(n49, RT_ERR_ARGUMENT,                                                  \
@@ -360,6 +363,15 @@ static rt_region region(int x0, int y0, int x1, int y1)
     return (rt_region){x0, y0, x1, y1};
 }
 
+/* Stats whose size the caller set to `size` (0 or short of the layout
+ * of 0.3 are refused before any work). */
+static rt_render_stats *stats_of_size(size_t size)
+{
+    static rt_render_stats stats;
+    stats.size = size;
+    return &stats;
+}
+
 #define EDIT(name, word, statement)                                          \
     static void name(rt_render_options *o) { statement; }
 #define EDIT_ROW(name, word, statement) {#statement, word, name},
@@ -388,7 +400,10 @@ static rt_region region(int x0, int y0, int x1, int y1)
     X(e21, "pixels", o->height = RT_MAX_IMAGE_SIDE + 1)                      \
     X(e22, "region", o->region = region(0, 0, 41, 1))                        \
     X(e23, "region", o->region = region(1, 1, 1, 1))                         \
-    X(e24, "region", o->region = region(-1, 0, 1, 1))
+    X(e24, "region", o->region = region(-1, 0, 1, 1))                        \
+    X(e25, "render stats", o->stats = stats_of_size(0))                      \
+    X(e26, "render stats",                                                   \
+      o->stats = stats_of_size(offsetof(rt_render_stats, refraction_rays)))
 
 OPTION_EDITS(EDIT)
 
@@ -542,9 +557,8 @@ START_TEST(every_loader_refuses_each_bad_load_option_field)
         const char *text = load_inputs[i].text;
         rt_scene *loaded = NULL;
         rt_error error = {0};
-        ck_assert_msg(rt_scene_parse_with(text, strlen(text),
-                                          load_inputs[i].name, NULL, &loaded,
-                                          &error) == RT_OK,
+        ck_assert_msg(rt_scene_parse(text, strlen(text), load_inputs[i].name,
+                                     NULL, &loaded, &error) == RT_OK,
                       "%s does not load: %s", load_inputs[i].name,
                       error.message);
         rt_scene_destroy(loaded);
@@ -553,7 +567,7 @@ START_TEST(every_loader_refuses_each_bad_load_option_field)
             rt_load_options_init(&o);
             load_edits[e].edit(&o);
             memset(&error, 0, sizeof error);
-            rt_status status = rt_scene_parse_with(
+            rt_status status = rt_scene_parse(
                 text, strlen(text), load_inputs[i].name, &o, &loaded, &error);
             ck_assert_msg(status == RT_ERR_ARGUMENT && loaded == NULL,
                           "%s with %s returned %s", load_inputs[i].name,
@@ -563,9 +577,9 @@ START_TEST(every_loader_refuses_each_bad_load_option_field)
                           "%s with %s: the message does not say `%s`: %s",
                           load_inputs[i].name, load_edits[e].what,
                           load_edits[e].word, error.message);
-            ck_assert_int_eq(rt_scene_parse_with(text, strlen(text),
-                                                 load_inputs[i].name, &o,
-                                                 &loaded, NULL),
+            ck_assert_int_eq(rt_scene_parse(text, strlen(text),
+                                            load_inputs[i].name, &o, &loaded,
+                                            NULL),
                              RT_ERR_ARGUMENT);
         }
     }

@@ -61,7 +61,7 @@ START_TEST(camera_keeps_perpendicular_b_and_builds_up_vector)
 {
     rt_scene *scene = camera_scene((rt_vec3){0, 0, 5}, (rt_vec3){0, 0, 4},
                                    (rt_vec3){1, 0, 4}, 3, 3);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_camera cam = info.camera;
     ck_assert_int_eq(cam.b_was_projected, 0);
@@ -81,7 +81,7 @@ START_TEST(camera_projects_b_when_ab_is_not_perpendicular_to_ao)
     /* the handout's cubes scene */
     rt_vec3 o = {8, -8, -3}, a = {3, -3, -1}, b = {3, -9, 0};
     rt_scene *scene = camera_scene(o, a, b, 400, 400);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_camera cam = info.camera;
     ck_assert_int_ne(cam.b_was_projected, 0);
@@ -111,7 +111,7 @@ START_TEST(camera_frame_is_right_handed_for_a_tilted_screen)
      * AO x AB = (0,0,12.5) so AC = (0,0,2.5) */
     rt_scene *scene = camera_scene((rt_vec3){1, 2, 3}, (rt_vec3){4, 6, 3},
                                    (rt_vec3){6, 4.5, 3}, 5, 3);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.camera.b_was_projected, 0);
     assert_near(info.camera.right, (rt_vec3){2, -1.5, 0}, 1e-15, "AB");
@@ -154,7 +154,7 @@ static void check_corners_and_centre(rt_vec3 o, rt_vec3 a, rt_vec3 b, int w,
                                      int h)
 {
     rt_scene *scene = camera_scene(o, a, b, w, h);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *cam = &info.camera;
     check_pixel_ray(cam, 0, 0);
@@ -200,7 +200,7 @@ START_TEST(camera_top_left_pixel_is_up_and_left)
      * at x = -2/3, y = +2/3 for a 3x3 image */
     rt_scene *scene = camera_scene((rt_vec3){0, 0, 5}, (rt_vec3){0, 0, 4},
                                    (rt_vec3){1, 0, 4}, 3, 3);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_ray ray = rt_camera_ray(&info.camera, 0, 0);
     double t = -1.0 / ray.direction.z; /* reach z = 4 */
@@ -218,7 +218,7 @@ START_TEST(camera_pixels_are_square_when_width_and_height_differ)
      * centres 1 apart in both directions (tolerance 1e-13) */
     rt_scene *scene = camera_scene((rt_vec3){1, 2, 3}, (rt_vec3){4, 6, 3},
                                    (rt_vec3){6, 4.5, 3}, 5, 3);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *cam = &info.camera;
     rt_vec3 ao = sub(cam->observer, cam->screen_center);

@@ -22,6 +22,7 @@
 typedef struct grid {
     rt_vec3 *vertices;
     rt_facet_desc *facets;
+    rt_light *light;        /* on the heap: the grid is returned by value */
     rt_scene_desc desc;
 } grid;
 
@@ -31,7 +32,8 @@ static grid make_grid(int n)
     memset(&g, 0, sizeof g);
     g.vertices = malloc((size_t)(n + 1) * (size_t)(n + 1) * sizeof *g.vertices);
     g.facets = calloc((size_t)2 * (size_t)n * (size_t)n, sizeof *g.facets);
-    ck_assert(g.vertices != NULL && g.facets != NULL);
+    g.light = malloc(sizeof *g.light);
+    ck_assert(g.vertices != NULL && g.facets != NULL && g.light != NULL);
     for (int y = 0; y <= n; y++)
         for (int x = 0; x <= n; x++)
             g.vertices[y * (n + 1) + x] = (rt_vec3){x, y, 0};
@@ -53,8 +55,9 @@ static grid make_grid(int n)
     g.desc.facets = g.facets;
     g.desc.facet_count = f;
     g.desc.background = (rt_rgb8){10, 20, 30};
-    g.desc.light_position = (rt_vec3){n / 2.0, 0, n};
-    g.desc.light_color = (rt_rgb8){255, 255, 255};
+    *g.light = (rt_light){{n / 2.0, 0, n}, {255, 255, 255}};
+    g.desc.lights = g.light;
+    g.desc.light_count = 1;
     return g;
 }
 
@@ -62,6 +65,7 @@ static void free_grid(grid *g)
 {
     free(g->vertices);
     free(g->facets);
+    free(g->light);
 }
 
 static int grid_side(void)

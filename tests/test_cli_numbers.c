@@ -47,10 +47,10 @@ static rt_status parse_observer(const char *number, double *x)
              number);
     rt_scene *scene;
     rt_error error;
-    rt_status status = rt_scene_parse(text, strlen(text), "number.scn",
-                                      &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), "number.scn", NULL, &scene, &error);
     if (status == RT_OK) {
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         *x = info.camera.observer.x;
         rt_scene_destroy(scene);

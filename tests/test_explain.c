@@ -203,7 +203,7 @@ START_TEST(the_reported_blocker_really_blocks)
                 if (n[i].kind != RT_RAY_SHADOW || !n[i].cast || n[i].e > 0)
                     continue;
                 ck_assert_int_ge(n[i].blocker, 0);
-                rt_facet_info f;
+                rt_facet_info f = {.size = sizeof f};
                 rt_scene_facet(scene, n[i].blocker, &f);
                 ck_assert_int_eq(n[i].blocker_line, f.line);
                 ck_assert_int_gt(f.line, 0);
@@ -240,7 +240,7 @@ START_TEST(the_tree_says_what_the_formula_adds)
     ck_assert_int_eq(n[0].kind, RT_RAY_CAMERA);
     ck_assert_int_eq(n[0].facet, 0);
     ck_assert_int_eq(n[0].line, 26);   /* "1, 2, 3, 0.5, ..." */
-    ck_assert_double_eq(n[0].k, 0.5);
+    ck_assert_double_eq(n[0].reflection, 0.5);
     ck_assert_int_eq(n[1].kind, RT_RAY_SHADOW);
     ck_assert_double_eq(n[1].n_dot_s, 1.0);
     ck_assert_double_eq(n[1].e, 1.0);

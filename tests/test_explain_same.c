@@ -43,8 +43,8 @@ static char *view_text(const char *path, const rt_render_options *options,
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load_with(path, NULL, &scene, &error) == RT_OK,
-                  "%s", error.message);
+    ck_assert_msg(rt_scene_load(path, NULL, &scene, &error) == RT_OK, "%s",
+                  error.message);
     view_explanation e;
     ck_assert_msg(view_explain_pixel(scene, options, path, x, y, &e,
                                      &error) == RT_OK, "%s", error.message);

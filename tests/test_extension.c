@@ -21,7 +21,7 @@ typedef struct world {
     rt_vec3 v[MAX_V];
     rt_facet_desc f[MAX_F];
     int nv, nf;
-    rt_light more[4];
+    rt_light lights[4];     /* d.lights */
     rt_scene_desc d;
 } world;
 
@@ -80,9 +80,10 @@ static void cube_world(world *w, int width, int height)
         .width = width,
         .height = height,
         .background = {0, 0, 0},
-        .light_position = {2, -2, 9},
-        .light_color = {255, 255, 255},
+        .lights = w->lights,
+        .light_count = 1,
     };
+    w->lights[0] = (rt_light){{2, -2, 9}, {255, 255, 255}};
 }
 
 static rt_scene *build(world *w)
@@ -124,20 +125,17 @@ START_TEST(two_lights_add_up_channel_by_channel)
     rt_image alone[2];
     for (int l = 0; l < 2; l++) {
         cube_world(&w, 120, 90);
-        w.d.light_position = lights[l].position;
-        w.d.light_color = lights[l].color;
+        w.lights[0] = lights[l];
         rt_scene *scene = build(&w);
         alone[l] = render_with(scene, 5, 1, -1, 0);
         rt_scene_destroy(scene);
     }
     cube_world(&w, 120, 90);
-    w.d.light_position = lights[0].position;
-    w.d.light_color = lights[0].color;
-    w.more[0] = lights[1];
-    w.d.more_lights = w.more;
-    w.d.more_light_count = 1;
+    w.lights[0] = lights[0];
+    w.lights[1] = lights[1];
+    w.d.light_count = 2;
     rt_scene *scene = build(&w);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.light_count, 2);
     rt_image both = render_with(scene, 5, 1, -1, 0);
@@ -184,13 +182,13 @@ START_TEST(clear_sheet_of_index_one_is_invisible)
     for (int i = 0; i < 2; i++) {
         rt_facet_desc *f = i == 0 ? facet(&w, a, b, c, (rt_rgb8){9, 9, 9})
                                   : facet(&w, a, c, d, (rt_rgb8){9, 9, 9});
-        f->t = 1.0;
-        f->n = 1.0;
+        f->transparency = 1.0;
+        f->refractive_index = 1.0;
     }
-    w.d.light_position = (rt_vec3){-3, 2, 12};
+    w.lights[0].position = (rt_vec3){-3, 2, 12};
     rt_scene *sheet = build(&w);
     cube_world(&w, 160, 120);
-    w.d.light_position = (rt_vec3){-3, 2, 12};
+    w.lights[0].position = (rt_vec3){-3, 2, 12};
     rt_scene *without = build(&w);
     rt_image expected = render_with(without, 5, 1, -1, 0);
     rt_image actual = render_with(sheet, 5, 1, -1, 0);
@@ -223,8 +221,9 @@ static void wall_world(world *w)
                            .width = 8,
                            .height = 8,
                            .background = {0, 0, 255},
-                           .light_position = {-12, 0, 0},
-                           .light_color = {255, 255, 255}};
+                           .lights = w->lights,
+                           .light_count = 1};
+    w->lights[0] = (rt_light){{-12, 0, 0}, {255, 255, 255}};
 }
 
 /* Which half of the wall a ray from `origin` along `direction` reaches:
@@ -275,8 +274,8 @@ START_TEST(slab_shifts_what_is_behind_it_without_deforming_it)
     wall_world(&w);
     int first = box(&w, -6, -4, -400, 400, -40, 40, (rt_rgb8){0, 0, 0});
     for (int i = first; i < w.nf; i++) {
-        w.f[i].t = 1.0;
-        w.f[i].n = 1.5;
+        w.f[i].transparency = 1.0;
+        w.f[i].refractive_index = 1.5;
     }
     rt_scene *slab = build(&w);
     static const double degrees[] = {0, 10, 30, 50, 70};
@@ -308,8 +307,8 @@ START_TEST(total_internal_reflection_begins_at_the_critical_angle)
     int a = vertex(&w, -100, -100, 0), b = vertex(&w, 100, -100, 0),
         c = vertex(&w, 100, 100, 0), d = vertex(&w, -100, 100, 0);
     quad(&w, a, b, c, d, (rt_rgb8){0, 0, 0});
-    w.f[0].t = w.f[1].t = 1.0;
-    w.f[0].n = w.f[1].n = 1.5;
+    w.f[0].transparency = w.f[1].transparency = 1.0;
+    w.f[0].refractive_index = w.f[1].refractive_index = 1.5;
     /* a red floor inside the glass, lit from inside */
     int e = vertex(&w, -100, -100, -5), f = vertex(&w, 100, -100, -5),
         g = vertex(&w, 100, 100, -5), h = vertex(&w, -100, 100, -5);
@@ -320,8 +319,8 @@ START_TEST(total_internal_reflection_begins_at_the_critical_angle)
                           .width = 4,
                           .height = 4,
                           .background = {0, 255, 0},
-                          .light_position = {0, 0, -1},
-                          .light_color = {255, 255, 255}};
+                          .lights = &(rt_light){{0, 0, -1}, {255, 255, 255}},
+                          .light_count = 1};
     rt_scene *scene = build(&w);
     double critical = asin(1 / 1.5);
     static const double margins[] = {1e-3, 1e-6};
@@ -421,8 +420,8 @@ START_TEST(focal_plane_stays_sharp_as_the_aperture_grows)
                           /* far behind the camera: every point of a
                              wall gets the same light, so only edges make
                              intermediate values */
-                          .light_position = {0, 0, 1e6},
-                          .light_color = {255, 255, 255},
+                          .lights = &(rt_light){{0, 0, 1e6}, {255, 255, 255}},
+                          .light_count = 1,
                           .focal_distance = 10};
     rt_scene *scene = build(&w);
     int previous_far = -1;
@@ -467,11 +466,11 @@ START_TEST(builder_refuses_what_the_model_forbids)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         world w;
         cube_world(&w, 8, 8);
-        w.f[3].k = cases[i].k;
-        w.f[3].t = cases[i].t;
-        w.f[3].n = cases[i].n;
-        w.f[3].d = cases[i].d;
-        w.f[3].d_given = cases[i].d_given;
+        w.f[3].reflection = cases[i].k;
+        w.f[3].transparency = cases[i].t;
+        w.f[3].refractive_index = cases[i].n;
+        w.f[3].diffuse = cases[i].d;
+        w.f[3].diffuse_given = cases[i].d_given;
         w.d.aperture = cases[i].aperture;
         w.d.focal_distance = cases[i].focal;
         w.d.vertices = w.v;

@@ -115,10 +115,10 @@ static rt_camera loaded_camera(const char *text, const char *name,
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_parse_with(text, strlen(text), name, options,
-                                      &scene, &error) == RT_OK,
+    ck_assert_msg(rt_scene_parse(text, strlen(text), name, options, &scene,
+                                 &error) == RT_OK,
                   "%s", error.message);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_scene_destroy(scene);
     return info.camera;

@@ -53,8 +53,8 @@ START_TEST(scene_corpus_replays_without_fault)
         rt_scene *scene = (rt_scene *)1;
         rt_error error;
         memset(&error, 0, sizeof error);
-        rt_status status = rt_scene_parse(data, size, entry->d_name, &scene,
-                                          &error);
+        rt_status status =
+            rt_scene_parse(data, size, entry->d_name, NULL, &scene, &error);
         int valid = strncmp(entry->d_name, "valid-", 6) == 0;
         int broken = strncmp(entry->d_name, "broken-", 7) == 0;
         ck_assert_msg(!valid || status == RT_OK, "%s: %s", entry->d_name,
@@ -62,7 +62,7 @@ START_TEST(scene_corpus_replays_without_fault)
         ck_assert_msg(!broken || status != RT_OK, "%s loaded",
                       entry->d_name);
         if (status == RT_OK) {
-            rt_scene_info info;
+            rt_scene_info info = {.size = sizeof info};
             rt_scene_get_info(scene, &info);
             rt_ray ray = rt_camera_ray(&info.camera, info.width - 1,
                                        info.height - 1);
@@ -136,7 +136,7 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
     memcpy(exact, rt_test_small_scene, length);
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse(exact, length, NULL, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(exact, length, NULL, NULL, &scene, &error),
                      RT_OK);
     rt_scene_destroy(scene);
     /* every prefix is refused, with a message, until the last record
@@ -145,7 +145,8 @@ START_TEST(scene_without_terminating_nul_is_read_by_length)
                                       "0 0 4 255 255 255") -
                                rt_test_small_scene) + strlen("0 0 4 255 255 ");
     for (size_t n = 0; n < length; n++) {
-        rt_status status = rt_scene_parse(exact, n, NULL, &scene, &error);
+        rt_status status =
+            rt_scene_parse(exact, n, NULL, NULL, &scene, &error);
         if (n > complete) {
             ck_assert_msg(status == RT_OK, "prefix %zu: %s", n,
                           error.message);
@@ -249,8 +250,8 @@ static int parse_with_memory_limit(void *arg, char *message, size_t size)
         rt_image_release(&image);
     } else {
         rt_scene *scene;
-        status = rt_scene_parse(b->data, b->length, "hostile.scn", &scene,
-                                &error);
+        status = rt_scene_parse(b->data, b->length, "hostile.scn", NULL,
+                                &scene, &error);
         rt_scene_destroy(scene);
     }
     snprintf(message, size, "%s: %s", rt_status_string(status),

@@ -109,8 +109,8 @@ static double parse_time(const char *text, size_t length, shape s)
     rt_scene *scene;
     rt_error error;
     double start = thread_seconds();
-    rt_status status = rt_scene_parse(text, length, "big.scn", &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(text, length, "big.scn", NULL, &scene, &error);
     double elapsed = thread_seconds() - start;
     int should_load = s == SHAPE_FACETS || s == SHAPE_DEGENERATE;
     ck_assert_msg((status == RT_OK) == should_load, "%s: %s", shape_names[s],

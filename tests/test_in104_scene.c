@@ -69,9 +69,9 @@ static void assert_parse_agrees_with_core(const char *path)
 {
     rt_scene *core = NULL;
     rt_error error;
-    ck_assert_msg(rt_scene_load(path, &core, &error) == RT_OK, "%s",
+    ck_assert_msg(rt_scene_load(path, NULL, &core, &error) == RT_OK, "%s",
                   error.message);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(core, &info);
 
     scene s;
@@ -94,18 +94,20 @@ static void assert_parse_agrees_with_core(const char *path)
     ck_assert_double_eq_tol(s.screenB.z - s.screenA.z, info.camera.right.z,
                             1e-12 * (1 + fabs(s.screenA.z)));
     assert_same_color(s.back, info.background);
-    assert_same_point(s.s.p, info.light_position);
-    assert_same_color(s.s.cp, info.light_color);
+    rt_light light;
+    rt_scene_light(core, 0, &light);
+    assert_same_point(s.s.p, light.position);
+    assert_same_color(s.s.cp, light.color);
     for (int i = 0; i < s.nbPoints; i++)
         assert_same_point(s.points[i], rt_scene_vertex(core, i));
     for (int i = 0; i < s.nbFacets; i++) {
-        rt_facet_info record;
+        rt_facet_info record = {.size = sizeof record};
         rt_scene_facet(core, i, &record);
         facet f = s.facets[i];
         assert_same_point(f.a, rt_scene_vertex(core, record.vertex[0]));
         assert_same_point(f.b, rt_scene_vertex(core, record.vertex[1]));
         assert_same_point(f.c, rt_scene_vertex(core, record.vertex[2]));
-        ck_assert_double_eq(f.k, record.k);
+        ck_assert_double_eq(f.k, record.reflection);
         assert_same_color(f.cp, record.color);
         /* exactly createFacet's normal; the core's to a few roundings */
         facet made = createFacet(f.a, f.b, f.c);
@@ -211,7 +213,7 @@ START_TEST(parse_prints_the_loaders_message_and_returns_nonzero)
     rt_test_write_file("in104_bad.scn", text);
     rt_scene *core = NULL;
     rt_error error;
-    rt_status expected = rt_scene_load("in104_bad.scn", &core, &error);
+    rt_status expected = rt_scene_load("in104_bad.scn", NULL, &core, &error);
     ck_assert_int_ne(expected, RT_OK);
 
     scene s;
@@ -368,7 +370,7 @@ static void assert_render_matches_core(const char *path)
     ck_assert_msg(rt_ppm_load("in104_render.ppm", &got, &error) == RT_OK,
                   "%s", error.message);
     rt_scene *core = NULL;
-    ck_assert(rt_scene_load(path, &core, &error) == RT_OK);
+    ck_assert(rt_scene_load(path, NULL, &core, &error) == RT_OK);
     expected = rt_test_render(core, RT_DEFAULT_DEPTH, 0);
     ck_assert_int_eq(got.width, expected.width);
     ck_assert_int_eq(got.height, expected.height);

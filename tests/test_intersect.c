@@ -240,7 +240,7 @@ START_TEST(zero_area_facets_are_never_hit)
     const char *text = CAMERA "4\n-1 0 0\n0 0 0\n1 0 0\n0 1 0\n"
                               "2\n1 2 3 0 255 0 0\n1 1 4 0 255 0 0\n" LIGHT;
     rt_scene *scene = rt_test_scene_from_string(text);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.live_facet_count, 0);
     ck_assert_int_eq(info.warning_count, 2);

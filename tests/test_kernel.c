@@ -50,7 +50,8 @@ static void check_scene(const rt_scene *scene, image_size size,
 {
     for (int p = 0; p < 2; p++) {
         rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
-        rt_render_stats s_ref, s_fast;
+        rt_render_stats s_ref = {.size = sizeof s_ref};
+        rt_render_stats s_fast = {.size = sizeof s_fast};
         rt_image ref = render(scene, &size, precision, RT_KERNEL_SCALAR, 1,
                               &s_ref);
         rt_image fast1 = render(scene, &size, precision, RT_KERNEL_AUTO, 1,
@@ -81,7 +82,8 @@ START_TEST(project_scenes_render_identically_with_both_kernels)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
         check_scene(scene, (image_size){0, 0}, g.gl_pathv[i]);
         rt_scene_destroy(scene);
@@ -101,7 +103,8 @@ START_TEST(spd_scenes_render_identically_with_both_kernels)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
         /* 48 x 48 keeps the scalar renders of 10,000 facets short (and
          * 8 x 8 under valgrind) */
@@ -172,8 +175,8 @@ static rt_scene *grid_scene(int n, int jitter)
         .width = 8, .height = 8,
         .vertices = v, .vertex_count = nv, .facets = f, .facet_count = m,
         .background = {10, 20, 30},
-        .light_position = {n / 3.0, n / 4.0, n},
-        .light_color = {255, 255, 255}};
+        .lights = &(rt_light){{n / 3.0, n / 4.0, n}, {255, 255, 255}},
+        .light_count = 1};
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_create(&desc, &scene, &error), RT_OK);
@@ -300,7 +303,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_with_both_kernels)
     ck_assert_ptr_nonnull(kf);
     for (int i = 0; i < (rt_test_memcheck() ? 200 : 5000); i++) {
         rt_vec3 origin = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, (int)uniform(0, 300), &f);
         /* aim at a vertex of a facet: rays along shared vertices' lines */
         rt_vec3 target = rt_scene_vertex(scene, f.vertex[i % 3]);
@@ -321,7 +324,7 @@ START_TEST(a_scene_without_reflective_facets_casts_no_reflection_ray)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(bench_sphere(500, 32, 32, &scene, &error), RT_OK);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
                             RT_KERNEL_AUTO, 1,
                             &stats);
@@ -338,9 +341,9 @@ START_TEST(the_cubes_scene_casts_fewer_shadow_rays_than_it_has_hits)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_load(rt_test_source_path("scenes/cubes.scn"),
-                                   &scene, &error),
+                                   NULL, &scene, &error),
                      RT_OK);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
                             RT_KERNEL_AUTO, 0,
                             &stats);

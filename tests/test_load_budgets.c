@@ -38,10 +38,9 @@ static rt_status parse_as(rt_scene_format format, const char *text,
     options.tessellation = tolerance;
     options.cancel = cancel;
     memset(error, 0, sizeof *error);
-    return rt_scene_parse_with(text, length,
-                               format == RT_SCENE_FORMAT_NFF ? "t.nff"
-                                                             : "t.scn",
-                               &options, scene, error);
+    return rt_scene_parse(text, length,
+                          format == RT_SCENE_FORMAT_NFF ? "t.nff" : "t.scn",
+                          &options, scene, error);
 }
 
 static rt_scene *load_nff(const char *text)
@@ -323,9 +322,10 @@ START_TEST(the_builder_refuses_more_lights_than_the_limit)
     static const rt_vec3 vertices[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     static const rt_facet_desc facet = {{0, 1, 2}, 0, {255, 255, 255},
                                         0, 0, 0, 0};
-    rt_light more[RT_MAX_LIGHTS];
+    rt_light lights[RT_MAX_LIGHTS + 1];
+    lights[0] = (rt_light){{0, 0, 4}, {255, 255, 255}};
     for (int i = 0; i < RT_MAX_LIGHTS; i++)
-        more[i] = (rt_light){{i, 0, 4}, {10, 10, 10}};
+        lights[1 + i] = (rt_light){{i, 0, 4}, {10, 10, 10}};
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     d.observer = (rt_vec3){0, 0, 10};
@@ -336,15 +336,13 @@ START_TEST(the_builder_refuses_more_lights_than_the_limit)
     d.vertex_count = 3;
     d.facets = &facet;
     d.facet_count = 1;
-    d.light_position = (rt_vec3){0, 0, 4};
-    d.light_color = (rt_rgb8){255, 255, 255};
-    d.more_lights = more;
-    d.more_light_count = RT_MAX_LIGHTS - 1;
+    d.lights = lights;
+    d.light_count = RT_MAX_LIGHTS;
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);
     rt_scene_destroy(scene);
-    d.more_light_count = RT_MAX_LIGHTS;
+    d.light_count = RT_MAX_LIGHTS + 1;
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_ERR_LIMIT);
     ck_assert_ptr_null(scene);
     ck_assert_str_eq(error.message, "expected at most 64 lights (each one "
@@ -362,11 +360,11 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
     rt_scene *scene = load_nff("v from 0 -10 0 at 0 0 0 up 0 0 1 angle 45 "
                                "hither 1 resolution 8 8\n"
                                "f 1 1 1 1 1e308 0 1e308 1.5\ns 0 0 0 1\n");
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, 0, &f);
-    ck_assert_double_eq(f.k, 0.5);
-    ck_assert_double_eq(f.t, 0.5);
-    ck_assert_double_eq(f.n, 1.5);
+    ck_assert_double_eq(f.reflection, 0.5);
+    ck_assert_double_eq(f.transparency, 0.5);
+    ck_assert_double_eq(f.refractive_index, 1.5);
     ck_assert_int_eq(rt_test_scene_info(scene).transparent_facet_count,
                      rt_test_scene_info(scene).live_facet_count);
     ck_assert_int_eq(rt_test_count_warnings(scene,
@@ -380,9 +378,9 @@ START_TEST(ks_and_t_near_the_largest_double_keep_half_mirror_half_glass)
                      "resolution 8 8\nf 1 1 1 1 1.5e308 0 1e308 1.5\n"
                      "s 0 0 0 1\n");
     rt_scene_facet(scene, 0, &f);
-    ck_assert_double_eq_tol(f.k, 0.6, 1e-15);
-    ck_assert_double_eq_tol(f.t, 0.4, 1e-15);
-    ck_assert(f.k + f.t <= 1.0);
+    ck_assert_double_eq_tol(f.reflection, 0.6, 1e-15);
+    ck_assert_double_eq_tol(f.transparency, 0.4, 1e-15);
+    ck_assert(f.reflection + f.transparency <= 1.0);
     rt_scene_destroy(scene);
 }
 END_TEST

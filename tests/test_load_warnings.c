@@ -24,8 +24,8 @@ static rt_scene *parse_scn(const rt_test_text *t, const char *name)
 {
     rt_scene *scene;
     rt_error error;
-    rt_status status = rt_scene_parse(t->data, t->length, name, &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(t->data, t->length, name, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     return scene;
 }
@@ -216,10 +216,10 @@ START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
                      "just before them exactly (the same vertices in the "
                      "same order), the first facet 2: they are never hit "
                      "and change no pixel");
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(b, 5000, &f);
     ck_assert_int_eq(f.degenerate, RT_FACET_REPEATED);
-    rt_render_stats sa, sb;
+    rt_render_stats sa = {.size = sizeof sa}, sb = {.size = sizeof sb};
     rt_render_options options;
     rt_render_options_init(&options);
     options.accel = RT_ACCEL_NONE;  /* tests as brute force counts them */
@@ -237,7 +237,7 @@ START_TEST(a_facet_repeated_ten_thousand_times_renders_as_the_facet_once)
      * with 10 001 times the tests. */
     rt_scene *kept = parse_scn(&many, "many.scn");
     keep_repeats(kept);
-    rt_render_stats sk;
+    rt_render_stats sk = {.size = sizeof sk};
     options.stats = &sk;
     rt_image ik = rt_test_render_with(kept, &options);
     ck_assert_mem_eq(ia.pixels, ik.pixels, (size_t)ia.height * ia.stride);
@@ -276,7 +276,7 @@ START_TEST(only_a_repeat_of_the_facet_kept_just_before_is_left_out)
     static const int expected[6] = {0, RT_FACET_ZERO_AREA, RT_FACET_REPEATED,
                                     RT_FACET_REPEATED, 0, 0};
     for (int i = 0; i < 6; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert_msg(f.degenerate == expected[i], "facet %d: %d", i + 1,
                       f.degenerate);
@@ -308,16 +308,17 @@ static rt_scene *rebuilt(const rt_scene *s, int doubled)
         v[i] = rt_scene_vertex(s, i);
     int n = 0;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info r;
+        rt_facet_info r = {.size = sizeof r};
         rt_scene_facet(s, i, &r);
-        rt_facet_desc d = {{r.vertex[0], r.vertex[1], r.vertex[2]}, r.k,
-                           r.color, r.t, r.n, r.d, 1};
+        rt_facet_desc d = {{r.vertex[0], r.vertex[1], r.vertex[2]},
+                           r.reflection, r.color, r.transparency,
+                           r.refractive_index, r.diffuse, 1};
         f[n++] = d;
         if (doubled) {
             d.color = (rt_rgb8){(unsigned char)(255 - r.color.r), 3, 250};
-            d.k = r.k > 0 ? 0 : 0.5;
-            d.t = 0.25;
-            d.d = 0.25;
+            d.reflection = r.reflection > 0 ? 0 : 0.5;
+            d.transparency = 0.25;
+            d.diffuse = 0.25;
             f[n++] = d;
         }
     }
@@ -340,10 +341,8 @@ static rt_scene *rebuilt(const rt_scene *s, int doubled)
     d.facets = f;
     d.facet_count = n;
     d.background = info.background;
-    d.light_position = l[0].position;
-    d.light_color = l[0].color;
-    d.more_lights = l + 1;
-    d.more_light_count = info.light_count - 1;
+    d.lights = l;
+    d.light_count = info.light_count;
     d.aperture = info.camera.aperture;
     d.focal_distance = info.camera.focal_distance;
     rt_scene *out;
@@ -386,8 +385,8 @@ static rt_scene *tie_scene(const int *order, int n)
     d.vertex_count = 9;
     d.facets = f;
     d.facet_count = n;
-    d.light_position = (rt_vec3){0, 0, 9};
-    d.light_color = (rt_rgb8){255, 255, 255};
+    d.lights = &(rt_light){{0, 0, 9}, {255, 255, 255}};
+    d.light_count = 1;
     rt_scene *scene;
     rt_error error;
     ck_assert_msg(rt_scene_create(&d, &scene, &error) == RT_OK, "%s",
@@ -465,8 +464,8 @@ START_TEST(repeats_of_another_material_change_no_pixel_of_the_project_scenes)
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         rt_scene *file;
         rt_error error;
-        ck_assert_msg(rt_scene_load(rt_test_source_path(scenes[i]), &file,
-                                    &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(rt_test_source_path(scenes[i]), NULL,
+                                    &file, &error) == RT_OK,
                       "%s", error.message);
         rt_scene *left_out = rebuilt(file, 1), *kept = rebuilt(file, 1);
         ck_assert_int_eq(rt_test_scene_info(left_out).live_facet_count,
@@ -531,7 +530,7 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     const char *name = "evil\x1b]0;owned\x07.scn";
     rt_scene *scene;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse("0 0\n", 4, name, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse("0 0\n", 4, name, NULL, &scene, &error),
                      RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "evil\\x1B]0;owned\\x07.scn:1:4: expected 3 values for "
@@ -553,8 +552,8 @@ START_TEST(errors_and_warnings_show_a_hostile_name_escaped)
     static const char nff[] = "v from 0 -9 0 at 0 0 0 up 0 0 1 angle 45 "
                               "hither 1 resolution 8 8\np 3 0 0 0 1 0 0 0 "
                               "0 1\n";
-    ck_assert_int_eq(rt_scene_parse_with(nff, sizeof nff - 1, "n\x1b.nff",
-                                         &options, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(nff, sizeof nff - 1, "n\x1b.nff", &options,
+                                    &scene, &error),
                      RT_OK);
     for (int i = 0; i < rt_test_scene_info(scene).warning_count; i++) {
         m = rt_scene_warning(scene, i)->message;

@@ -34,8 +34,8 @@ static void refused(const char *text, rt_status status, int line, int column,
     rt_load_options options;
     rt_load_options_init(&options);
     options.format = RT_SCENE_FORMAT_OBJ;
-    rt_status got = rt_scene_parse_with(text, strlen(text), "bad.obj",
-                                        &options, &scene, &error);
+    rt_status got = rt_scene_parse(text, strlen(text), "bad.obj", &options,
+                                   &scene, &error);
     ck_assert_msg(got == status, "status %d, expected %d: %s", (int)got,
                   (int)status, error.message);
     ck_assert_ptr_null(scene);
@@ -52,7 +52,7 @@ static void refused(const char *text, rt_status status, int line, int column,
 
 static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, i, &f);
     ck_assert_msg(f.vertex[0] == a && f.vertex[1] == b && f.vertex[2] == c,
                   "facet %d is (%d, %d, %d), expected (%d, %d, %d)", i,
@@ -61,7 +61,7 @@ static void facet_is(const rt_scene *scene, int i, int a, int b, int c)
 
 static int facet_count(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     return info.facet_count;
 }
@@ -176,7 +176,7 @@ static void check_polygon(const double (*p)[2], int n, rt_vec3 origin,
     ck_assert_int_eq(facet_count(scene), n - 2);
     double total = 0;
     for (int i = 0; i < n - 2; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert(!f.degenerate);
         rt_vec3 a = rt_scene_vertex(scene, f.vertex[0]),
@@ -277,12 +277,12 @@ START_TEST(corners_on_a_straight_line_and_repeated_corners_add_no_facet)
     rt_scene *scene = obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 1 0\nv 2 2 0\n"
                           "v 1 2 0\nv 0 2 0\nv 0 1 0\n"
                           "f 1 2 2 3 4 5 6 7 8\n");
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.live_facet_count, info.facet_count);
     double total = 0;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         total += tri_area(rt_scene_vertex(scene, f.vertex[0]),
                           rt_scene_vertex(scene, f.vertex[1]),
@@ -301,15 +301,15 @@ END_TEST
 static void material_is(const rt_scene *scene, int facet, int r, int g,
                         int b, double k, double t, double n, double d)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, facet, &f);
     ck_assert_msg(f.color.r == r && f.color.g == g && f.color.b == b,
                   "facet %d: colour (%d, %d, %d), expected (%d, %d, %d)",
                   facet, f.color.r, f.color.g, f.color.b, r, g, b);
-    ck_assert_double_eq_tol(f.k, k, 1e-12);
-    ck_assert_double_eq_tol(f.t, t, 1e-12);
-    ck_assert_double_eq_tol(f.n, n, 1e-12);
-    ck_assert_double_eq_tol(f.d, d, 1e-12);
+    ck_assert_double_eq_tol(f.reflection, k, 1e-12);
+    ck_assert_double_eq_tol(f.transparency, t, 1e-12);
+    ck_assert_double_eq_tol(f.refractive_index, n, 1e-12);
+    ck_assert_double_eq_tol(f.diffuse, d, 1e-12);
 }
 
 START_TEST(materials_map_kd_ks_with_illum_d_tr_and_ni)
@@ -363,7 +363,7 @@ START_TEST(library_names_with_spaces_are_read_whole_or_escaped)
     rt_scene *scene =
         rt_test_load_source_scene("tests/data/obj/spaced-library.obj");
     material_is(scene, 0, 0, 0, 255, 0, 0, 1, 1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 0);
     rt_scene_destroy(scene);
@@ -404,7 +404,7 @@ START_TEST(unknown_statements_lines_points_and_normals_warn_once_each)
     ck_assert_int_eq(rt_test_count_warnings(scene, "`p` statements"), 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "vertex normals"), 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:6:1: warning"), 1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 5);
     rt_scene_destroy(scene);
@@ -459,7 +459,7 @@ START_TEST(texture_and_normal_indices_out_of_range_warn_once_each)
     ck_assert_int_eq(rt_test_count_warnings(scene, "<memory>:5:7: warning: `1` "
                                           "refers to no normal"),
                      1);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.warning_count, 2);
     rt_scene_destroy(scene);
@@ -512,15 +512,15 @@ START_TEST(binary_and_utf16_input_are_refused_by_the_shared_checks)
     rt_load_options_init(&options);
     options.format = RT_SCENE_FORMAT_OBJ;
     static const char utf16[] = "\xFF\xFEv\0 \0001\0";
-    ck_assert_int_eq(rt_scene_parse_with(utf16, sizeof utf16 - 1, "u.obj",
-                                         &options, &scene, &error),
+    ck_assert_int_eq(rt_scene_parse(utf16, sizeof utf16 - 1, "u.obj", &options,
+                                    &scene, &error),
                      RT_ERR_FORMAT);
     ck_assert_ptr_null(scene);
     ck_assert_ptr_nonnull(strstr(error.message, "UTF-16"));
     static const char mac[] = "v 0 0 0\rv 1 0 0\r";
-    ck_assert_int_eq(rt_scene_parse_with(mac, sizeof mac - 1, "m.obj",
-                                         &options, &scene, &error),
-                     RT_ERR_FORMAT);
+    ck_assert_int_eq(
+        rt_scene_parse(mac, sizeof mac - 1, "m.obj", &options, &scene, &error),
+        RT_ERR_FORMAT);
     ck_assert_ptr_nonnull(strstr(error.message, "old Mac line endings"));
 }
 END_TEST

@@ -44,8 +44,8 @@ static rt_status parse(const rt_test_text *t, const rt_test_text *library,
         options.resolve = serve;
         options.resolve_user = (void *)library;
     }
-    return rt_scene_parse_with(t->data, t->length, "hostile.obj", &options,
-                               scene, error);
+    return rt_scene_parse(t->data, t->length, "hostile.obj", &options, scene,
+                          error);
 }
 
 static rt_scene *loaded(const rt_test_text *t, const rt_test_text *library)
@@ -170,7 +170,7 @@ START_TEST(a_convex_face_of_100000_corners_gives_n_minus_2_facets_cut_balanced)
     int *uses = calloc((size_t)n, sizeof *uses), most = 0;
     ck_assert_ptr_nonnull(uses);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         ck_assert(f.normal.z > 0);      /* the face's winding */
         for (int k = 0; k < 3; k++)
@@ -301,9 +301,9 @@ START_TEST(a_cancel_flag_raised_during_a_load_stops_it_between_statements)
     options.resolve_user = cancel;
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse_with(t.data, t.length, "c.obj",
-                                         &options, &scene, &error),
-                     RT_ERR_CANCELLED);
+    ck_assert_int_eq(
+        rt_scene_parse(t.data, t.length, "c.obj", &options, &scene, &error),
+        RT_ERR_CANCELLED);
     ck_assert_ptr_null(scene);
     ck_assert_ptr_nonnull(strstr(error.message, "c.obj: the load was "
                                                 "cancelled"));

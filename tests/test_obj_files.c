@@ -67,15 +67,15 @@ static rt_scene *load(const char *dir, const char *name)
     char *path = rt_test_join(dir, name);
     rt_scene *scene = NULL;
     rt_error error;
-    ck_assert_msg(rt_scene_load_with(path, NULL, &scene, &error) == RT_OK,
-                  "%s: %s", path, error.message);
+    ck_assert_msg(rt_scene_load(path, NULL, &scene, &error) == RT_OK, "%s: %s",
+                  path, error.message);
     free(path);
     return scene;
 }
 
 static rt_rgb8 facet_color(const rt_scene *scene, int i)
 {
-    rt_facet_info f;
+    rt_facet_info f = {.size = sizeof f};
     rt_scene_facet(scene, i, &f);
     return f.color;
 }
@@ -332,9 +332,8 @@ START_TEST(one_library_under_a_thousand_spellings_is_read_once)
     options.resolve_user = &c;
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load_with(path, &options, &scene, &error) ==
-                      RT_OK,
-                  "%s", error.message);
+    ck_assert_msg(rt_scene_load(path, &options, &scene, &error) == RT_OK, "%s",
+                  error.message);
     /* One call for the canonical spelling, one each for the two links
      * (known by their device and inode once read): 3 reads in all. */
     ck_assert_int_eq(c.calls, 3);
@@ -379,9 +378,9 @@ START_TEST(a_resolver_that_gives_more_than_the_budget_is_refused)
     options.format = RT_SCENE_FORMAT_OBJ;
     const char *text = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     rt_scene *scene;
-    ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), "m.obj",
-                                         &options, &scene, NULL),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), "m.obj", &options, &scene, NULL),
+        RT_OK);
     ck_assert_int_eq(rt_test_count_warnings(scene, "more than the"), 1);
     ck_assert_int_eq(rt_scene_source_count(scene), 0);
     rt_scene_destroy(scene);
@@ -409,9 +408,8 @@ START_TEST(an_obj_naming_itself_as_its_library_is_read_once_and_not_quoted)
     options.resolve_user = &c;
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load_with(path, &options, &scene, &error) ==
-                      RT_OK,
-                  "%s", error.message);
+    ck_assert_msg(rt_scene_load(path, &options, &scene, &error) == RT_OK, "%s",
+                  error.message);
     ck_assert_int_eq(c.calls, 1);
     ck_assert_int_eq(rt_test_count_warnings(scene, "is this OBJ file itself"),
                      1);
@@ -513,9 +511,8 @@ START_TEST(a_parse_from_memory_reads_a_file_only_through_a_resolver)
     const char *text = "mtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\n"
                        "v 0 1 0\nf 1 2 3\n";
     rt_scene *scene;
-    ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), name, NULL,
-                                         &scene, NULL),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), name, NULL, &scene, NULL), RT_OK);
     ck_assert_int_eq(facet_color(scene, 0).r, 204);
     ck_assert_int_eq(rt_test_count_warnings(scene, "without a resolver"), 1);
     ck_assert_int_eq(rt_scene_source_count(scene), 0);
@@ -523,17 +520,17 @@ START_TEST(a_parse_from_memory_reads_a_file_only_through_a_resolver)
     rt_load_options options;
     rt_load_options_init(&options);
     options.resolve = rt_resolve_in_folder;
-    ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), name, &options,
-                                         &scene, NULL),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), name, &options, &scene, NULL),
+        RT_OK);
     ck_assert_int_eq(facet_color(scene, 0).r, 255);
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
     rt_scene_destroy(scene);
     options.resolve = from_memory;
     options.resolve_user = (void *)"newmtl red\nKd 0 1 0\n";
-    ck_assert_int_eq(rt_scene_parse_with(text, strlen(text), name, &options,
-                                         &scene, NULL),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), name, &options, &scene, NULL),
+        RT_OK);
     ck_assert_int_eq(facet_color(scene, 0).g, 255);
     ck_assert_str_eq(rt_scene_source_at(scene, 0)->name, "m.mtl");
     rt_scene_destroy(scene);
@@ -561,7 +558,7 @@ START_TEST(a_scene_file_that_is_a_fifo_still_loads_and_lists_no_identity)
     ck_assert_int_gt(writer.pid, 0);
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load(fifo, &scene, &error) == RT_OK, "%s",
+    ck_assert_msg(rt_scene_load(fifo, NULL, &scene, &error) == RT_OK, "%s",
                   error.message);
     ck_assert_int_eq(rt_scene_source_count(scene), 1);
     const rt_scene_source *s = rt_scene_source_at(scene, 0);
@@ -591,7 +588,7 @@ START_TEST(a_cancel_flag_raised_before_a_load_cancels_it)
         char *path = rt_test_join(f.scene_dir, names[i]);
         rt_scene *scene = (rt_scene *)1;
         rt_error error;
-        ck_assert_int_eq(rt_scene_load_with(path, &options, &scene, &error),
+        ck_assert_int_eq(rt_scene_load(path, &options, &scene, &error),
                          RT_ERR_CANCELLED);
         ck_assert_ptr_null(scene);
         ck_assert_ptr_nonnull(strstr(error.message, "cancelled"));
@@ -639,13 +636,13 @@ START_TEST(the_obj_corpus_replays_without_fault)
         rt_scene *scene = (rt_scene *)1;
         rt_error error;
         memset(&error, 0, sizeof error);
-        rt_status status = rt_scene_parse_with(text, size, name, &options,
-                                               &scene, &error);
+        rt_status status =
+            rt_scene_parse(text, size, name, &options, &scene, &error);
         if (status == RT_OK) {
-            rt_scene_info info;
+            rt_scene_info info = {.size = sizeof info};
             rt_scene_get_info(scene, &info);
             for (int i = 0; i < info.facet_count; i++) {
-                rt_facet_info facet;
+                rt_facet_info facet = {.size = sizeof facet};
                 rt_scene_facet(scene, i, &facet);
                 ck_assert_msg(facet.degenerate != RT_FACET_ZERO_AREA,
                               "%s: a facet without area", entry->d_name);

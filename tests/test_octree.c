@@ -69,7 +69,8 @@ static void check_scene(const rt_scene *scene, image_size size,
         if (rt_scene_check_precision(scene, precision, NULL) != RT_OK)
             continue;
         for (int samples = 1; samples <= 4; samples += 3) {
-            rt_render_stats s_ref, s_oct;
+            rt_render_stats s_ref = {.size = sizeof s_ref};
+            rt_render_stats s_oct = {.size = sizeof s_oct};
             rt_image ref = render(scene, &size, precision, RT_ACCEL_NONE, 1,
                                   samples,
                                   &s_ref);
@@ -108,9 +109,10 @@ static size_t check_directory(const char *dir, int side)
     for (size_t i = 0; i < g.gl_pathc; i++) {
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
+                          RT_OK,
                       "%s", error.message);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         int w = side && info.width > side ? side : info.width;
         int h = side && info.height > side ? side : info.height;
@@ -219,7 +221,7 @@ static rt_scene *soup_scene(soup *s, rt_vec3 eye, rt_vec3 at, rt_vec3 light,
         .vertices = s->v, .vertex_count = s->nv,
         .facets = s->f, .facet_count = s->nf,
         .background = {20, 30, 40},
-        .light_position = light, .light_color = {255, 240, 220}};
+        .lights = &(rt_light){light, {255, 240, 220}}, .light_count = 1};
     return soup_create(&desc, s);
 }
 
@@ -329,7 +331,7 @@ START_TEST(far_and_inside_cameras_render_identically)
     soup t = {0};
     for (int i = 0; i < s.nf; i++)
         soup_add(&t, s.v[3 * i], s.v[3 * i + 1], s.v[3 * i + 2],
-                 s.f[i].k);
+                 s.f[i].reflection);
     rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
                                (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
                                reduced() ? 12 : 40);
@@ -353,11 +355,12 @@ START_TEST(transparency_lights_and_lens_render_identically)
         rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
         soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
         if (i % 3 == 0) {
-            s.f[s.nf - 1].t = 0.6;
-            s.f[s.nf - 1].n = i % 2 ? 1.5 : 0.7;
+            s.f[s.nf - 1].transparency = 0.6;
+            s.f[s.nf - 1].refractive_index = i % 2 ? 1.5 : 0.7;
         }
     }
-    rt_light lights[2] = {{{-3, 2, 4}, {120, 200, 90}},
+    rt_light lights[3] = {{{1, -2, 5}, {255, 255, 255}},
+                          {{-3, 2, 4}, {120, 200, 90}},
                           {{2, -4, -3}, {200, 80, 150}}};
     rt_scene_desc desc = {
         .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
@@ -367,8 +370,7 @@ START_TEST(transparency_lights_and_lens_render_identically)
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {30, 40, 50},
-        .light_position = {1, -2, 5}, .light_color = {255, 255, 255},
-        .more_lights = lights, .more_light_count = 2,
+        .lights = lights, .light_count = 3,
         .aperture = 0.05, .focal_distance = 4};
     rt_scene *scene = soup_create(&desc, &s);
     check_scene(scene, (image_size){0, 0}, "transparency, lights, lens");
@@ -399,11 +401,11 @@ START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
         .vertices = s.v, .vertex_count = s.nv,
         .facets = s.f, .facet_count = s.nf,
         .background = {20, 30, 40},
-        .light_position = {1e150, -2e150, 5e151},
-        .light_color = {255, 255, 255}};
+        .lights = &(rt_light){{1e150, -2e150, 5e151}, {255, 255, 255}},
+        .light_count = 1};
     rt_scene *scene = soup_create(&desc, &s);
     for (int samples = 1; samples <= 4; samples += 3) {
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         rt_image ref = render(scene, &full_size, RT_PRECISION_DOUBLE,
                               RT_ACCEL_NONE, 1,
                               samples, NULL);
@@ -515,7 +517,7 @@ START_TEST(random_rays_in_a_soup_see_the_same_through_the_octree)
     ck_assert_int_eq(rt__kernel_prepare_octree(kf, NULL, NULL), RT_OK);
     for (int i = 0; i < (reduced() ? 200 : 6000); i++) {
         rt_vec3 o = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, (int)uniform(0, 3000), &f);
         rt_vec3 t = rt_scene_vertex(scene, f.vertex[i % 3]);
         if (i % 2)
@@ -554,7 +556,7 @@ START_TEST(auto_uses_the_octree_from_the_threshold_on)
                      RT_OK);
     ck_assert_int_eq(bench_soup(RT_ACCEL_AUTO_FACETS * 4, 8, 8, &big, &error),
                      RT_OK);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image a = render(small, &full_size, RT_PRECISION_DOUBLE, RT_ACCEL_AUTO,
                         1, 1,
                         &stats);
@@ -581,7 +583,8 @@ START_TEST(the_octree_is_built_once_and_reused_by_every_render)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(bench_sphere(3000, 16, 16, &scene, &error), RT_OK);
-    rt_render_stats first, second;
+    rt_render_stats first = {.size = sizeof first};
+    rt_render_stats second = {.size = sizeof second};
     rt_image a = render(scene, &full_size, RT_PRECISION_FLOAT,
                         RT_ACCEL_OCTREE, 2, 1,
                         &first);
@@ -610,7 +613,7 @@ START_TEST(a_degenerate_scene_keeps_the_octree_bounded)
         soup_add(&s, c, jitter(c, 10), jitter(c, 10), 0.0);
     rt_scene *scene = soup_scene(&s, (rt_vec3){1, -30, 1}, c,
                                  (rt_vec3){5, -5, 20}, 4);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
                             RT_ACCEL_OCTREE, 1, 1,
                             &stats);

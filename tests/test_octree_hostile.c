@@ -231,7 +231,7 @@ static rt_scene *mesh_scene(mesh *m, rt_vec3 eye, rt_vec3 at, double half,
         .vertices = m->v, .vertex_count = m->nv,
         .facets = m->f, .facet_count = m->nf,
         .background = {20, 30, 40},
-        .light_position = light, .light_color = {255, 240, 220}};
+        .lights = &(rt_light){light, {255, 240, 220}}, .light_count = 1};
     rt_scene *scene;
     rt_error error;
     ck_assert_msg(rt_scene_create(&desc, &scene, &error) == RT_OK, "%s",
@@ -291,7 +291,7 @@ START_TEST(a_fan_of_slivers_renders_identically_and_no_ray_tests_it_whole)
     ck_assert_uint_eq(info.always, 0);
     for (int p = 0; p < 2; p++) {
         rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         check_identical(scene, precision, "sliver fan", &stats);
         ck_assert_uint_eq(stats.accel_always, 0);
         ck_assert_uint_gt(stats.accel_queries, 0);
@@ -317,7 +317,7 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
     ck_assert_int_eq(bench_soup(rt_test_memcheck() ? 300 : 3000, 8, 8, &soup,
                                 &error),
                      RT_OK);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(soup, &info);
     int corners = rt_test_memcheck() ? 400 : 4000;
     mesh m;
@@ -326,9 +326,9 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
     for (int i = 0; i < info.vertex_count; i++)
         m.v[m.nv++] = rt_scene_vertex(soup, i);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(soup, i, &f);
-        mesh_facet(&m, f.vertex[0], f.vertex[1], f.vertex[2], f.k);
+        mesh_facet(&m, f.vertex[0], f.vertex[1], f.vertex[2], f.reflection);
     }
     rt_scene_destroy(soup);
     /* a fan through the soup, tilted, every sliver through its corner */
@@ -349,7 +349,7 @@ START_TEST(slivers_among_ordinary_facets_render_identically)
                      RT_OK);
     ck_assert_uint_ge(tree.slivers, (uint64_t)corners - 1);
     for (int p = 0; p < 2; p++) {
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         check_identical(scene, p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE,
                         "slivers in a soup", &stats);
     }
@@ -416,9 +416,9 @@ START_TEST(a_model_seen_from_far_walks_grown_cells_and_renders_identically)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         rt_scene *scene = far_sphere(cases[i].distance, side);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         check_identical(scene, cases[i].precision, "far sphere", &stats);
         uint64_t camera = (uint64_t)side * (uint64_t)side;
         if (cases[i].walked) {
@@ -472,7 +472,7 @@ START_TEST(a_model_far_from_the_coordinates_origin_renders_identically)
     for (int i = 0; i < 3; i++) {
         rt_scene *scene = offset_grid(16, offsets[i],
                                       rt_test_memcheck() ? 12 : 64);
-        rt_render_stats stats;
+        rt_render_stats stats = {.size = sizeof stats};
         check_identical(scene, RT_PRECISION_DOUBLE, "offset grid", &stats);
         ck_assert_uint_eq(stats.accel_fallbacks, 0);
         rt_scene_destroy(scene);

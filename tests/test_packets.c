@@ -480,7 +480,7 @@ START_TEST(facet_counts_render_identically)
             char *t = rt_test_spec_text(s, 1);
             rt_scene *scene = rt_test_scene_from_string(t);
             free(t);
-            rt_scene_info info;
+            rt_scene_info info = {.size = sizeof info};
             rt_scene_get_info(scene, &info);
             ck_assert_int_eq(info.facet_count, 65);
             ck_assert_int_eq(info.live_facet_count, 64);

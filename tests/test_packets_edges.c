@@ -243,7 +243,7 @@ START_TEST(an_eye_far_from_the_origin_renders_identically)
     rt_scene *scene = NULL;
     rt_error error;
     ck_assert_msg(rt_scene_parse(far_eye_scene, strlen(far_eye_scene),
-                                 "far-eye.scn", &scene, &error) == RT_OK,
+                                 "far-eye.scn", NULL, &scene, &error) == RT_OK,
                   "%s", error.message);
     static const int samples[] = {16, 9, 4, 1};
     for (int p = 0; p < 2; p++)

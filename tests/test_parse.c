@@ -273,7 +273,7 @@ START_TEST(parse_reports_status_position_and_token_of_each_broken_rule)
     rt_error error;
     memset(&error, 0, sizeof error);
     rt_status status =
-        rt_scene_parse(text, strlen(text), "<test>", &scene, &error);
+        rt_scene_parse(text, strlen(text), "<test>", NULL, &scene, &error);
     check_error(c, status, scene, &error, "<test>");
     rt_scene_destroy(status == RT_OK ? scene : NULL);
 }
@@ -297,7 +297,7 @@ START_TEST(parse_reports_the_same_errors_with_crlf_line_endings)
     rt_scene *scene = NULL;
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status status = rt_scene_parse(crlf, n, "<test>", &scene, &error);
+    rt_status status = rt_scene_parse(crlf, n, "<test>", NULL, &scene, &error);
     check_error(c, status, scene, &error, "<test>");
     rt_scene_destroy(status == RT_OK ? scene : NULL);
 }
@@ -310,8 +310,8 @@ START_TEST(parse_columns_do_not_count_the_byte_order_mark)
                        "\n");
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), "<test>", NULL, &scene, &error);
     bad_case c = {"BOM then word", 0, NULL, 0, NULL, S_SYNTAX, 1, 3, "abc", 1};
     check_error(&c, status, scene, &error, "<test>");
 }
@@ -323,8 +323,9 @@ START_TEST(parse_without_name_uses_memory_in_messages)
     rt_test_base_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
     rt_scene *scene = NULL;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse(text, strlen(text), NULL, &scene, &error),
-                     RT_ERR_RANGE);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), NULL, NULL, &scene, &error),
+        RT_ERR_RANGE);
     ck_assert_msg(strncmp(error.message, "<memory>:9:7: ", 14) == 0,
                   "message: \"%s\"", error.message);
 }
@@ -335,8 +336,9 @@ START_TEST(parse_accepts_a_null_error_pointer)
     char text[2048];
     rt_test_base_scene(text, sizeof text, 9, "10 20 256", ALL, NULL, "\n");
     rt_scene *scene = NULL;
-    ck_assert_int_eq(rt_scene_parse(text, strlen(text), "<test>", &scene, NULL),
-                     RT_ERR_RANGE);
+    ck_assert_int_eq(
+        rt_scene_parse(text, strlen(text), "<test>", NULL, &scene, NULL),
+        RT_ERR_RANGE);
     ck_assert_ptr_null(scene);
 }
 END_TEST
@@ -350,7 +352,8 @@ START_TEST(parse_reads_only_length_bytes)
     size_t length = strlen(text) - strlen(" 255 255\n");
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, length, "<test>", &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, length, "<test>", NULL, &scene, &error);
     ck_assert_msg(status == RT_ERR_SYNTAX, "status %s: %s",
                   rt_status_string(status), error.message);
     ck_assert_int_eq(error.line, 10);
@@ -379,8 +382,8 @@ START_TEST(parse_refuses_huge_count_without_allocating)
     rt_test_base_scene(text, sizeof text, 3, "2000000000", ALL, NULL, "\n");
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), "<test>", NULL, &scene, &error);
     ck_assert_msg(status != RT_OK && status != RT_ERR_NOMEM,
                   "status %s: %s", rt_status_string(status), error.message);
     ck_assert_int_eq(error.line, 3);
@@ -401,13 +404,13 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
 
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(good.s, &scene, &error);
+    rt_status status = rt_scene_load(good.s, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s", error.message);
     rt_test_assert_base_scene(scene);
     rt_scene_destroy(scene);
 
     scene = NULL;
-    status = rt_scene_load(bad.s, &scene, &error);
+    status = rt_scene_load(bad.s, NULL, &scene, &error);
     bad_case c = {"file with 10 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
                   21, "9", 1};
     check_error(&c, status, scene, &error, bad.s);
@@ -421,7 +424,7 @@ START_TEST(load_of_missing_file_is_io_error_naming_the_path)
     rt_scene *scene = (rt_scene *)&path;
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status status = rt_scene_load(path, &scene, &error);
+    rt_status status = rt_scene_load(path, NULL, &scene, &error);
     ck_assert_int_eq(status, RT_ERR_IO);
     ck_assert_int_eq(error.status, RT_ERR_IO);
     ck_assert_ptr_null(scene);

@@ -25,7 +25,8 @@ static rt_scene *parse_ok(const char *text, size_t length)
 {
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, length, "<test>", &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, length, "<test>", NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "status %s: %s", rt_status_string(status),
                   error.message);
     ck_assert_ptr_nonnull(scene);
@@ -64,9 +65,9 @@ START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
     rt_test_base_scene(text, sizeof text, 8, "1 2 3 1 255 0 0", ALL, NULL,
                        "\n");
     rt_scene *scene = parse_ok(text, strlen(text));
-    rt_facet_info facet;
+    rt_facet_info facet = {.size = sizeof facet};
     rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 1.0);
+    ck_assert_double_eq(facet.reflection, 1.0);
     rt_scene_destroy(scene);
     rt_test_base_scene(text, sizeof text, 8, "1 2 3 0.0 255 0 0", ALL, NULL,
                        "\n");
@@ -74,7 +75,7 @@ START_TEST(parse_accepts_k_at_both_ends_and_the_largest_sizes)
     rt_test_base_scene(text, sizeof text, 2, "0 0 4 1 0 0 16384 1", ALL, NULL,
                        "\n");
     scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, 16384);
     ck_assert_int_eq(info.height, 1);
@@ -90,7 +91,7 @@ START_TEST(parse_accepts_empty_scene_and_it_renders_background)
     const char *text = "0 0 5\n0 0 4 1 0 0 3 2\n0\n0\n10 20 30\n"
                        "0 0 10 255 255 255\n";
     rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.vertex_count, 0);
     ck_assert_int_eq(info.facet_count, 0);
@@ -111,7 +112,7 @@ START_TEST(parse_accepts_vertices_without_facets)
     const char *text = "0 0 5\n0 0 4 1 0 0 2 2\n2\n1 1 1\n2 2 2\n0\n"
                        "10 20 30\n0 0 10 255 255 255";
     rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.vertex_count, 2);
     ck_assert_int_eq(info.facet_count, 0);
@@ -217,23 +218,26 @@ START_TEST(parse_reads_numbers_in_c_locale_whatever_the_process_locale)
                        "0 1 0\n1\n1 2 3 0.5 255 0 0\n10 20 30\n"
                        "0 0 10.75 255 255 255\n";
     rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_double_eq(info.camera.observer.z, 5.5);
     ck_assert_double_eq(info.camera.screen_center.z, 4.5);
-    ck_assert_double_eq(info.light_position.z, 10.75);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
+    ck_assert_double_eq(light.position.z, 10.75);
     ck_assert_double_eq(rt_scene_vertex(scene, 0).x, -1.5);
-    rt_facet_info facet;
+    rt_facet_info facet = {.size = sizeof facet};
     rt_scene_facet(scene, 0, &facet);
-    ck_assert_double_eq(facet.k, 0.5);
+    ck_assert_double_eq(facet.reflection, 0.5);
     rt_scene_destroy(scene);
     /* and "1,5 0 0" is four values, not three, whatever the locale */
     const char *bad = "0 0 5\n0 0 4 1 0 0 2 2\n1\n1,5 0 0\n0\n10 20 30\n"
                       "0 0 10 255 255 255\n";
     rt_scene *none = NULL;
     rt_error error;
-    ck_assert_int_eq(rt_scene_parse(bad, strlen(bad), "<test>", &none, &error),
-                     RT_ERR_SYNTAX);
+    ck_assert_int_eq(
+        rt_scene_parse(bad, strlen(bad), "<test>", NULL, &none, &error),
+        RT_ERR_SYNTAX);
     ck_assert_int_eq(error.line, 4);
     ck_assert_int_eq(error.column, 7);
     setlocale(LC_ALL, "C");
@@ -248,7 +252,7 @@ START_TEST(parse_warns_about_zero_area_facet_with_its_line)
                        "3 -1 0\n2\n1 2 3 0 255 0 0\n1 2 4 0 0 255 0\n"
                        "10 20 30\n0 0 10 255 255 255\n";
     rt_scene *scene = parse_ok(text, strlen(text));
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 2);
     ck_assert_int_eq(info.live_facet_count, 1);
@@ -258,7 +262,7 @@ START_TEST(parse_warns_about_zero_area_facet_with_its_line)
     ck_assert_msg(strncmp(warning->message, "<test>:10:", 10) == 0 &&
                       strstr(warning->message, "warning"),
                   "warning: \"%s\"", warning->message);
-    rt_facet_info facet;
+    rt_facet_info facet = {.size = sizeof facet};
     rt_scene_facet(scene, 1, &facet);
     ck_assert_int_ne(facet.degenerate, 0);
     ck_assert_int_eq(facet.line, 10);

@@ -198,9 +198,12 @@ END_TEST
 
 /* ---- the statistics ------------------------------------------------- */
 
-/* rt_render_stats as 0.2 declared it, field by field: the table must keep
- * its layout. */
-typedef struct stats_0_2 {
+/* rt_render_stats as 0.3 declares it, field by field: the `size` that 0.3
+ * put first (no counter: RT_STATS_MAP leaves it out), then the counters of
+ * 0.2 in 0.2's order.  The table must keep this layout; counters are only
+ * ever appended. */
+typedef struct stats_0_3 {
+    size_t size;
     uint64_t camera_rays;
     uint64_t shadow_rays;
     uint64_t reflection_rays;
@@ -225,17 +228,19 @@ typedef struct stats_0_2 {
     uint64_t accel_facets;
     uint64_t refraction_rays;
     uint64_t refraction_rays_skipped;
-} stats_0_2;
+} stats_0_3;
 
-START_TEST(the_stats_keep_the_layout_of_0_2)
+START_TEST(the_stats_keep_the_layout_of_0_3)
 {
-    ck_assert_uint_eq(sizeof(rt_render_stats), sizeof(stats_0_2));
+    ck_assert_uint_eq(sizeof(rt_render_stats), sizeof(stats_0_3));
+    ck_assert_uint_eq(offsetof(rt_render_stats, size), 0);
+    ck_assert_uint_eq(sizeof(((rt_render_stats *)0)->size), sizeof(size_t));
     int fields = 0;
 #define SAME_FIELD(type, name, origin, merge, group, key, title)             \
     ck_assert_msg(offsetof(rt_render_stats, name) ==                         \
-                          offsetof(stats_0_2, name) &&                       \
+                          offsetof(stats_0_3, name) &&                       \
                       sizeof(((rt_render_stats *)0)->name) ==                \
-                          sizeof(((stats_0_2 *)0)->name),                    \
+                          sizeof(((stats_0_3 *)0)->name),                    \
                   "field %s moved", #name);                                  \
     fields++;
     RT_STATS_MAP(SAME_FIELD)
@@ -246,7 +251,7 @@ END_TEST
 
 static rt_render_stats stats_with_threads(const rt_scene *scene, int threads)
 {
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_render_options options;
     rt_render_options_init(&options);
     options.threads = threads;
@@ -304,7 +309,7 @@ static Suite *prepared_suite(void)
     tcase_add_test(team, a_team_holds_no_thread_once_idle_or_destroyed);
     suite_add_tcase(s, team);
     TCase *stats = tcase_create("stats");
-    tcase_add_test(stats, the_stats_keep_the_layout_of_0_2);
+    tcase_add_test(stats, the_stats_keep_the_layout_of_0_3);
     tcase_add_test(stats,
                    the_threads_counters_sum_to_the_same_stats_for_any_count);
     suite_add_tcase(s, stats);

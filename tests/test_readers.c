@@ -31,8 +31,8 @@ static void expect_refusal(int format, const char *text, size_t length,
     rt_scene *scene = (rt_scene *)&options;     /* must become NULL */
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status got = rt_scene_parse_with(text, length, "input", &options,
-                                        &scene, &error);
+    rt_status got =
+        rt_scene_parse(text, length, "input", &options, &scene, &error);
     ck_assert_msg(got == status, "%s: status %s, expected %s: %s",
                   rt_scene_format_name(formats[format]),
                   rt_status_string(got), rt_status_string(status),
@@ -83,9 +83,9 @@ START_TEST(binary_data_is_refused_at_its_first_nul_byte)
     static const char text[] = "0 0 10\n\x7f" "ELF\x02\x01\x01\0\0";
     rt_error error;
     rt_scene *scene;
-    ck_assert_int_eq(rt_scene_parse(text, sizeof text - 1, "x.scn", &scene,
-                                    &error),
-                     RT_ERR_FORMAT);
+    ck_assert_int_eq(
+        rt_scene_parse(text, sizeof text - 1, "x.scn", NULL, &scene, &error),
+        RT_ERR_FORMAT);
     ck_assert_str_eq(error.message, "x.scn:2:8: expected text, found a NUL "
                                     "byte: the file is binary, not a scene");
     expect_refusal(_i, text, sizeof text - 1, RT_ERR_FORMAT,
@@ -108,8 +108,7 @@ START_TEST(endless_devices_are_refused_after_one_chunk)
         options.format = formats[_i];
         rt_scene *scene;
         rt_error error;
-        ck_assert_int_eq(rt_scene_load_with(devices[i], &options, &scene,
-                                            &error),
+        ck_assert_int_eq(rt_scene_load(devices[i], &options, &scene, &error),
                          RT_ERR_FORMAT);
         ck_assert_msg(strstr(error.message, "found a NUL byte") != NULL,
                       "%s: %s", devices[i], error.message);
@@ -148,7 +147,7 @@ START_TEST(coordinates_beyond_the_arithmetic_are_refused_where_they_are)
     rt_scene *scene;
     rt_error error;
     ck_assert_int_eq(rt_scene_parse(scene_text, sizeof scene_text - 1,
-                                    "far.scn", &scene, &error),
+                                    "far.scn", NULL, &scene, &error),
                      RT_ERR_RANGE);
     ck_assert_str_eq(error.message,
                      "far.scn:5:1: expected a coordinate of magnitude at "
@@ -157,16 +156,16 @@ START_TEST(coordinates_beyond_the_arithmetic_are_refused_where_they_are)
     /* the builder refuses it too, for every reader */
     rt_vec3 v[3] = {{0, 0, 0}, {2e152, 0, 0}, {0, 1, 0}};
     rt_facet_desc f = {{0, 1, 2}, 0, {255, 0, 0}};
+    rt_light light = {{0, 0, 10}, {255, 255, 255}};
     rt_scene_desc d = {.observer = {0, 0, 10}, .screen_center = {0, 0, 5},
                        .screen_right = {1, 0, 5}, .width = 8, .height = 8,
                        .vertices = v, .vertex_count = 3, .facets = &f,
-                       .facet_count = 1, .light_position = {0, 0, 10},
-                       .light_color = {255, 255, 255}};
+                       .facet_count = 1, .lights = &light, .light_count = 1};
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_ERR_RANGE);
     ck_assert_ptr_nonnull(strstr(error.message, "at most 1e+152"));
     /* at the limit, and a light far beyond it, the scene loads */
     v[1].x = 1e152;
-    d.light_position = (rt_vec3){0, 0, 1e200};
+    light.position = (rt_vec3){0, 0, 1e200};
     ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);
     rt_scene_destroy(scene);
 }
@@ -187,8 +186,9 @@ START_TEST(float_refuses_a_scene_it_cannot_resolve)
                            .screen_right = {o + 1, o, o + 5}, .width = 8,
                            .height = 8, .vertices = v, .vertex_count = 3,
                            .facets = &f, .facet_count = 1,
-                           .light_position = {o, o, o + 10},
-                           .light_color = {255, 255, 255}};
+                           .lights = &(rt_light){{o, o, o + 10},
+                                                 {255, 255, 255}},
+                           .light_count = 1};
         rt_scene *scene;
         rt_error error;
         ck_assert_int_eq(rt_scene_create(&d, &scene, &error), RT_OK);

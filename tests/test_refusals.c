@@ -44,9 +44,8 @@ static void make_world(world *w)
     w->d.vertex_count = 3;
     w->d.facets = w->facets;
     w->d.facet_count = 2;
-    w->d.light_position = (rt_vec3){0, 0, 4};
-    w->d.light_color = (rt_rgb8){255, 255, 255};
-    w->d.more_lights = w->lights;
+    w->d.lights = w->lights;
+    w->d.light_count = 1;
 }
 
 /* Builds w and expects a refusal of `status`; returns it. */
@@ -78,7 +77,7 @@ START_TEST(the_builder_names_the_facet_and_field_it_refuses)
     world w;
     rt_error error;
     make_world(&w);
-    w.facets[1].k = 1.5;
+    w.facets[1].reflection = 1.5;
     rt_refusal r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_K, 0, RT_RULE_K);
     ck_assert_str_eq(r.found, "");
@@ -86,20 +85,20 @@ START_TEST(the_builder_names_the_facet_and_field_it_refuses)
                                     "coefficient k in [0, 1], found 1.5");
     ck_assert_int_eq(error.line, 0);
     make_world(&w);
-    w.facets[0].k = 0.5;
-    w.facets[0].t = 0.6;
+    w.facets[0].reflection = 0.5;
+    w.facets[0].transparency = 0.6;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 0, RT_FIELD_T, 0, RT_RULE_T);
-    w.facets[0].t = -0.1;
+    w.facets[0].transparency = -0.1;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 0, RT_FIELD_T, 0, RT_RULE_T_SIGN);
     make_world(&w);
-    w.facets[1].n = -1.5;
+    w.facets[1].refractive_index = -1.5;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_N, 0, RT_RULE_N);
     make_world(&w);
-    w.facets[1].d_given = 1;
-    w.facets[1].d = -2;
+    w.facets[1].diffuse_given = 1;
+    w.facets[1].diffuse = -2;
     r = refused(&w, RT_ERR_RANGE, &error);
     assert_refusal(&r, RT_ITEM_FACET, 1, RT_FIELD_D, 0, RT_RULE_D);
     make_world(&w);
@@ -165,11 +164,37 @@ START_TEST(the_builder_names_the_lens_the_camera_and_the_lights)
     assert_refusal(&r, RT_ITEM_CAMERA, 0, RT_FIELD_SCREEN_RIGHT, 0,
                    RT_RULE_CAMERA);
     make_world(&w);
-    w.d.more_light_count = RT_MAX_LIGHTS;
+    w.d.light_count = RT_MAX_LIGHTS + 1;
     r = refused(&w, RT_ERR_LIMIT, &error);
     assert_refusal(&r, RT_ITEM_LIGHT, RT_MAX_LIGHTS, RT_FIELD_NONE, 0,
                    RT_RULE_LIGHTS);
     ck_assert_str_eq(r.found, "light 65");
+}
+END_TEST
+
+/* The lights are an array of 1..RT_MAX_LIGHTS: none is a value out of
+ * range, named as data; a negative count or no array is the caller's
+ * mistake (RT_ERR_ARGUMENT, as for the vertices and facets). */
+START_TEST(the_builder_refuses_a_scene_without_a_light)
+{
+    world w;
+    rt_error error;
+    make_world(&w);
+    w.d.light_count = 0;
+    rt_refusal r = refused(&w, RT_ERR_RANGE, &error);
+    assert_refusal(&r, RT_ITEM_LIGHT, 0, RT_FIELD_NONE, 0, RT_RULE_A_LIGHT);
+    ck_assert_str_eq(r.found, "none");
+    ck_assert_str_eq(error.message, "expected at least one light, found none");
+    rt_scene *scene = (rt_scene *)1;
+    ck_assert_int_eq(rt_scene_create(&w.d, &scene, &error), RT_ERR_RANGE);
+    ck_assert_ptr_null(scene);
+    w.d.light_count = -1;
+    r = refused(&w, RT_ERR_ARGUMENT, &error);
+    ck_assert_str_eq(error.message, "expected an array of lights");
+    make_world(&w);
+    w.d.lights = NULL;
+    r = refused(&w, RT_ERR_ARGUMENT, &error);
+    ck_assert_str_eq(error.message, "expected an array of lights");
 }
 END_TEST
 
@@ -180,9 +205,9 @@ START_TEST(the_first_rule_a_file_states_is_the_first_refused)
     world w;
     rt_error error;
     make_world(&w);
-    w.facets[0].k = 2;
+    w.facets[0].reflection = 2;
     w.vertices[0].x = 2e152;
-    w.d.more_light_count = RT_MAX_LIGHTS;
+    w.d.light_count = RT_MAX_LIGHTS + 1;
     rt_refusal r = refused(&w, RT_ERR_RANGE, &error);
     ck_assert_int_eq(r.item, RT_ITEM_VERTEX);
     w.d.observer = w.d.screen_center;
@@ -196,8 +221,8 @@ START_TEST(the_first_rule_a_file_states_is_the_first_refused)
     assert_refusal(&r, RT_ITEM_CAMERA, 0, RT_FIELD_SCREEN_RIGHT, 0,
                    RT_RULE_COORDINATE);
     make_world(&w);
-    w.facets[1].t = 3;
-    w.d.more_light_count = RT_MAX_LIGHTS;
+    w.facets[1].transparency = 3;
+    w.d.light_count = RT_MAX_LIGHTS + 1;
     r = refused(&w, RT_ERR_RANGE, &error);
     ck_assert_int_eq(r.item, RT_ITEM_FACET);
 }
@@ -217,7 +242,7 @@ START_TEST(a_build_that_refuses_nothing_leaves_no_refusal)
     ck_assert_int_eq(r.status, RT_OK);
     rt_scene_destroy(scene);
     /* a name puts "name: " before the builder's words */
-    w.facets[0].k = -1;
+    w.facets[0].reflection = -1;
     ck_assert_int_eq(rt__scene_build(&w.d, "named.scn", NULL, NULL, NULL,
                                      &scene, &error, NULL),
                      RT_ERR_RANGE);
@@ -236,8 +261,8 @@ static rt_status parse(const char *text, const char *name,
 {
     rt_scene *scene = NULL;
     memset(error, 0, sizeof *error);
-    rt_status status = rt_scene_parse_with(text, strlen(text), name, options,
-                                           &scene, error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), name, options, &scene, error);
     rt_scene_destroy(scene);
     return status;
 }
@@ -360,6 +385,7 @@ static Suite *refusals_suite(void)
     tcase_add_test(tc,
                    the_builder_names_the_point_and_coordinate_out_of_range);
     tcase_add_test(tc, the_builder_names_the_lens_the_camera_and_the_lights);
+    tcase_add_test(tc, the_builder_refuses_a_scene_without_a_light);
     tcase_add_test(tc, the_first_rule_a_file_states_is_the_first_refused);
     tcase_add_test(tc, a_build_that_refuses_nothing_leaves_no_refusal);
     suite_add_tcase(s, tc);

@@ -51,7 +51,7 @@ static rt_scene *load_scene(const char *path)
 {
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(path, &scene, &error);
+    rt_status status = rt_scene_load(path, NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s does not load: %s", path,
                   error.message);
     return scene;
@@ -239,7 +239,7 @@ END_TEST
 START_TEST(two_bands_rendered_apart_equal_the_whole_render)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_image whole = rt_test_render_with(scene, NULL);
     rt_image bands;
@@ -282,7 +282,7 @@ static int log_row(void *user, int row)
 START_TEST(on_row_is_called_once_per_row)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     for (int threads = 1; threads <= 2; threads++) {
         static row_log log;
@@ -306,7 +306,7 @@ END_TEST
 START_TEST(cancel_from_on_row_returns_cancelled)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     for (int threads = 1; threads <= 2; threads++) {
         static row_log log;
@@ -346,7 +346,7 @@ static int raise_token(void *user, int row)
 START_TEST(cancel_token_stops_a_render_within_a_pixel_and_can_be_reset)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_cancel *token;
     ck_assert_int_eq(rt_cancel_create(&token, NULL), RT_OK);
@@ -402,7 +402,7 @@ END_TEST
 START_TEST(render_refuses_wrong_image_size_and_negative_depth)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_image image;
     ck_assert_int_eq(rt_image_init(&image, info.width + 1, info.height, NULL),
@@ -438,9 +438,9 @@ END_TEST
 START_TEST(stats_count_one_camera_ray_per_pixel)
 {
     rt_scene *scene = busy_scene();
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     rt_render_options options;
     rt_render_options_init(&options);
     options.stats = &stats;
@@ -461,7 +461,7 @@ static void check_not_all_background(const char *name)
     const char *path = rt_test_shared_path(name);
     ck_assert_ptr_nonnull(path);
     rt_scene *scene = load_scene(path);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_image image = rt_test_render_with(scene, NULL);
     long other = 0;
@@ -491,7 +491,7 @@ START_TEST(seed_cubes_scene_needs_the_projection_of_b)
     const char *path = rt_test_shared_path("seed-scenes/cubes.scn");
     ck_assert_ptr_nonnull(path);
     rt_scene *scene = load_scene(path);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_ne(info.camera.b_was_projected, 0);
     ck_assert_int_eq(info.facet_count, 14);

@@ -59,7 +59,7 @@ static rt_scene *load(const char *path)
 {
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load(path, &scene, &error) == RT_OK, "%s",
+    ck_assert_msg(rt_scene_load(path, NULL, &scene, &error) == RT_OK, "%s",
                   error.message);
     return scene;
 }
@@ -110,7 +110,7 @@ START_TEST(a_size_renders_as_the_scene_edited_to_that_size)
         int w = sizes[k][0], h = sizes[k][1];
         char *edited_text = edit_size(text, w, h);
         rt_scene *edited = rt_test_scene_from_string(edited_text);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(edited, &info);
         ck_assert_int_eq(info.width, w);
         ck_assert_int_eq(info.height, h);

@@ -284,9 +284,9 @@ START_TEST(a_scene_saved_to_dev_fd_goes_through_the_descriptor)
 {
     rt_scene *scene;
     rt_error error = {0};
-    ck_assert_msg(rt_scene_load(rt_test_source_path("scenes/cubes.scn"),
-                                &scene, &error) == RT_OK, "%s",
-                  error.message);
+    ck_assert_msg(rt_scene_load(rt_test_source_path("scenes/cubes.scn"), NULL,
+                                &scene, &error) == RT_OK,
+                  "%s", error.message);
     bytes expected = {NULL, 0, 0};
     ck_assert_int_eq(rt_scene_write_scn(scene, 0, rt_test_bytes_add, &expected,
                                         NULL, NULL), RT_OK);

@@ -332,7 +332,7 @@ START_TEST(rendered_pixel_is_trace_of_camera_ray_rounded_once)
     /* the render writes exactly rt_channel_to_byte(rt_trace(primary ray)) */
     const double blocker[10] = {-1, -1, 2, 1, -1, 2, 0, 1, 2, 0.5};
     rt_scene *scene = diffuse_scene(1, 3, 1, 6, blocker, 0);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_image image = rt_test_render(scene, RT_DEFAULT_DEPTH, 1);
     for (int j = 0; j < info.height; j++)

@@ -103,8 +103,8 @@ START_TEST(stiff_ground_renders_the_exact_image_in_every_kernel)
     generate(c, scene_path, expected_path, sizeof scene_path);
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK, "%s",
-                  error.message);
+    ck_assert_msg(rt_scene_load(scene_path, NULL, &scene, &error) == RT_OK,
+                  "%s", error.message);
     ck_assert_int_eq(rt_scene_check_precision(scene, c->precision, &error),
                      RT_OK);
     rt_image expected;
@@ -156,8 +156,8 @@ START_TEST(float_refuses_coordinates_beyond_its_products_range)
     generate(&c, scene_path, expected_path, sizeof scene_path);
     rt_scene *scene;
     rt_error error;
-    ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK, "%s",
-                  error.message);
+    ck_assert_msg(rt_scene_load(scene_path, NULL, &scene, &error) == RT_OK,
+                  "%s", error.message);
     ck_assert_int_eq(rt_scene_check_precision(scene, RT_PRECISION_FLOAT,
                                               &error), RT_ERR_RANGE);
     ck_assert_msg(strstr(error.message, "render in double") != NULL, "%s",
@@ -184,7 +184,7 @@ START_TEST(the_loader_warns_beyond_the_crossing_s_limit)
         generate(&c, scene_path, expected_path, sizeof scene_path);
         rt_scene *scene;
         rt_error error;
-        ck_assert_msg(rt_scene_load(scene_path, &scene, &error) == RT_OK,
+        ck_assert_msg(rt_scene_load(scene_path, NULL, &scene, &error) == RT_OK,
                       "%s", error.message);
         ck_assert_msg(rt_test_count_warnings(scene, "plane through the eye") ==
                           cases[k].warnings,

@@ -76,8 +76,8 @@ static rt_scene *heavy_scene(int count, int width, int height)
         .facets = facets,
         .facet_count = count + 1,
         .background = {30, 30, 60},
-        .light_position = {-3, 2, 20},
-        .light_color = {255, 255, 255},
+        .lights = &(rt_light){{-3, 2, 20}, {255, 255, 255}},
+        .light_count = 1,
     };
     rt_scene *scene = NULL;
     rt_error error;
@@ -98,7 +98,7 @@ static int row_equals(const rt_image *a, const rt_image *b, int y)
  * the window shows at the end. */
 static rt_image show_until_done(rt_scene *scene, int threads)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     view_window *window = rt_test_view_window_open(info.width, info.height);
     view_session *session = rt_test_view_session(scene, threads, NULL, NULL);

@@ -309,7 +309,7 @@ START_TEST(a_termination_signal_during_a_blocked_load_ends_the_loop)
 }
 END_TEST
 
-/* The real loader (rt_scene_load_with) on a FIFO: it either refuses it at
+/* The real loader (rt_scene_load) on a FIFO: it either refuses it at
  * once or blocks opening it; either way the window stays live, keeps its
  * picture, and closing it does not wait. */
 START_TEST(a_watched_file_replaced_by_a_fifo_leaves_the_window_live)

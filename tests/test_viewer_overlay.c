@@ -51,7 +51,7 @@ START_TEST(window_point_maps_to_the_image_pixel_under_it)
                                     &j));
     /* A window showing the image at its own size maps one to one. */
     rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     view_window *window = rt_test_view_window_open(info.width, info.height);
     view_session *session = rt_test_view_session(scene, 1, NULL, NULL);
@@ -162,7 +162,7 @@ static int pixel_is(const rt_image *image, int x, int y,
 START_TEST(overlay_draws_each_ray_in_its_colour_along_its_projection)
 {
     rt_scene *scene = rt_test_load_source_scene("scenes/cubes.scn");
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     view_window *window = rt_test_view_window_open(info.width, info.height);
     view_session *session = rt_test_view_session(scene, 1, NULL, NULL);
@@ -238,7 +238,7 @@ START_TEST(clicking_a_pixel_explains_it_starting_with_its_camera_ray)
     ck_assert_int_eq(e->x, x);
     ck_assert_int_eq(e->y, y);
     ck_assert_int_eq(e->first.kind, RT_RAY_CAMERA);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(view_session_scene(view_app_session(app)), &info);
     rt_ray ray = rt_camera_ray(&info.camera, x, y);
     rt_vec3 expected = unit(ray.direction), actual = unit(e->first.direction);

@@ -33,7 +33,7 @@
  *     int code = cli_parse(&program, argc, argv, &s);
  *     if (code != CLI_CONTINUE)
  *         return code;          // 0 after --help or --version, 2 on misuse
- *     ... rt_scene_load_with(s.operands[0], &s.load, ...);
+ *     ... rt_scene_load(s.operands[0], &s.load, ...);
  *     ... s.render.on_row = ...; rt_render(scene, &s.render, &image, NULL);
  */
 #ifndef RAYTRACE_CLI_H

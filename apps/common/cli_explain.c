@@ -29,7 +29,7 @@ int cli_explain_total_reflection(const rt_ray_node *nodes, size_t count,
         nodes[i].parent < 0)
         return 0;
     size_t parent = (size_t)nodes[i].parent;
-    return nodes[parent].hit && nodes[parent].transmission > 0 &&
+    return nodes[parent].hit && nodes[parent].transparency > 0 &&
            child_of(nodes, count, parent, RT_RAY_REFRACTED) < 0;
 }
 
@@ -64,7 +64,7 @@ int cli_explain_terms(const rt_ray_node *nodes, size_t count, size_t i,
             add(refraction, nodes[c].subtotal, 1);
         } else if (cli_explain_total_reflection(nodes, count, c)) {
             /* one ray of weight k + t for k C_R + t C_T, C_T = C_R */
-            double k = nodes[i].k, t = nodes[i].transmission;
+            double k = nodes[i].reflection, t = nodes[i].transparency;
             add(reflection, nodes[c].subtotal, k / (k + t));
             add(refraction, nodes[c].subtotal, t / (k + t));
             total = 1;
@@ -94,7 +94,7 @@ static void print_shadow_ray(FILE *out, const rt_ray_node *r, int indent)
             r->light, r->n_dot_s);
     if (!r->cast)
         fprintf(out, "not cast (%s), term 0\n",
-                r->d == 0 && r->n_dot_s > 0 ? "d = 0" : "N.S <= 0");
+                r->diffuse == 0 && r->n_dot_s > 0 ? "d = 0" : "N.S <= 0");
     else if (r->e > 0) {
         print_color(out, "E 1 (lit): E (N.S) d C_S C_F / 255 x weight = ",
                     r->own);
@@ -131,7 +131,8 @@ static void print_ray(FILE *out, const rt_ray_node *n, size_t count,
             r->t);
     print_vec(out, ", point ", r->point);
     print_vec(out, ", normal as used ", r->normal);
-    fprintf(out, "; k %.6g, t %.6g, d %.6g\n", r->k, r->transmission, r->d);
+    fprintf(out, "; k %.6g, t %.6g, d %.6g\n", r->reflection, r->transparency,
+            r->diffuse);
     for (size_t c = i + 1; c < count; c++)
         if (n[c].parent == (int)i)
             print_ray(out, n, count, c, indent + 1);
@@ -204,7 +205,7 @@ static void print_json_trace(FILE *out, const rt_ray_node *n, size_t count,
     print_json_vec(out, "point", r->point);
     print_json_vec(out, "normal", r->normal);
     fprintf(out, ",\"k\":%.17g,\"transmission\":%.17g,\"d\":%.17g",
-            r->k, r->transmission, r->d);
+            r->reflection, r->transparency, r->diffuse);
     rt_color direct, reflected, refracted;
     cli_explain_terms(n, count, i, &direct, &reflected, &refracted);
     print_json_color(out, "direct", direct);

@@ -86,7 +86,7 @@ rt_status cli_read_scene_text(FILE *in, const char *name, char **text,
 
 /* The whole of standard input, parsed as "<stdin>"; the files it names
  * (an OBJ's libraries) are looked for in the current folder, as
- * rt_scene_load_with looks in the scene's. */
+ * rt_scene_load looks in the scene's. */
 static rt_status load_standard_input(const rt_load_options *given,
                                      rt_scene **scene, rt_error *error)
 {
@@ -100,8 +100,7 @@ static rt_status load_standard_input(const rt_load_options *given,
                                            error);
     if (status != RT_OK)
         return status;
-    status = rt_scene_parse_with(text, length, "<stdin>", &options, scene,
-                                 error);
+    status = rt_scene_parse(text, length, "<stdin>", &options, scene, error);
     free(text);
     return status;
 }
@@ -111,8 +110,7 @@ static rt_status load_here(const cli_export *ex, rt_scene **scene,
 {
     if (ex->from_stdin)
         return load_standard_input(&ex->settings->load, scene, error);
-    return rt_scene_load_with(ex->operand, &ex->settings->load, scene,
-                              error);
+    return rt_scene_load(ex->operand, &ex->settings->load, scene, error);
 }
 
 /* Refusals that need no scene: an image format this build cannot write,
@@ -167,7 +165,7 @@ int cli_export_load(cli_export *ex, int check_output)
 
 void cli_export_print_warnings(const cli_export *ex)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(ex->scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "%s: %s\n", ex->program->name,
@@ -339,8 +337,7 @@ int cli_export_render(cli_export *ex)
                        ex->report.height, ex->report.width,
                        ex->settings->render.samples);
     cli_progress *shown = wants_progress(ex) ? &progress : NULL;
-    rt_render_stats stats;
-    memset(&stats, 0, sizeof stats);
+    rt_render_stats stats = {.size = sizeof stats};
     code = ex->config.bands
                ? ex->config.bands(ex->config.user, ex, shown, &image, &stats)
                : render_here(ex, shown, &image, &stats);

@@ -80,7 +80,7 @@ typedef void (*cli_export_report_func)(void *user, FILE *out);
 
 /* What a program does its own way; NULL fields: rt-export's way. */
 typedef struct cli_export_config {
-    cli_export_load_func load;      /* NULL: rt_scene_load_with, or the
+    cli_export_load_func load;      /* NULL: rt_scene_load, or the
                                        whole of standard input parsed */
     cli_export_bands_func bands;    /* NULL: rt_render (or rt_render_view
                                        for --view) on this process's

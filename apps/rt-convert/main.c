@@ -136,11 +136,11 @@ int main(int argc, char **argv)
 
     rt_scene *scene;
     rt_error error;
-    if (rt_scene_load_with(in, &s.load, &scene, &error) != RT_OK) {
+    if (rt_scene_load(in, &s.load, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-convert: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-convert: %s\n", rt_scene_warning(scene, i)->message);

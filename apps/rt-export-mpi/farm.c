@@ -68,7 +68,7 @@ static rt_status render_band(const farm_job *job, int band,
     int rows = band_height(job, band);
     int top = job->area.y0 + band * job->band_rows;
     rt_render_options options = job->options;
-    rt_render_stats stats;
+    rt_render_stats stats = {.size = sizeof stats};
     options.region = (rt_region){job->area.x0, top, job->area.x1,
                                  top + rows};
     options.stats = &stats;

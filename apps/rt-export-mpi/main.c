@@ -101,8 +101,8 @@ static rt_status load_on_rank_0(void *user, const cli_export *ex,
     rt_load_options load = ex->settings->load;
     load.resolve = share_record;
     load.resolve_user = &r->input.files;
-    return rt_scene_parse_with(r->input.text, r->input.length, ex->name,
-                               &load, scene, error);
+    return rt_scene_parse(r->input.text, r->input.length, ex->name, &load,
+                          scene, error);
 }
 
 /* The render every rank does. */

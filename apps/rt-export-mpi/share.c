@@ -157,7 +157,7 @@ static uint64_t mix(uint64_t h, const void *data, size_t size)
 uint64_t share_digest(const rt_scene *scene)
 {
     uint64_t h = 14695981039346656037u;
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *c = &info.camera;
     h = mix(h, &c->observer, sizeof c->observer);
@@ -175,9 +175,10 @@ uint64_t share_digest(const rt_scene *scene)
         h = mix(h, &v, sizeof v);
     }
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
-        double numbers[4] = {f.k, f.t, f.n, f.d};
+        double numbers[4] = {f.reflection, f.transparency, f.refractive_index,
+                             f.diffuse};
         h = mix(h, f.vertex, sizeof f.vertex);
         h = mix(h, numbers, sizeof numbers);
         h = mix(h, &f.color, sizeof f.color);
@@ -243,8 +244,8 @@ int share_scene(share_input *input, int verdict, const char *name,
         rt_load_options options = *load;
         options.resolve = share_serve;
         options.resolve_user = &input->files;
-        if (rt_scene_parse_with(input->text, input->length, name, &options,
-                                scene, &error) != RT_OK) {
+        if (rt_scene_parse(input->text, input->length, name, &options, scene,
+                           &error) != RT_OK) {
             fprintf(stderr, "rt-export-mpi: rank %d: %s\n", rank,
                     error.message);
             *scene = NULL;

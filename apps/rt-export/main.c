@@ -53,7 +53,7 @@ static const cli_program program = {
 
 static void print_check(const char *path, const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     printf("%s: valid scene\n", path);
     printf("  image      %d x %d\n", info.width, info.height);

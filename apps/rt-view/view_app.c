@@ -170,7 +170,7 @@ rt_render_options view_app__render_options(const view_app *app,
     rt_render_options render = app->options.render;
     if (render.width == 0 && render.height == 0 &&
         app->options.scale != 1.0) {
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         render.width = view_scale_side(info.width, app->options.scale);
         render.height = view_scale_side(info.height, app->options.scale);

@@ -103,7 +103,7 @@ rt_status view_explain_pixel(const rt_scene *scene,
         return status;
     size_t count;
     const rt_ray_node *nodes = rt_ray_tree_nodes(tree, &count);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_vec3 ao = {info.camera.screen_center.x - info.camera.observer.x,
                   info.camera.screen_center.y - info.camera.observer.y,

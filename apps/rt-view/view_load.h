@@ -26,9 +26,9 @@
 
 /*
  * How a scene is read, on the worker thread: view_scene_load
- * (rt_scene_load_with) in rt-view, another function in the tests.  It is
+ * (rt_scene_load) in rt-view, another function in the tests.  It is
  * given the path, the load options with `cancel` set to the load's flag,
- * and fills *scene (NULL on failure) and *error like rt_scene_load_with.
+ * and fills *scene (NULL on failure) and *error like rt_scene_load.
  */
 typedef rt_status (*view_load_func)(const char *path,
                                     const rt_load_options *options,

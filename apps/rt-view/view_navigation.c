@@ -181,7 +181,7 @@ static void cycle_light_view(view_app *app, int view)
 {
     int light = 0;
     if (app->view == view && app->session) {
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(view_session_scene(app->session), &info);
         light = (app->view_light + 1) % info.light_count;
     }

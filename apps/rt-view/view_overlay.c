@@ -24,7 +24,7 @@ static double dot(rt_vec3 a, rt_vec3 b)
 void view_projection_init(view_projection *projection, const rt_scene *scene,
                           const rt_render_options *options)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     projection->camera = info.camera;
     projection->width = options->width > 0 ? options->width : info.width;

@@ -139,7 +139,7 @@ int view_app__finish_load(view_app *app)
         free(shown);
         return 0;
     }
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, VIEW_APP_PROGRAM ": %s\n",

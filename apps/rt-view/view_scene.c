@@ -20,7 +20,7 @@ rt_status view_scene_load(const char *path, const rt_load_options *options,
                           rt_scene **scene, rt_error *error)
 {
     *scene = NULL;
-    return rt_scene_load_with(path, options, scene, error);
+    return rt_scene_load(path, options, scene, error);
 }
 
 int view_scale_side(int side, double scale)

@@ -19,7 +19,7 @@
 #define VIEW_MAX_SCALE 64.0
 
 /* Loads the scene at `path` with the loader's options (NULL: the
- * defaults): rt_scene_load_with, whose messages are FILE:LINE:COLUMN:
+ * defaults): rt_scene_load, whose messages are FILE:LINE:COLUMN:
  * MESSAGE.  *scene is NULL on failure. */
 rt_status view_scene_load(const char *path, const rt_load_options *options,
                           rt_scene **scene, rt_error *error);

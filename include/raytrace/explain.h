@@ -87,9 +87,10 @@ typedef struct rt_ray_node {
     rt_vec3 point;          /* the hit point */
     rt_vec3 normal;         /* the facet's unit normal as used: turned
                                towards the ray's origin */
-    double k, transmission; /* the facet's k and t (its refractive index n
-                               is rt_scene_facet's) */
-    double d;               /* its diffuse weight (1 - k - t in .scn) */
+    double reflection;      /* the facet's k */
+    double transparency;    /* its t (its refractive index n is
+                               rt_scene_facet's) */
+    double diffuse;         /* its diffuse weight d (1 - k - t in .scn) */
     rt_color own;           /* what this ray adds to the pixel by itself,
                                weighted: weight x background when it hits
                                nothing; zero for a hit (its direct light is

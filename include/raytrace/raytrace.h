@@ -7,11 +7,11 @@
  *
  *     rt_scene *scene;
  *     rt_error error;
- *     if (rt_scene_load("cubes.scn", &scene, &error) != RT_OK) {
+ *     if (rt_scene_load("cubes.scn", NULL, &scene, &error) != RT_OK) {
  *         fprintf(stderr, "%s\n", error.message);
  *         return 1;
  *     }
- *     rt_scene_info info;
+ *     rt_scene_info info = {.size = sizeof info};
  *     rt_scene_get_info(scene, &info);
  *     rt_image image;
  *     if (rt_image_init(&image, info.width, info.height, &error) != RT_OK ||
@@ -27,9 +27,10 @@
  * for storage the caller owns; fallible functions return rt_status and take
  * a last rt_error * (may be NULL) that they fill with a message saying what
  * was wrong; out-pointers are NULL after a failure and nothing leaks; option
- * structs carry their size (raytrace/render.h); the library has no global
- * mutable state, never prints, never exits; each function states its
- * thread-safety.
+ * structs carry their size (raytrace/render.h), and so do the structs the
+ * library fills (raytrace/scene.h, above rt_facet_info); the library has
+ * no global mutable state, never prints, never exits; each function states
+ * its thread-safety.
  */
 #ifndef RAYTRACE_RAYTRACE_H
 #define RAYTRACE_RAYTRACE_H

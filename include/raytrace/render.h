@@ -33,7 +33,11 @@ extern "C" {
 #define RT_DEFAULT_DEPTH 5
 
 /*
- * Counters of the work a render did; filled when options.stats is set.
+ * Counters of the work a render did; filled when options.stats is set,
+ * by the rule of the structs the library fills (raytrace/scene.h, above
+ * rt_facet_info): the caller sets stats->size to sizeof(rt_render_stats)
+ * before the render, a smaller size or 0 is refused with RT_ERR_ARGUMENT
+ * before any work.  `size` is no counter: RT_STATS_MAP leaves it out.
  * The "skipped" counts compare with a renderer that skips nothing: one that
  * casts a shadow ray at every hit, a reflected ray at every hit before the
  * depth limit, tests every facet of the file (zero-area ones too) and lets
@@ -110,6 +114,7 @@ extern "C" {
                   "reflection; none where t = 0)")
 
 typedef struct rt_render_stats {
+    size_t size;            /* sizeof(rt_render_stats), set by the caller */
 #define RT_STATS_FIELD_(type, name, origin, merge, group, key, title)      \
     type name;
     RT_STATS_MAP(RT_STATS_FIELD_)
@@ -230,7 +235,9 @@ typedef struct rt_render_options {
     rt_row_callback on_row;     /* optional progress / cancellation */
     rt_cancel *cancel;          /* optional: cancels within one pixel */
     void *user;                 /* passed to on_row */
-    rt_render_stats *stats;     /* optional; zeroed then filled */
+    rt_render_stats *stats;     /* optional; its size set by the caller
+                                   (see rt_render_stats), then every
+                                   counter is zeroed and filled */
     rt_kernel_choice kernel;    /* default RT_KERNEL_AUTO */
     rt_accel accel;             /* default RT_ACCEL_AUTO */
     double aperture;        /* thin-lens radius a in scene units; negative

@@ -8,10 +8,11 @@
  * so every function below that takes a `const rt_scene *` may be called from
  * any number of threads at once.
  *
- * The loader reads from memory (rt_scene_parse); rt_scene_load is a thin
- * wrapper that reads a file first.  On failure the out-pointer is set to NULL,
- * nothing is leaked, and the rt_error (if given) says what and where; a NULL
- * where an object or out-pointer is expected is RT_ERR_ARGUMENT.
+ * The loader reads from memory (rt_scene_parse); rt_scene_load reads a
+ * file first.  Both take rt_load_options (NULL for the defaults).  On
+ * failure the out-pointer is set to NULL, nothing is leaked, and the
+ * rt_error (if given) says what and where; a NULL where an object or
+ * out-pointer is expected is RT_ERR_ARGUMENT.
  *
  * The accessors (rt_scene_get_info, rt_scene_vertex, rt_scene_facet,
  * rt_scene_light, rt_scene_source_at, rt_scene_warning) and the queries
@@ -84,18 +85,36 @@ typedef struct rt_camera {
                                distance that stays sharp (default |AO|) */
 } rt_camera;
 
+/*
+ * How the structs the library fills grow (rt_scene_info, rt_facet_info
+ * here, rt_render_stats in raytrace/render.h), as the option structs do
+ * (raytrace/render.h, above rt_render_options): the first field, `size`,
+ * is set by the caller to sizeof the struct as it was compiled (`info.size
+ * = sizeof info`, or `rt_scene_info info = {.size = sizeof info}`) before
+ * each call, and the library keeps it.  New fields are only ever appended.
+ * The library fills the fields that lie wholly within `size` and writes
+ * nothing beyond it; bytes within `size` past the fields it knows (a
+ * program built against a newer header) it sets to zero.  A size of 0 (a
+ * struct never set) or one that does not reach the last field of the
+ * layout of 0.3, the first with `size`, is a programmer's error: where the
+ * function returns a status it is RT_ERR_ARGUMENT with a message giving
+ * both sizes; the accessors below assert, and where NDEBUG compiles the
+ * assert out they write nothing at all.
+ */
+
 /* What a facet record of the file says. */
 typedef struct rt_facet_info {
+    size_t size;            /* sizeof(rt_facet_info), set by the caller */
     int vertex[3];          /* 0-based indices into the vertex list */
-    double k;               /* reflection coefficient in [0, 1] */
+    double reflection;      /* reflection coefficient k in [0, 1] */
     rt_rgb8 color;
     rt_vec3 normal;         /* unit (b-a)x(c-a); zero for a zero-area facet */
     int degenerate;         /* 0, or why no ray ever meets the facet:
                                RT_FACET_ZERO_AREA, RT_FACET_REPEATED */
     int line;               /* line of the record in the source */
-    double t;               /* transparency in [0, 1], k + t <= 1 */
-    double n;               /* refractive index, > 0 (1 when not given) */
-    double d;               /* diffuse weight >= 0 (1 - k - t in .scn) */
+    double transparency;    /* t in [0, 1], k + t <= 1 */
+    double refractive_index; /* n > 0 (1 when not given) */
+    double diffuse;         /* diffuse weight d >= 0 (1 - k - t in .scn) */
 } rt_facet_info;
 
 /* Values of rt_facet_info.degenerate: facets the renderer leaves out, as
@@ -109,34 +128,35 @@ typedef struct rt_facet_info {
 
 /* Sizes and settings of a scene. */
 typedef struct rt_scene_info {
+    size_t size;            /* sizeof(rt_scene_info), set by the caller */
     int width, height;
     int vertex_count;
     int facet_count;        /* as in the file, degenerate ones included */
     int live_facet_count;   /* facets that can be hit: facet_count less the
                                zero-area and repeated ones */
-    int reflective_facet_count; /* live facets with k > 0 */
+    int reflective_facet_count; /* live facets with reflection k > 0 */
     int warning_count;      /* warnings stored (rt_scene_warning); a warning
                                may stand for many ("... and N more") */
     rt_rgb8 background;
-    rt_vec3 light_position; /* the first light */
-    rt_rgb8 light_color;
     rt_camera camera;
-    int light_count;        /* 1 or more; see rt_scene_light */
-    int transparent_facet_count; /* live facets with t > 0 */
+    int light_count;        /* 1..RT_MAX_LIGHTS; each is rt_scene_light */
+    int transparent_facet_count; /* live facets with transparency t > 0 */
 } rt_scene_info;
 
 /*
- * A facet to build a scene from.  A description zeroed beyond `color` is a
- * handout facet: opaque (t = 0), n = 1, d = 1 - k.
+ * A facet to build a scene from, with the rendering model's symbols
+ * (docs/rendering-model.md) in the comments.  A description zeroed beyond
+ * `color` is a handout facet: opaque (t = 0), n = 1, d = 1 - k.
  */
 typedef struct rt_facet_desc {
     int vertex[3];          /* 0-based indices into the vertex array */
-    double k;               /* reflection coefficient in [0, 1] */
+    double reflection;      /* reflection coefficient k in [0, 1] */
     rt_rgb8 color;
-    double t;               /* transparency: t >= 0, k + t <= 1 */
-    double n;               /* refractive index > 0; 0 stands for 1 */
-    double d;               /* diffuse weight >= 0, used when d_given */
-    int d_given;            /* 0: d = 1 - k - t (the .scn rule) */
+    double transparency;    /* t >= 0, k + t <= 1 */
+    double refractive_index; /* n > 0; 0 stands for 1 */
+    double diffuse;         /* diffuse weight d >= 0, used when
+                               diffuse_given */
+    int diffuse_given;      /* 0: d = 1 - k - t (the .scn rule) */
 } rt_facet_desc;
 
 /*
@@ -153,10 +173,8 @@ typedef struct rt_scene_desc {
     const rt_facet_desc *facets;
     int facet_count;
     rt_rgb8 background;
-    rt_vec3 light_position; /* the first light */
-    rt_rgb8 light_color;
-    const rt_light *more_lights;    /* further lights (copied), or NULL */
-    int more_light_count;
+    const rt_light *lights; /* the point lights (copied) */
+    int light_count;        /* 1..RT_MAX_LIGHTS */
     double aperture;        /* thin-lens radius a >= 0 (0: pinhole) */
     double focal_distance;  /* f > 0; 0 stands for |AO| */
 } rt_scene_desc;
@@ -165,31 +183,16 @@ typedef struct rt_scene_desc {
  * Builds a scene from `desc`, checking the rules of the rendering model
  * (docs/rendering-model.md): finite coordinates, k and t in [0, 1] with
  * k + t <= 1, n > 0, d >= 0, indices in range, sizes, a >= 0, f >= 0, a
- * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA), at most
- * RT_MAX_LIGHTS lights.  A NULL `desc` or `scene`, a negative count or a
- * missing array is RT_ERR_ARGUMENT.  Messages have no file position;
+ * camera that is not degenerate (RT_ERR_RANGE, RT_ERR_CAMERA), at least
+ * one light (RT_ERR_RANGE) and at most RT_MAX_LIGHTS (RT_ERR_LIMIT).  A
+ * NULL `desc` or `scene`, a negative count or a missing array is
+ * RT_ERR_ARGUMENT.  Messages have no file position;
  * zero-area facets give warnings (the first 8 one by one, then one that
  * counts the others and lists their lines), and exact repeats of the facet
  * before them one warning.  Thread-safe.
  */
 RT_API rt_status rt_scene_create(const rt_scene_desc *desc, rt_scene **scene,
                                  rt_error *error);
-
-/*
- * Parses a scene from `length` bytes at `text` (no terminating NUL needed).
- * `name` is used in messages as the file name ("<memory>" when NULL).
- * Numbers are read in the C locale whatever the process's locale.
- * Thread-safe.
- */
-RT_API rt_status rt_scene_parse(const char *text, size_t length,
-                                const char *name, rt_scene **scene,
-                                rt_error *error);
-
-/* Reads the file at `path` and parses it in the format its extension
- * names (see rt_scene_format_from_path; .scn when it names none);
- * messages name `path`.  Thread-safe. */
-RT_API rt_status rt_scene_load(const char *path, rt_scene **scene,
-                               rt_error *error);
 
 /* The scene file formats the loader reads. */
 typedef enum rt_scene_format {
@@ -244,7 +247,7 @@ typedef rt_status (*rt_resolve_func)(void *user, const char *scene_name,
                                      rt_resolved_file *file, rt_error *error);
 
 /*
- * The default resolver of rt_scene_load_with (docs/robustness-input.md,
+ * The default resolver of rt_scene_load (docs/robustness-input.md,
  * "Files a scene names"): `reference` is taken relative to the folder of
  * `scene_name` (the current folder when it has no slash or is NULL) and
  * must stay inside it: no absolute path, no `..` component, no symbolic
@@ -292,7 +295,7 @@ typedef struct rt_load_options {
     rt_cancel *cancel;          /* optional: the load polls it and returns
                                    RT_ERR_CANCELLED soon after it is raised */
     rt_resolve_func resolve;    /* opens the files the scene names; NULL:
-                                   rt_resolve_in_folder for rt_scene_load_with,
+                                   rt_resolve_in_folder for rt_scene_load,
                                    no file at all for a parse from memory */
     void *resolve_user;         /* passed to resolve */
 } rt_load_options;
@@ -332,15 +335,18 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
                                       double *value, rt_error *error);
 
 /*
- * Parses a scene in any format from memory, as rt_scene_parse does for
- * .scn.  `name` names the input in messages and is what the options'
- * resolver locates the files the scene names from (an OBJ's material
- * libraries); without a resolver no file is read (a warning says so).
- * With RT_SCENE_FORMAT_AUTO the format comes from `name`'s extension
- * (.scn when it has none).  `options` may be NULL (the defaults).  Every
- * field of the options is checked whatever the format reads, and one
- * outside its domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond
- * the library's, a format the enum does not name, a tessellation outside
+ * Parses a scene in any format from `length` bytes at `text` (no
+ * terminating NUL needed).  `name` names the input in messages as the
+ * file name ("<memory>" when NULL) and is what the options' resolver
+ * locates the files the scene names from (an OBJ's material libraries);
+ * without a resolver no file is read (a warning says so).  With
+ * RT_SCENE_FORMAT_AUTO (the default) the format comes from `name`'s
+ * extension (.scn when it has none or names no format).  Numbers are read
+ * in the C locale whatever the process's locale.  `options` may be NULL
+ * (the defaults, as rt_load_options_init sets them).  Every field of the
+ * options is checked whatever the format reads, and one outside its
+ * domain is RT_ERR_ARGUMENT naming it: a size of 0 or beyond the
+ * library's, a format the enum does not name, a tessellation outside
  * (0, 1) but 0, a side outside 1..RT_MAX_IMAGE_SIDE but 0, a given field
  * of view outside (0, 180), a given look-from, look-at or up that is not
  * finite, a negative light count or lights without an array.  NULL `text`
@@ -348,26 +354,29 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
  * scene's sources (rt_scene_source_at) are the files the resolver gave.
  * Thread-safe.
  */
-RT_API rt_status rt_scene_parse_with(const char *text, size_t length,
-                                     const char *name,
-                                     const rt_load_options *options,
-                                     rt_scene **scene, rt_error *error);
+RT_API rt_status rt_scene_parse(const char *text, size_t length,
+                                const char *name,
+                                const rt_load_options *options,
+                                rt_scene **scene, rt_error *error);
 
 /* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
  * the first NUL byte, which no scene file holds; FIFOs and terminals are
- * read to their end) and parses it as rt_scene_parse_with does, the files
- * it names read by the options' resolver, rt_resolve_in_folder when they
- * give none.  The scene's first source is the file at `path`.
- * Thread-safe. */
-RT_API rt_status rt_scene_load_with(const char *path,
-                                    const rt_load_options *options,
-                                    rt_scene **scene, rt_error *error);
+ * read to their end) and parses it as rt_scene_parse does, in the format
+ * its extension names by default (see rt_scene_format_from_path; .scn
+ * when it names none); messages name `path`.  The files it names are read
+ * by the options' resolver, rt_resolve_in_folder when they give none (or
+ * `options` is NULL).  The scene's first source is the file at `path`.
+ * A NULL `path` or `scene` is RT_ERR_ARGUMENT.  Thread-safe. */
+RT_API rt_status rt_scene_load(const char *path,
+                               const rt_load_options *options,
+                               rt_scene **scene, rt_error *error);
 
 /* Frees a scene.  rt_scene_destroy(NULL) does nothing.  Not thread-safe on
  * the same scene (no other call may be using it). */
 RT_API void rt_scene_destroy(rt_scene *scene);
 
-/* Fills `info` (a zeroed info for a NULL scene where asserts are compiled
+/* Fills `info`, whose size the caller has set (the rule above rt_facet_info;
+ * a zeroed info, size kept, for a NULL scene where asserts are compiled
  * out).  Thread-safe. */
 RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 
@@ -376,7 +385,8 @@ RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 RT_API rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
 
 /* The i-th facet record (0-based, i < facet_count; else asserted, or a
- * zeroed *facet where NDEBUG is defined).  Thread-safe. */
+ * zeroed *facet, size kept, where NDEBUG is defined) into `facet`, whose
+ * size the caller has set (the rule above rt_facet_info).  Thread-safe. */
 RT_API void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet);
 
 /* The i-th light (0-based, i < light_count; 0 is the first; else asserted,

@@ -192,10 +192,9 @@ static rt_status parse_taken(const char *text, size_t length,
     return status;
 }
 
-rt_status rt_scene_parse_with(const char *text, size_t length,
-                              const char *name,
-                              const rt_load_options *options,
-                              rt_scene **scene, rt_error *error)
+rt_status rt_scene_parse(const char *text, size_t length, const char *name,
+                         const rt_load_options *options, rt_scene **scene,
+                         rt_error *error)
 {
     rt_status status = rt__parse_arguments(text, length, name, scene, error);
     if (status != RT_OK)
@@ -207,8 +206,8 @@ rt_status rt_scene_parse_with(const char *text, size_t length,
     return parse_taken(text, length, name, &taken, NULL, NULL, scene, error);
 }
 
-rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
-                             rt_scene **scene, rt_error *error)
+rt_status rt_scene_load(const char *path, const rt_load_options *options,
+                        rt_scene **scene, rt_error *error)
 {
     if (scene == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
@@ -233,9 +232,4 @@ rt_status rt_scene_load_with(const char *path, const rt_load_options *options,
                          rt_resolve_in_folder, scene, error);
     free(data);
     return status;
-}
-
-rt_status rt_scene_load(const char *path, rt_scene **scene, rt_error *error)
-{
-    return rt_scene_load_with(path, NULL, scene, error);
 }

@@ -73,19 +73,20 @@ static void finish_block(reader *r, const char *library, mtl_state *m)
     f->color = (rt_rgb8){to_byte(m->kd[0]), to_byte(m->kd[1]),
                          to_byte(m->kd[2])};
     if (mirror_model(m->illum))
-        f->k = clamp01(fmax(m->ks[0], fmax(m->ks[1], m->ks[2])));
-    f->t = m->has_d ? 1.0 - clamp01(m->dissolve)
-                    : m->has_tr ? clamp01(m->tr) : 0.0;
-    if (f->k + f->t > 1.0) {
+        f->reflection = clamp01(fmax(m->ks[0], fmax(m->ks[1], m->ks[2])));
+    f->transparency = m->has_d    ? 1.0 - clamp01(m->dissolve)
+                      : m->has_tr ? clamp01(m->tr)
+                                  : 0.0;
+    if (f->reflection + f->transparency > 1.0) {
         char buffer[RT_TOKEN_SHOWN_SIZE];
         rt__obj_count(&r->lowered, library, m->line, 1,
                       "material `%s`: mirror reflection %g and transparency "
                       "%g add up to more than 1; the reflection is lowered "
-                      "to %g", rt__token_shown(&m->name, buffer), f->k, f->t,
-                      1.0 - f->t);
-        f->k = 1.0 - f->t;
+                      "to %g", rt__token_shown(&m->name, buffer),
+                      f->reflection, f->transparency, 1.0 - f->transparency);
+        f->reflection = 1.0 - f->transparency;
     }
-    f->n = m->ni;
+    f->refractive_index = m->ni;
     m->material = -1;
 }
 

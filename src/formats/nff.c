@@ -379,13 +379,14 @@ static rt_status parse(parser *p, const rt_load_options *options,
     d.facet_count = p->mesh.facet_count;
 
     rt_light *lights = NULL;
+    rt_light eye_light = {p->from, {255, 255, 255}};
     int light_count = p->light_count;
     if (light_count == 0) {
         rt__notes_add(&p->notes, p->name, 0, 0,
                       "no light `l` in the file: a white light at the eye "
                       "(`from`)");
-        d.light_position = p->from;
-        d.light_color = (rt_rgb8){255, 255, 255};
+        d.lights = &eye_light;
+        d.light_count = 1;
     } else {
         /* Lights without a colour share a total of about one white light:
          * 1/sqrt(count) each. */
@@ -400,10 +401,8 @@ static rt_status parse(parser *p, const rt_load_options *options,
                                   ? p->lights[i].color
                                   : (rt_rgb8){grey, grey, grey};
         }
-        d.light_position = lights[0].position;
-        d.light_color = lights[0].color;
-        d.more_lights = lights + 1;
-        d.more_light_count = light_count - 1;
+        d.lights = lights;
+        d.light_count = light_count;
     }
     if (p->notes.failed)
         status = rt__nff_out_of_memory(p);

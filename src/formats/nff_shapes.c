@@ -76,11 +76,11 @@ rt_status rt__nff_material(parser *p, const token *f)
         ks /= sum;
         tr /= sum;
     }
-    m.k = ks;
-    m.t = tr <= 1.0 - m.k ? tr : 1.0 - m.k;
-    m.n = tr > 0 ? index : 1.0;
-    m.d = kd;
-    m.d_given = 1;
+    m.reflection = ks;
+    m.transparency = tr <= 1.0 - m.reflection ? tr : 1.0 - m.reflection;
+    m.refractive_index = tr > 0 ? index : 1.0;
+    m.diffuse = kd;
+    m.diffuse_given = 1;
     p->materials[p->material_count++] = m;
     return RT_OK;
 }
@@ -94,9 +94,9 @@ static int current_material(parser *p, const token *at)
         rt_facet_desc m;
         memset(&m, 0, sizeof m);
         m.color = (rt_rgb8){255, 255, 255};
-        m.n = 1.0;
-        m.d = 1.0;
-        m.d_given = 1;
+        m.refractive_index = 1.0;
+        m.diffuse = 1.0;
+        m.diffuse_given = 1;
         if (rt__nff_grow((void **)&p->materials, &p->material_capacity, 0,
                          sizeof *p->materials) != 0)
             return -1;

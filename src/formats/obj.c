@@ -382,7 +382,7 @@ static rt_vec3 framed(const reader *r, int i)
  * the camera.
  */
 static rt_status auto_view(reader *r, const rt_load_options *o,
-                           rt_scene_desc *d)
+                           rt_scene_desc *d, rt_light *light)
 {
     d->width = o->width > 0 ? o->width : o->height > 0 ? o->height
                                                        : DEFAULT_SIDE;
@@ -446,9 +446,10 @@ static rt_status auto_view(reader *r, const rt_load_options *o,
                              radius, center.x, center.y, center.z);
     rt_vec3 toward_light = v3_normalize(v3_add(
         view, v3_add(v3_scale(right, -0.5), v3_scale(image_up, 1.0))));
-    d->light_position = v3_add(center,
-                               v3_scale(toward_light, 2.0 * distance));
-    d->light_color = (rt_rgb8){255, 255, 255};
+    light->position = v3_add(center, v3_scale(toward_light, 2.0 * distance));
+    light->color = (rt_rgb8){255, 255, 255};
+    d->lights = light;
+    d->light_count = 1;
     d->background = (rt_rgb8){32, 32, 32};
     return RT_OK;
 }
@@ -518,7 +519,8 @@ static rt_status read_obj(reader *r, rt_scene **scene)
         return rt__obj_out_of_memory(r);
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
-    status = auto_view(r, r->options, &d);
+    rt_light light;
+    status = auto_view(r, r->options, &d, &light);
     if (status != RT_OK)
         return status;
     d.vertices = r->vertices;

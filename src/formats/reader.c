@@ -152,10 +152,8 @@ rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
                                  "expected a view, found that %s", wrong);
     }
     if (replaces_lights(options)) {
-        desc->light_position = options->lights[0].position;
-        desc->light_color = options->lights[0].color;
-        desc->more_lights = options->lights + 1;
-        desc->more_light_count = options->light_count - 1;
+        desc->lights = options->lights;
+        desc->light_count = options->light_count;
     }
     status = rt__scene_build(desc, name, reading->facet_lines,
                              reading->notes,

@@ -46,9 +46,9 @@ typedef struct rt_reading {
 rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
                             rt_scene **scene, rt_error *error);
 
-/* The readers: the contract of rt_scene_parse_with for one format, with
- * the arguments and `options` as the loader took and checked them
- * (loader.c; `options` NULL only for .scn, from rt_scene_parse); each ends
+/* The readers: the contract of rt_scene_parse for one format, with the
+ * arguments and `options` as the loader took and checked them (loader.c;
+ * `options` never NULL, but .scn also takes NULL as the defaults); each ends
  * with rt__reader_finish. */
 rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
@@ -63,8 +63,8 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
                         struct rt_files *files, rt_scene **scene,
                         rt_error *error);
 
-/* The arguments every entry point that parses takes (rt_scene_parse,
- * rt_scene_parse_with): RT_OK with *scene NULL, or RT_ERR_ARGUMENT with
+/* The arguments every entry point that parses from memory takes
+ * (rt_scene_parse): RT_OK with *scene NULL, or RT_ERR_ARGUMENT with
  * *error filled. */
 rt_status rt__parse_arguments(const char *text, size_t length,
                               const char *name, rt_scene **scene,

@@ -242,10 +242,10 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
 {
     rt_status status = RT_OK;
     if (p->value_count > 7)
-        status = number(p, 7, &f->t);
+        status = number(p, 7, &f->transparency);
     if (status == RT_OK && p->value_count > 8) {
-        status = number(p, 8, &f->n);
-        if (status == RT_OK && f->n == 0.0)
+        status = number(p, 8, &f->refractive_index);
+        if (status == RT_OK && f->refractive_index == 0.0)
             status = fail_at(p, RT_ERR_RANGE, RT_RULE_N, &p->values[8]);
     }
     return status;
@@ -366,7 +366,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
             TRY(integer(p, j, 1, d.vertex_count, "a vertex index", &vertex));
             f->vertex[j] = vertex - 1;
         }
-        TRY(number(p, 3, &f->k));
+        TRY(number(p, 3, &f->reflection));
         TRY(color(p, 4, &f->color));
         TRY(transparency(p, f));
         facet_lines[i] = p->record_line;
@@ -376,17 +376,18 @@ static rt_status parse(parser *p, const rt_load_options *options,
     TRY(expect_record(p, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
     TRY(expect_record(p, 6, "the light source `x, y, z, R, G, B`"));
-    TRY(point(p, 0, &d.light_position));
-    TRY(color(p, 3, &d.light_color));
+    rt_light first;
+    TRY(point(p, 0, &first.position));
+    TRY(color(p, 3, &first.color));
 
     /* Further lights, one a line, to the end of the file. */
-    if (p->record_lines_left > 0) {
-        lights = malloc((size_t)p->record_lines_left * sizeof *lights);
-        if (lights == NULL)
-            goto nomem;
-    }
+    lights = malloc((1 + (size_t)p->record_lines_left) * sizeof *lights);
+    if (lights == NULL)
+        goto nomem;
+    lights[0] = first;
+    d.light_count = 1;
     while (p->record_lines_left > 0) {
-        rt_light *light = &lights[d.more_light_count];
+        rt_light *light = &lights[d.light_count];
         static const char what[] = "a further light `x, y, z, R, G, B`";
         TRY(expect_values(p, 1, 6, what));
         /* Something that is not a number is named before any count. */
@@ -405,9 +406,9 @@ static rt_status parse(parser *p, const rt_load_options *options,
         }
         TRY(point(p, 0, &light->position));
         TRY(color(p, 3, &light->color));
-        d.more_light_count++;
+        d.light_count++;
     }
-    d.more_lights = lights;
+    d.lights = lights;
     if (rt__load_cancelled(options)) {
         status = rt__load_cancel(p->error, p->name);
         goto done;
@@ -450,13 +451,4 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
     }
     rt__lex_close(&p.lex);
     return status;
-}
-
-rt_status rt_scene_parse(const char *text, size_t length, const char *name,
-                         rt_scene **scene, rt_error *error)
-{
-    rt_status status = rt__parse_arguments(text, length, name, scene, error);
-    if (status != RT_OK)
-        return status;
-    return rt__scn_parse(text, length, name, NULL, scene, error);
 }

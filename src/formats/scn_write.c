@@ -46,7 +46,7 @@ static void put_point(out *o, rt_vec3 p, const char *end)
 /* Non-zero when the facet's diffuse weight is the .scn rule's. */
 static int scn_diffuse(const rt_facet_info *f)
 {
-    return f->d == 1.0 - f->k - f->t;
+    return f->diffuse == 1.0 - f->reflection - f->transparency;
 }
 
 rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
@@ -58,7 +58,7 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
                              "expected a scene and a sink");
     unsigned lost = 0;
     out o = {write, user, 0};
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     const rt_camera *c = &info.camera;
     put(&o, "# written by libraytrace %s\n", rt_version_string());
@@ -78,14 +78,14 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
         put_point(&o, rt_scene_vertex(scene, i), "\n");
     put(&o, "%d\n", info.facet_count);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, i, &f);
         put(&o, "%d, %d, %d, %.17g, %d, %d, %d", f.vertex[0] + 1,
-            f.vertex[1] + 1, f.vertex[2] + 1, f.k, f.color.r, f.color.g,
-            f.color.b);
-        int glass = f.t > 0 || f.n != 1.0;
+            f.vertex[1] + 1, f.vertex[2] + 1, f.reflection, f.color.r,
+            f.color.g, f.color.b);
+        int glass = f.transparency > 0 || f.refractive_index != 1.0;
         if (glass && extended)
-            put(&o, ", %.17g, %.17g", f.t, f.n);
+            put(&o, ", %.17g, %.17g", f.transparency, f.refractive_index);
         else if (glass)
             lost |= RT_SCN_DROPPED_TRANSPARENCY;
         if (!scn_diffuse(&f))

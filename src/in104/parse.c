@@ -48,13 +48,13 @@ static int copy_geometry(const rt_scene *loaded, const rt_scene_info *info,
     for (int i = 0; i < info->vertex_count; i++)
         s->points[i] = in104_point(rt_scene_vertex(loaded, i));
     for (int i = 0; i < info->facet_count; i++) {
-        rt_facet_info record;
+        rt_facet_info record = {.size = sizeof record};
         rt_scene_facet(loaded, i, &record);
         facet *f = &s->facets[i];
         f->a = s->points[record.vertex[0]];
         f->b = s->points[record.vertex[1]];
         f->c = s->points[record.vertex[2]];
-        f->k = record.k;
+        f->k = record.reflection;
         f->cp = to_color(record.color);
         /* The normal createFacet() gives, so both agree to the last bit. */
         in104_frame frame;
@@ -76,13 +76,13 @@ int parse(char *fname, scene *s)
 
     rt_scene *loaded = NULL;
     rt_error error;
-    rt_status status = rt_scene_load(fname, &loaded, &error);
+    rt_status status = rt_scene_load(fname, NULL, &loaded, &error);
     if (status != RT_OK) {
         fprintf(stderr, "%s\n", error.message);
         return (int)status;
     }
 
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(loaded, &info);
     if (info.light_count > 1 || info.transparent_facet_count > 0 ||
         info.camera.aperture > 0.0) {
@@ -112,8 +112,10 @@ int parse(char *fname, scene *s)
     s->screenA = in104_point(info.camera.screen_center);
     s->screenB = in104_point(v3_add(info.camera.screen_center,
                                     info.camera.right));
-    s->s.p = in104_point(info.light_position);
-    s->s.cp = to_color(info.light_color);
+    rt_light light;
+    rt_scene_light(loaded, 0, &light);
+    s->s.p = in104_point(light.position);
+    s->s.cp = to_color(light.color);
     rt_scene_destroy(loaded);
     return 0;
 }

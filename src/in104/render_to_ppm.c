@@ -51,7 +51,7 @@ static rt_status build(const scene *s, rt_scene **built)
         facets[i].vertex[0] = 3 * i;
         facets[i].vertex[1] = 3 * i + 1;
         facets[i].vertex[2] = 3 * i + 2;
-        facets[i].k = f->k;
+        facets[i].reflection = f->k;
         facets[i].color = to_rgb8(f->cp);
     }
 
@@ -66,8 +66,9 @@ static rt_status build(const scene *s, rt_scene **built)
     desc.facets = facets;
     desc.facet_count = count;
     desc.background = to_rgb8(s->back);
-    desc.light_position = in104_vec(s->s.p);
-    desc.light_color = to_rgb8(s->s.cp);
+    rt_light light = {in104_vec(s->s.p), to_rgb8(s->s.cp)};
+    desc.lights = &light;
+    desc.light_count = 1;
 
     rt_error error;
     rt_status status = rt_scene_create(&desc, built, &error);

@@ -179,13 +179,14 @@ static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
     f->b = from_rt(s->vertices[info->vertex[1]]);
     f->c = from_rt(s->vertices[info->vertex[2]]);
     f->normal = from_rt(info->normal);
-    f->k = (REAL)info->k;
-    f->t = (REAL)info->t;
-    f->n = (REAL)info->n;
+    f->k = (REAL)info->reflection;
+    f->t = (REAL)info->transparency;
+    f->n = (REAL)info->refractive_index;
     /* The file's rule d = 1 - k - t in this precision (so a handout
      * facet gets exactly the (1 - k) of section 3); else the given d. */
-    REAL d = info->d == 1.0 - info->k - info->t ? 1 - f->k - f->t
-                                                 : (REAL)info->d;
+    REAL d = info->diffuse == 1.0 - info->reflection - info->transparency
+                 ? 1 - f->k - f->t
+                 : (REAL)info->diffuse;
     f->d = d;
     k->transparent |= f->t > 0;
     REAL color[3] = {info->color.r, info->color.g, info->color.b};

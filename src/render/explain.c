@@ -98,9 +98,9 @@ static void record_hit(void *state, int node, int facet, double t,
     n->t = t;
     n->point = point;
     n->normal = normal;
-    n->k = f->k;
-    n->transmission = f->t;
-    n->d = f->d;
+    n->reflection = f->reflection;
+    n->transparency = f->transparency;
+    n->diffuse = f->diffuse;
 }
 
 static void record_miss(void *state, int node, rt_color own)

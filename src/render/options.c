@@ -166,6 +166,13 @@ static rt_status check_options(const rt_render_options *options,
                              "a focal distance of %g: expected a finite "
                              "distance > 0 (0: the scene's)",
                              options->focal_distance);
+    if (options->stats != NULL &&
+        options->stats->size < RT__RENDER_STATS_SIZE_0_3)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "render stats of %zu bytes: expected %zu or "
+                             "more (sizeof(rt_render_stats))",
+                             options->stats->size,
+                             (size_t)RT__RENDER_STATS_SIZE_0_3);
     return RT_OK;
 }
 

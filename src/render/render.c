@@ -116,8 +116,11 @@ static uint64_t rays_cast(const rt_render_stats *s)
     return all;
 }
 
-static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
+/* Fills the caller's stats (its size checked with the options) as far as
+ * its size reaches (base/sized.h). */
+static void fill_stats(const job *j, double seconds, rt_render_stats *out)
 {
+    rt_render_stats all, *stats = &all;
     memset(stats, 0, sizeof *stats);
     /* the THREAD counters, summed over the threads */
 #define COPY_THREAD_(type, name) stats->name = j->totals.name;
@@ -151,6 +154,7 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *stats)
         stats->accel_bytes = octree->bytes;
         stats->accel_facets = (uint64_t)j->scene->live_count;
     }
+    rt__sized_fill(out, stats, sizeof *stats);
 }
 
 static rt_status cancelled(rt_error *error)

@@ -11,6 +11,7 @@
 #include <stdatomic.h>
 
 #include "base/cancel.h"
+#include "base/sized.h"
 #include "kernel/kernel.h"
 #include "raytrace/render.h"
 
@@ -38,6 +39,11 @@ rt_status rt__render_take(const rt_scene *scene,
  * samples a square) and sets plan->grid; RT_OK, else RT_ERR_ARGUMENT with
  * the field and its value in *error. */
 rt_status rt__render_check(rt_render_plan *plan, rt_error *error);
+
+/* The least size of the caller's rt_render_stats: its layout of 0.3
+ * (raytrace/render.h), whose last counter is refraction_rays_skipped. */
+#define RT__RENDER_STATS_SIZE_0_3                                            \
+    RT__FIELD_END(rt_render_stats, refraction_rays_skipped)
 
 /* The RT_ERR_NOMEM every render step reports. */
 rt_status rt__render_out_of_memory(rt_error *error);

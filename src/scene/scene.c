@@ -17,6 +17,7 @@
 
 #include "base/error.h"
 #include "base/exact.h"
+#include "base/sized.h"
 #include "kernel/plane_crossing.h"
 #include "scene_internal.h"
 #include "base/vecmath.h"
@@ -93,10 +94,8 @@ static rt_status check_finite(const check *c, const rt_scene_desc *d)
                           camera_fields[i], part, expected, words,
                           "the camera and the light");
     }
-    for (int i = 0; i <= d->more_light_count; i++) {
-        rt_vec3 p = i == 0 ? d->light_position
-                           : d->more_lights[i - 1].position;
-        int part = bad_coordinate(p, 1);
+    for (int i = 0; i < d->light_count; i++) {
+        int part = bad_coordinate(d->lights[i].position, 1);
         if (part >= 0)
             return refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, i,
                           RT_FIELD_POSITION, part, expected, words,
@@ -175,20 +174,20 @@ static rt_status check_facet(const check *c, const rt_scene_desc *d, int i)
                           "facet %d: expected a vertex index in 0..%d, "
                           "found %d", i, d->vertex_count - 1, f->vertex[j]);
     static const char words[] = "facet %d: expected %s, found %g";
-    if (!(f->k >= 0.0 && f->k <= 1.0))
+    if (!(f->reflection >= 0.0 && f->reflection <= 1.0))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_K, 0,
-                      RT_RULE_K, words, i, RT_RULE_K, f->k);
-    if (!(f->t >= 0.0 && f->t <= 1.0 - f->k)) {
-        const char *rule = f->t >= 0.0 ? RT_RULE_T : RT_RULE_T_SIGN;
+                      RT_RULE_K, words, i, RT_RULE_K, f->reflection);
+    if (!(f->transparency >= 0.0 && f->transparency <= 1.0 - f->reflection)) {
+        const char *rule = f->transparency >= 0.0 ? RT_RULE_T : RT_RULE_T_SIGN;
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_T, 0, rule,
-                      words, i, rule, f->t);
+                      words, i, rule, f->transparency);
     }
-    if (!(f->n >= 0.0 && isfinite(f->n)))
+    if (!(f->refractive_index >= 0.0 && isfinite(f->refractive_index)))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_N, 0,
-                      RT_RULE_N, words, i, RT_RULE_N, f->n);
-    if (f->d_given && !(f->d >= 0.0 && isfinite(f->d)))
+                      RT_RULE_N, words, i, RT_RULE_N, f->refractive_index);
+    if (f->diffuse_given && !(f->diffuse >= 0.0 && isfinite(f->diffuse)))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_D, 0,
-                      RT_RULE_D, words, i, RT_RULE_D, f->d);
+                      RT_RULE_D, words, i, RT_RULE_D, f->diffuse);
     return RT_OK;
 }
 
@@ -216,11 +215,17 @@ static rt_status check_desc(const check *c, const rt_scene_desc *d,
         return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
                       "vertex and facet arrays",
                       "expected vertex and facet arrays");
-    if (d->more_light_count < 0 ||
-        (d->more_light_count > 0 && d->more_lights == NULL))
+    if (d->light_count < 0 || (d->light_count > 0 && d->lights == NULL))
         return refuse(c, RT_ERR_ARGUMENT, RT_ITEM_NONE, 0, RT_FIELD_NONE, 0,
-                      "an array of further lights",
-                      "expected an array of further lights");
+                      "an array of lights", "expected an array of lights");
+    if (d->light_count == 0) {
+        rt_status status = refuse(c, RT_ERR_RANGE, RT_ITEM_LIGHT, 0,
+                                  RT_FIELD_NONE, 0, RT_RULE_A_LIGHT,
+                                  "expected %s, found none", RT_RULE_A_LIGHT);
+        if (c->refusal != NULL)
+            snprintf(c->refusal->found, sizeof c->refusal->found, "none");
+        return status;
+    }
     rt_status status = check_finite(c, d);
     if (status == RT_OK)
         status = check_camera(c, d, camera);
@@ -232,11 +237,11 @@ static rt_status check_desc(const check *c, const rt_scene_desc *d,
     }
     for (int i = 0; status == RT_OK && i < d->facet_count; i++)
         status = check_facet(c, d, i);
-    if (status == RT_OK && d->more_light_count > RT_MAX_LIGHTS - 1) {
+    if (status == RT_OK && d->light_count > RT_MAX_LIGHTS) {
         status = refuse(c, RT_ERR_LIMIT, RT_ITEM_LIGHT, RT_MAX_LIGHTS,
                         RT_FIELD_NONE, 0, RT_RULE_LIGHTS,
-                        "expected %s, found %.0f", RT_RULE_LIGHTS,
-                        1.0 + d->more_light_count);
+                        "expected %s, found %d", RT_RULE_LIGHTS,
+                        d->light_count);
         if (c->refusal != NULL)
             snprintf(c->refusal->found, sizeof c->refusal->found,
                      "light %d", RT_MAX_LIGHTS + 1);
@@ -339,11 +344,15 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
         rt_facet_info *info = &s->facets[i];
         rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
                 c = d->vertices[f->vertex[2]];
+        info->size = sizeof *info;
         memcpy(info->vertex, f->vertex, sizeof info->vertex);
-        info->k = f->k;
-        info->t = f->t;
-        info->n = f->n > 0.0 ? f->n : 1.0;
-        info->d = f->d_given ? f->d : 1.0 - f->k - f->t;
+        info->reflection = f->reflection;
+        info->transparency = f->transparency;
+        info->refractive_index =
+            f->refractive_index > 0.0 ? f->refractive_index : 1.0;
+        info->diffuse = f->diffuse_given
+                            ? f->diffuse
+                            : 1.0 - f->reflection - f->transparency;
         info->color = f->color;
         info->line = facet_lines ? facet_lines[i] : 0;
         info->normal = facet_normal(a, b, c);
@@ -363,8 +372,8 @@ static int add_facets(rt_scene *s, const rt_scene_desc *d,
         check_edge_on(notes, name, i, info->line, info->normal, a, b, c,
                       d->observer);
         s->live_count++;
-        s->reflective_count += f->k > 0.0;
-        s->transparent_count += f->t > 0.0;
+        s->reflective_count += f->reflection > 0.0;
+        s->transparent_count += f->transparency > 0.0;
     }
     add_repeat_warning(notes, name, &r);
     return 1;
@@ -402,7 +411,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->name = name ? strdup(name) : NULL;
     s->vertices = malloc((nv ? nv : 1) * sizeof *s->vertices);
     s->facets = malloc((nf ? nf : 1) * sizeof *s->facets);
-    s->light_count = 1 + d->more_light_count;
+    s->light_count = d->light_count;
     s->lights = malloc((size_t)s->light_count * sizeof *s->lights);
     if ((name && !s->name) || !s->vertices || !s->facets || !s->lights) {
         rt_scene_destroy(s);
@@ -413,9 +422,7 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
     s->background = d->background;
-    s->lights[0] = (rt_light){d->light_position, d->light_color};
-    for (int i = 0; i < d->more_light_count; i++)
-        s->lights[1 + i] = d->more_lights[i];
+    memcpy(s->lights, d->lights, (size_t)s->light_count * sizeof *s->lights);
     if (d->aperture > 0.0)
         s->camera.aperture = d->aperture;
     if (d->focal_distance > 0.0)
@@ -500,26 +507,31 @@ void rt_scene_destroy(rt_scene *scene)
     free(scene);
 }
 
+/* The least sizes of the filled structs: their layouts of 0.3
+ * (raytrace/scene.h, above rt_facet_info). */
+#define SCENE_INFO_SIZE_0_3                                                  \
+    RT__FIELD_END(rt_scene_info, transparent_facet_count)
+#define FACET_INFO_SIZE_0_3 RT__FIELD_END(rt_facet_info, diffuse)
+
 void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
 {
-    if (!RT__EXPECT(info != NULL))
+    if (!RT__EXPECT(info != NULL && info->size >= SCENE_INFO_SIZE_0_3))
         return;
-    memset(info, 0, sizeof *info);
-    if (!RT__EXPECT(s != NULL))
-        return;
-    info->width = s->camera.width;
-    info->height = s->camera.height;
-    info->vertex_count = s->vertex_count;
-    info->facet_count = s->facet_count;
-    info->live_facet_count = s->live_count;
-    info->reflective_facet_count = s->reflective_count;
-    info->warning_count = s->warning_count;
-    info->background = s->background;
-    info->light_position = s->lights[0].position;
-    info->light_color = s->lights[0].color;
-    info->camera = s->camera;
-    info->light_count = s->light_count;
-    info->transparent_facet_count = s->transparent_count;
+    rt_scene_info full = {0};
+    if (RT__EXPECT(s != NULL))
+        full = (rt_scene_info){
+            .width = s->camera.width,
+            .height = s->camera.height,
+            .vertex_count = s->vertex_count,
+            .facet_count = s->facet_count,
+            .live_facet_count = s->live_count,
+            .reflective_facet_count = s->reflective_count,
+            .warning_count = s->warning_count,
+            .background = s->background,
+            .camera = s->camera,
+            .light_count = s->light_count,
+            .transparent_facet_count = s->transparent_count};
+    rt__sized_fill(info, &full, sizeof full);
 }
 
 /* The accessors' index rule: `i` in 0..count-1 of a scene (raytrace/scene.h:
@@ -536,13 +548,12 @@ rt_vec3 rt_scene_vertex(const rt_scene *scene, int i)
 
 void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
 {
-    if (!RT__EXPECT(facet != NULL))
+    if (!RT__EXPECT(facet != NULL && facet->size >= FACET_INFO_SIZE_0_3))
         return;
-    if (!INDEX_OK(scene, i, facet_count)) {
-        memset(facet, 0, sizeof *facet);
-        return;
-    }
-    *facet = scene->facets[i];
+    static const rt_facet_info zero = {0};
+    rt__sized_fill(facet,
+                   INDEX_OK(scene, i, facet_count) ? &scene->facets[i] : &zero,
+                   sizeof *facet);
 }
 
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)

@@ -109,6 +109,7 @@ void rt__notes_free(rt_notes *notes);
 #define RT_RULE_CAMERA "a camera that sees something"
 #define RT_RULE_LIGHTS                                                       \
     "at most 64 lights (each one costs every hit a shadow ray)"
+#define RT_RULE_A_LIGHT "at least one light"
 
 /* What part of a description a refusal names. */
 typedef enum rt_item {
@@ -118,13 +119,14 @@ typedef enum rt_item {
     RT_ITEM_LENS,           /* aperture, focal_distance */
     RT_ITEM_VERTEX,         /* vertices[index] */
     RT_ITEM_FACET,          /* facets[index] */
-    RT_ITEM_LIGHT           /* light `index`: 0 the first (light_position),
-                               i > 0 more_lights[i - 1] */
+    RT_ITEM_LIGHT           /* lights[index] (0 with RT_FIELD_NONE when
+                               there are none) */
 } rt_item;
 
 /* Which field of the item. */
 typedef enum rt_field {
-    RT_FIELD_NONE,          /* the item itself (a light past the limit) */
+    RT_FIELD_NONE,          /* the item itself (a light past the limit,
+                               or no light) */
     RT_FIELD_WIDTH,
     RT_FIELD_HEIGHT,
     RT_FIELD_OBSERVER,

@@ -49,7 +49,7 @@ int main(void)
                 RT_VERSION_STRING, rt_version_string());
         return 1;
     }
-    if (rt_scene_parse(scene_text, sizeof scene_text - 1, "<consumer>",
+    if (rt_scene_parse(scene_text, sizeof scene_text - 1, "<consumer>", NULL,
                        &scene, &error) != RT_OK) {
         fprintf(stderr, "consumer: %s\n", error.message);
         return 1;

@@ -6,7 +6,7 @@
 int main(int argc, char **argv)
 {
     rt_scene *scene;
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_image image;
     rt_error error;
     rt_status status;
@@ -15,7 +15,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s SCENE.scn OUT.ppm\n", argv[0]);
         return 2;
     }
-    if (rt_scene_load(argv[1], &scene, &error) != RT_OK) {
+    if (rt_scene_load(argv[1], NULL, &scene, &error) != RT_OK) {
         fprintf(stderr, "%s: %s\n", argv[0], error.message);
         return 1;
     }

@@ -42,7 +42,7 @@ static void check_refusal(rt_status status, const rt_scene *scene,
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
@@ -50,13 +50,14 @@ static void inspect(const rt_scene *scene)
     require(info.live_facet_count <= info.facet_count);
     require(info.light_count >= 1);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.t >= 0.0 && facet.k + facet.t <= 1.0);
-        require(facet.d >= 0.0 && facet.n > 0.0);
+        require(facet.reflection >= 0.0 && facet.transparency >= 0.0 &&
+                facet.reflection + facet.transparency <= 1.0);
+        require(facet.diffuse >= 0.0 && facet.refractive_index > 0.0);
     }
     for (int i = 0; i < info.light_count; i++) {
         rt_light light;
@@ -96,8 +97,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     memset(&error, 0x55, sizeof error);
-    rt_status status = rt_scene_parse_with(text, size, "fuzz.nff", &options,
-                                           &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, size, "fuzz.nff", &options, &scene, &error);
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);

@@ -98,14 +98,14 @@ static rt_status resolve(void *user, const char *scene_name,
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
     require(info.live_facet_count <= info.facet_count);
     require(rt_scene_source_count(scene) <= 1 + 1024);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         /* No facet without area is made (the triangulator drops them);
          * repeats of the facet before may be left out by the builder. */
@@ -113,8 +113,9 @@ static void inspect(const rt_scene *scene)
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.t >= 0.0 && facet.k + facet.t <= 1.0);
-        require(facet.n > 0.0 && facet.d >= 0.0);
+        require(facet.reflection >= 0.0 && facet.transparency >= 0.0 &&
+                facet.reflection + facet.transparency <= 1.0);
+        require(facet.refractive_index > 0.0 && facet.diffuse >= 0.0);
     }
     for (int i = 0; i < info.warning_count; i++) {
         const rt_warning *w = rt_scene_warning(scene, i);
@@ -126,7 +127,7 @@ static void inspect(const rt_scene *scene)
                   c->screen_center.y - c->observer.y,
                   c->screen_center.z - c->observer.z};
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         rt_vec3 p = rt_scene_vertex(scene, facet.vertex[0]);
         double along = (p.x - c->observer.x) * ao.x +
@@ -174,8 +175,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     memset(&error, 0x55, sizeof error);
-    rt_status status = rt_scene_parse_with(text, obj_size, obj_name,
-                                           &options, &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, obj_size, obj_name, &options, &scene, &error);
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);

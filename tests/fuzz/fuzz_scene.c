@@ -55,7 +55,7 @@ static void trace_some_pixels(const rt_scene *scene, const rt_scene_info *info)
 
 static void inspect(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     require(info.width >= 1 && info.width <= RT_MAX_IMAGE_SIDE);
     require(info.height >= 1 && info.height <= RT_MAX_IMAGE_SIDE);
@@ -64,12 +64,12 @@ static void inspect(const rt_scene *scene)
     for (int i = 0; i < info.vertex_count; i++)
         (void)rt_scene_vertex(scene, i);
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info facet;
+        rt_facet_info facet = {.size = sizeof facet};
         rt_scene_facet(scene, i, &facet);
         for (int j = 0; j < 3; j++)
             require(facet.vertex[j] >= 0 &&
                     facet.vertex[j] < info.vertex_count);
-        require(facet.k >= 0.0 && facet.k <= 1.0);
+        require(facet.reflection >= 0.0 && facet.reflection <= 1.0);
     }
     for (int i = 0; i < info.warning_count; i++) {
         const rt_warning *w = rt_scene_warning(scene, i);
@@ -89,7 +89,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rt_scene *scene = (rt_scene *)1;
     rt_error error;
     memset(&error, 0x55, sizeof error);
-    rt_status status = rt_scene_parse(text, size, "fuzz.scn", &scene, &error);
+    rt_status status =
+        rt_scene_parse(text, size, "fuzz.scn", NULL, &scene, &error);
     if (status == RT_OK) {
         require(scene != NULL);
         inspect(scene);

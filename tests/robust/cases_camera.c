@@ -31,7 +31,7 @@ void rb_case_c1(rb_method method, rt_precision precision, rb_result *r)
         rb_view view = {eye, rb_add(eye, rb_v(1, 0, 0)), rb_add(eye, rb_v(1, -0.8, 0)),
                         64, 64, rb_v(0.5, 0.5, 2), WHITE, SKY};
         rt_scene *scene = rb_scene(&m, &view);
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         rb_engine *e = rb_engine_create(scene, method, precision);
         rt_test_rng rng = {31};
@@ -178,7 +178,7 @@ static int naive_render_child(void *arg, char *note, size_t size)
     (void)note, (void)size;
     naive_render_job *job = arg;
     rt_image image;
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     (void)info;
     rt_image_init(&image, 4, 4, NULL);
     long nans = rb_engine_render(job->engine, job->depth, 1, &image);
@@ -211,7 +211,8 @@ void rb_case_r1(rb_method method, rt_precision precision, rb_result *r)
                      status < 0 ? -status : status);
         }
     } else {
-        rt_render_stats stats[2];
+        rt_render_stats stats[2] = {{.size = sizeof stats[0]},
+                                    {.size = sizeof stats[0]}};
         int depths[2] = {depth / 10, depth};
         for (int run = 0; run < 2; run++) {
             rt_image image;

@@ -37,19 +37,19 @@ void rb_invariance_scene(rb_mesh *m, rb_view *v)
 static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
 {
     uint64_t sig = 1469598103934665603u;
-    rt_scene_info info;
-    rt_scene_get_info(scene, &info);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
     for (int bounce = 0; bounce < 6; bounce++) {
         rt_hit h;
         if (!rt_scene_nearest_hit(scene, ray, INFINITY, &h))
             return sig * 1099511628211u;
-        rt_facet_info f;
+        rt_facet_info f = {.size = sizeof f};
         rt_scene_facet(scene, h.facet, &f);
         rt_vec3 off = rb_add(h.point, rb_scale(h.normal, 1e-9));
-        int lit = rb_dot(h.normal, rb_sub(info.light_position, h.point)) > 0 &&
-                  !rt_scene_occluded(scene, off, info.light_position, h.facet);
+        int lit = rb_dot(h.normal, rb_sub(light.position, h.point)) > 0 &&
+                  !rt_scene_occluded(scene, off, light.position, h.facet);
         sig = (sig ^ (uint64_t)(h.facet * 2 + lit + 7)) * 1099511628211u;
-        if (f.k == 0)
+        if (f.reflection == 0)
             break;
         rt_vec3 d = rb_scale(ray.direction, 1 / rb_length(ray.direction));
         d = rb_sub(d, rb_scale(h.normal, 2 * rb_dot(d, h.normal)));
@@ -60,7 +60,7 @@ static uint64_t path_signature(const rt_scene *scene, rt_ray ray)
 
 static unsigned char *edge_mask(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     int w = info.width, hgt = info.height;
     uint64_t *sig = malloc(sizeof *sig * (size_t)(w * hgt));
@@ -101,7 +101,7 @@ rt_image rb_render_view(const rb_mesh *base, const rb_view *base_view,
         rb_mesh_vertex(&m, rb_transform_point(base->vertices[i], scale, shift));
     for (int i = 0; i < base->facet_count; i++)
         rb_mesh_facet(&m, base->facets[i].vertex[0], base->facets[i].vertex[1],
-                      base->facets[i].vertex[2], base->facets[i].k,
+                      base->facets[i].vertex[2], base->facets[i].reflection,
                       base->facets[i].color);
     rb_view view = *base_view;
     rb_view_transform(&view, scale, shift);

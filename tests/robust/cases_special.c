@@ -59,8 +59,9 @@ void rb_case_v1(rb_method method, rt_precision precision, rb_result *r)
         }
         rt_scene *scene = NULL;
         rt_error error;
-        if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", &scene,
-                           &error) == RT_OK || scene != NULL)
+        if (rt_scene_parse(bad_scenes[i], strlen(bad_scenes[i]), "<v1>", NULL,
+                           &scene, &error) == RT_OK ||
+            scene != NULL)
             r->failures++;
         rt_scene_destroy(scene);
     }
@@ -79,10 +80,11 @@ void rb_case_v1(rb_method method, rt_precision precision, rb_result *r)
                 view.observer.z = specials[s];
             else
                 view.light.x = specials[s];
+            rt_light light = {view.light, WHITE};
             rt_scene_desc desc = {view.observer, view.screen_center,
                                   view.screen_right, 8, 8, m.vertices,
                                   m.vertex_count, m.facets, m.facet_count,
-                                  SKY, view.light, WHITE};
+                                  SKY, &light, 1};
             rt_scene *scene = NULL;
             r->total++;
             if (rt_scene_create(&desc, &scene, NULL) == RT_OK || scene != NULL)

@@ -162,7 +162,7 @@ void rb_case_d1(rb_method method, rt_precision precision, rb_result *r)
                          GREY);
     rb_view view = rb_ray_view(1, rb_v(0, 0, 3), SKY);
     rt_scene *scene = rb_scene(&m, &view);
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     if (method == RB_OURS && (info.live_facet_count != 0 ||
                               info.warning_count != n))
@@ -330,7 +330,7 @@ void rb_case_d5(rb_method method, rt_precision precision, rb_result *r)
                 c = m.vertices[3 * i + 2];
         rt_vec3 exact = exact_normal(a, b, c), n;
         if (method == RB_OURS) {
-            rt_facet_info info;
+            rt_facet_info info = {.size = sizeof info};
             rt_scene_facet(scene, i, &info);
             n = info.normal;
         } else {

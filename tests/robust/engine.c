@@ -63,14 +63,16 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
         return e;
     }
     /* The kernel is built from what the public accessors give. */
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     e->vertices = calloc((size_t)info.vertex_count + 1, sizeof *e->vertices);
     e->facets = calloc((size_t)info.facet_count + 1, sizeof *e->facets);
     for (int i = 0; i < info.vertex_count; i++)
         e->vertices[i] = rt_scene_vertex(scene, i);
-    for (int i = 0; i < info.facet_count; i++)
+    for (int i = 0; i < info.facet_count; i++) {
+        e->facets[i].size = sizeof e->facets[i];
         rt_scene_facet(scene, i, &e->facets[i]);
+    }
     rt_kernel_source source;
     memset(&source, 0, sizeof source);
     source.vertices = e->vertices;
@@ -154,7 +156,7 @@ rt_color rb_engine_trace(const rb_engine *e, rt_ray ray, int depth)
 long rb_engine_render(const rb_engine *e, int depth, int threads,
                       rt_image *image)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(e->scene, &info);
     long nans = 0;
     if (e->method == RB_OURS) {

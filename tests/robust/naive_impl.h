@@ -190,23 +190,23 @@ static void N(trace)(const N(scene) *s, N(vec) o, N(vec) d, int depth,
 
 static N(scene) *N(create)(const rt_scene *scene, int method)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     N(scene) *s = calloc(1, sizeof *s);
     s->tris = calloc((size_t)(info.facet_count + 1), sizeof *s->tris);
     s->method = method;
     for (int i = 0; i < info.facet_count; i++) {
-        rt_facet_info fi;
+        rt_facet_info fi = {.size = sizeof fi};
         rt_scene_facet(scene, i, &fi);
         N(tri) *f = &s->tris[s->count++];
         f->a = N(from)(rt_scene_vertex(scene, fi.vertex[0]));
         f->b = N(from)(rt_scene_vertex(scene, fi.vertex[1]));
         f->c = N(from)(rt_scene_vertex(scene, fi.vertex[2]));
         f->n = N(unit)(N(cross)(N(sub)(f->b, f->a), N(sub)(f->c, f->a)));
-        f->k = (R)fi.k;
-        f->t = (R)fi.t;
-        f->ior = (R)fi.n;
-        f->d = (R)fi.d;
+        f->k = (R)fi.reflection;
+        f->t = (R)fi.transparency;
+        f->ior = (R)fi.refractive_index;
+        f->d = (R)fi.diffuse;
         f->color[0] = fi.color.r, f->color[1] = fi.color.g,
         f->color[2] = fi.color.b;
     }

@@ -127,7 +127,7 @@ void rb_view_transform(rb_view *view, double scale, rt_vec3 shift);
 rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view);
 /* The same with further lights, already placed. */
 rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
-                          const rt_light *more_lights, int more_light_count);
+                          const rt_light *further, int further_count);
 
 /* ------------------------------------------------------------------ */
 /* Helpers                                                             */

@@ -256,11 +256,11 @@ void rb_mesh_orient_outward(rb_mesh *m, int first, rt_vec3 inside)
 void rb_mesh_glass(rb_mesh *m, int first, double t, double n)
 {
     for (int i = first; i < m->facet_count; i++) {
-        m->facets[i].k = 0;
-        m->facets[i].t = t;
-        m->facets[i].n = n;
-        m->facets[i].d = 0;
-        m->facets[i].d_given = 1;
+        m->facets[i].reflection = 0;
+        m->facets[i].transparency = t;
+        m->facets[i].refractive_index = n;
+        m->facets[i].diffuse = 0;
+        m->facets[i].diffuse_given = 1;
     }
 }
 
@@ -270,8 +270,16 @@ rt_scene *rb_scene(const rb_mesh *mesh, const rb_view *view)
 }
 
 rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
-                          const rt_light *more_lights, int more_light_count)
+                          const rt_light *further, int further_count)
 {
+    rt_light lights[RT_MAX_LIGHTS];
+    if (further_count < 0 || further_count > RT_MAX_LIGHTS - 1) {
+        fprintf(stderr, "robust: %d further lights\n", further_count);
+        return NULL;
+    }
+    lights[0] = (rt_light){view->light, view->light_color};
+    for (int i = 0; i < further_count; i++)
+        lights[1 + i] = further[i];
     rt_scene_desc desc = {
         .observer = view->observer,
         .screen_center = view->screen_center,
@@ -283,10 +291,8 @@ rt_scene *rb_scene_lights(const rb_mesh *mesh, const rb_view *view,
         .facets = mesh->facets,
         .facet_count = mesh->facet_count,
         .background = view->background,
-        .light_position = view->light,
-        .light_color = view->light_color,
-        .more_lights = more_lights,
-        .more_light_count = more_light_count};
+        .lights = lights,
+        .light_count = 1 + further_count};
     rt_scene *scene = NULL;
     rt_error error;
     if (rt_scene_create(&desc, &scene, &error) != RT_OK) {

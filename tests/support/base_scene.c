@@ -45,7 +45,7 @@ void rt_test_base_scene(char *buffer, size_t size, int replace,
 
 void rt_test_assert_base_scene(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.width, 2);
     ck_assert_int_eq(info.height, 2);
@@ -56,8 +56,11 @@ void rt_test_assert_base_scene(const rt_scene *scene)
     ck_assert_int_eq(info.background.r, 10);
     ck_assert_int_eq(info.background.g, 20);
     ck_assert_int_eq(info.background.b, 30);
-    ck_assert_double_eq(info.light_position.z, 10.0);
-    ck_assert_int_eq(info.light_color.g, 255);
+    ck_assert_int_eq(info.light_count, 1);
+    rt_light light;
+    rt_scene_light(scene, 0, &light);
+    ck_assert_double_eq(light.position.z, 10.0);
+    ck_assert_int_eq(light.color.g, 255);
     ck_assert_double_eq(info.camera.observer.z, 5.0);
     ck_assert_double_eq(info.camera.screen_center.z, 4.0);
     ck_assert_double_eq(info.camera.right.x, 1.0);
@@ -68,12 +71,12 @@ void rt_test_assert_base_scene(const rt_scene *scene)
     v = rt_scene_vertex(scene, 2);
     ck_assert_double_eq(v.x, 0.0);
     ck_assert_double_eq(v.y, 1.0);
-    rt_facet_info facet;
+    rt_facet_info facet = {.size = sizeof facet};
     rt_scene_facet(scene, 0, &facet);
     ck_assert_int_eq(facet.vertex[0], 0);
     ck_assert_int_eq(facet.vertex[1], 1);
     ck_assert_int_eq(facet.vertex[2], 2);
-    ck_assert_double_eq(facet.k, 0.0);
+    ck_assert_double_eq(facet.reflection, 0.0);
     ck_assert_int_eq(facet.color.r, 255);
     ck_assert_int_eq(facet.color.g, 0);
     ck_assert_int_eq(facet.degenerate, 0);

@@ -29,8 +29,8 @@ int rt_test_have_python_json(void)
 int rt_test_loader_lists_its_files(void)
 {
     rt_scene *scene;
-    if (rt_scene_load_with(rt_test_source_path("tests/data/obj/cube.obj"),
-                           NULL, &scene, NULL) != RT_OK)
+    if (rt_scene_load(rt_test_source_path("tests/data/obj/cube.obj"), NULL,
+                      &scene, NULL) != RT_OK)
         return 0;
     int count = rt_scene_source_count(scene);
     rt_scene_destroy(scene);

@@ -35,8 +35,8 @@ rt_scene *rt_test_scene_from_string(const char *text)
 {
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(text, strlen(text), "<test>", &scene,
-                                      &error);
+    rt_status status =
+        rt_scene_parse(text, strlen(text), "<test>", NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "scene did not load: %s", error.message);
     return scene;
 }
@@ -46,8 +46,8 @@ rt_scene *rt_test_load_source_scene(const char *relative)
     rt_scene *scene = NULL;
     rt_error error;
     memset(&error, 0, sizeof error);
-    rt_status status = rt_scene_load(rt_test_source_path(relative), &scene,
-                                     &error);
+    rt_status status =
+        rt_scene_load(rt_test_source_path(relative), NULL, &scene, &error);
     ck_assert_msg(status == RT_OK, "%s did not load: %s", relative,
                   error.message);
     return scene;
@@ -62,8 +62,7 @@ rt_status rt_test_parse_obj(const char *text, const rt_load_options *given,
     else
         rt_load_options_init(&options);
     options.format = RT_SCENE_FORMAT_OBJ;
-    return rt_scene_parse_with(text, strlen(text), NULL, &options, scene,
-                               error);
+    return rt_scene_parse(text, strlen(text), NULL, &options, scene, error);
 }
 
 rt_status rt_test_parse_refused(const char *text, size_t length,
@@ -71,8 +70,8 @@ rt_status rt_test_parse_refused(const char *text, size_t length,
 {
     rt_scene *scene = (rt_scene *)1;
     memset(error, 0, sizeof *error);
-    rt_status status = rt_scene_parse(text, length, "hostile.scn", &scene,
-                                      error);
+    rt_status status =
+        rt_scene_parse(text, length, "hostile.scn", NULL, &scene, error);
     ck_assert_msg(status != RT_OK, "a hostile scene loaded");
     ck_assert_ptr_null(scene);
     ck_assert_int_eq(error->status, status);
@@ -96,7 +95,7 @@ void rt_test_write_two_facet_scene(const char *path, const char *background)
 
 rt_scene_info rt_test_scene_info(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     return info;
 }

@@ -283,7 +283,8 @@ void rt_test_kernels_check(const char *name, const rt_scene *scene,
             options.sampling = c->sampling;
             char what[512];
             snprintf(what, sizeof what, "%s (%s, %s", name, pname, c->name);
-            rt_render_stats s_ref, s_fast;
+            rt_render_stats s_ref = {.size = sizeof s_ref};
+            rt_render_stats s_fast = {.size = sizeof s_fast};
             options.kernel = RT_KERNEL_SCALAR;
             options.threads = 1;
             options.stats = &s_ref;
@@ -324,7 +325,8 @@ void rt_test_spec_check(const char *name, const rt_test_spec *s, double scale,
     char *t = rt_test_spec_text(s, scale);
     rt_scene *scene = NULL;
     rt_error error;
-    rt_status status = rt_scene_parse(t, strlen(t), name, &scene, &error);
+    rt_status status =
+        rt_scene_parse(t, strlen(t), name, NULL, &scene, &error);
     free(t);
     if (status != RT_OK) {
         ck_assert_msg(may_refuse, "%s: the scene did not load: %s", name,

@@ -27,7 +27,7 @@ static double max3(double a, double b, double c)
  */
 bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
 {
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     bench_depth_bound b = {max3(info.background.r, info.background.g,
                                 info.background.b), 0.0, 0.0};
@@ -43,14 +43,16 @@ bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
         extent = fmax(extent, max3(fabs(v.x), fabs(v.y), fabs(v.z)));
     }
     int top = -1;
-    rt_facet_info f, g;
+    rt_facet_info f = {.size = sizeof f}, g = {.size = sizeof g};
     for (int i = 0; i < info.facet_count; i++) {
         rt_scene_facet(scene, i, &f);
         if (f.degenerate)
             continue;
-        double carried = f.k + f.t;
-        double local = f.d * max3(light[0] * f.color.r, light[1] * f.color.g,
-                                  light[2] * f.color.b) / 255.0;
+        double carried = f.reflection + f.transparency;
+        double local = f.diffuse *
+                       max3(light[0] * f.color.r, light[1] * f.color.g,
+                            light[2] * f.color.b) /
+                       255.0;
         b.peak = fmax(b.peak, bench_peak_needed(local, carried));
         if (top < 0 || carried > b.k_max) {
             top = i;
@@ -74,7 +76,8 @@ bench_depth_bound bench_find_depth_bound(const rt_scene *scene)
             coplanar &= distance_to_plane(rt_scene_vertex(scene, g.vertex[v]),
                                           a, f.normal) <= tolerance;
         if (!coplanar)
-            b.pair = fmax(b.pair, (f.k + f.t) * (g.k + g.t));
+            b.pair = fmax(b.pair, (f.reflection + f.transparency) *
+                                      (g.reflection + g.transparency));
     }
     return b;
 }

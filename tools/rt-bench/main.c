@@ -214,11 +214,11 @@ int main(int argc, char **argv)
     const rt_render_options *options = &a.cli.render;
     rt_scene *scene;
     rt_error error;
-    if (rt_scene_load(a.scene, &scene, &error) != RT_OK) {
+    if (rt_scene_load(a.scene, NULL, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-bench: %s\n", error.message);
         return EXIT_BAD_INPUT;
     }
-    rt_scene_info info;
+    rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     int width, height;
     if (rt_render_image_size(scene, options, &width, &height, &error) !=

@@ -54,8 +54,9 @@ rt_status bench_sphere(int facets, int width, int height, rt_scene **scene,
     int segments = 2 * rings;
     rt_scene_desc d = {.width = width, .height = height,
                        .background = {20, 30, 60},
-                       .light_position = {-3.0, -4.0, 5.0},
-                       .light_color = {255, 255, 255}};
+                       .lights = &(rt_light){{-3.0, -4.0, 5.0},
+                                             {255, 255, 255}},
+                       .light_count = 1};
     look_at_origin(&d, (rt_vec3){0.5, -3.5, 1.0}, 0.4);
     int vertex_count = 2 + (rings - 1) * segments;
     int facet_count = 2 * segments * (rings - 1);
@@ -110,8 +111,9 @@ rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
 {
     rt_scene_desc d = {.width = width, .height = height,
                        .background = {40, 40, 40},
-                       .light_position = {-2.5, -3.0, 4.0},
-                       .light_color = {255, 255, 255}};
+                       .lights = &(rt_light){{-2.5, -3.0, 4.0},
+                                             {255, 255, 255}},
+                       .light_count = 1};
     look_at_origin(&d, (rt_vec3){1.0, -4.0, 1.5}, 0.45);
     rt_vec3 *v = malloc((size_t)facets * 3 * sizeof *v);
     rt_facet_desc *f = calloc((size_t)facets, sizeof *f);
@@ -130,7 +132,7 @@ rt_status bench_soup(int facets, int width, int height, rt_scene **scene,
         f[i].vertex[0] = 3 * i;
         f[i].vertex[1] = 3 * i + 1;
         f[i].vertex[2] = 3 * i + 2;
-        f[i].k = i % 3 == 0 ? 0.3 : 0.0;
+        f[i].reflection = i % 3 == 0 ? 0.3 : 0.0;
         f[i].color = (rt_rgb8){(unsigned char)(64 + next(&state) % 192),
                                (unsigned char)(64 + next(&state) % 192),
                                (unsigned char)(64 + next(&state) % 192)};

@@ -134,7 +134,7 @@ static rt_status make_scene(const entry *e, const char *shared_dir,
     if (length < 0 || (size_t)length >= sizeof path)
         return RT_ERR_ARGUMENT;
     /* Rendered at the entry's size through the render options. */
-    return rt_scene_load(path, scene, error);
+    return rt_scene_load(path, NULL, scene, error);
 }
 
 /* A hardware counter of this process's threads (those it starts later
@@ -197,6 +197,7 @@ static int measure_once(const rt_scene *scene, const setting *s,
     options.kernel = s->kernel;
     options.threads = s->threads;
     options.accel = s->accel;
+    r->stats.size = sizeof r->stats;
     options.stats = &r->stats;
     options.width = image->width;
     options.height = image->height;
@@ -300,7 +301,7 @@ int main(int argc, char **argv)
                     error.message);
             continue;
         }
-        rt_scene_info info;
+        rt_scene_info info = {.size = sizeof info};
         rt_scene_get_info(scene, &info);
         facets[e] = info.live_facet_count;
         rt_image images[SETTING_COUNT] = {{0}};
