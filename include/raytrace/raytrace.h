@@ -1,9 +1,19 @@
 /*
  * raytrace/raytrace.h - the whole public API of libraytrace in one include.
  *
- * libraytrace renders scenes of triangles lit by one point light, Whitted
- * style (hard shadows, mirror reflections), as docs/rendering-model.md
- * describes.
+ * libraytrace renders scenes of triangles Whitted style, as
+ * docs/rendering-model.md describes: point lights (up to RT_MAX_LIGHTS)
+ * casting hard shadows, mirror reflection and refraction through glass up
+ * to a bounded depth, a pinhole or thin-lens camera, one or several rays a
+ * pixel.  A scene is read from a .scn, NFF or OBJ file (its MTL libraries
+ * through a resolver the caller may replace) or built from a description
+ * in memory (raytrace/scene.h); it is immutable once built, and any number
+ * of threads may render it.  A render (raytrace/render.h) is exact in
+ * double precision and faster in float, by brute force or through an
+ * octree that gives the same bytes, on as many threads as asked, and can
+ * be cancelled; images are saved as PPM (or PNG, in a build with libpng)
+ * without ever leaving a half-written file (raytrace/image.h);
+ * rt_explain_pixel tells how a pixel got its colour (raytrace/explain.h).
  *
  *     rt_scene *scene;
  *     rt_error error;
