@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/sized.h"
 #include "base/file.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
@@ -78,14 +79,11 @@ static rt_status take_options(const rt_load_options *in, rt_load_options *out,
     rt_load_options_init(out);
     if (in == NULL)
         return RT_OK;
-    if (in->size == 0 || in->size > sizeof *out)
-        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
-                             "load options of %zu bytes: expected 1..%zu "
-                             "(set by rt_load_options_init)",
-                             in->size, sizeof *out);
-#define TAKE(field)                                                          \
-    if (offsetof(rt_load_options, field) + sizeof in->field <= in->size)      \
-        out->field = in->field;
+    rt_status status = rt__options_size_check(in->size, sizeof *out, "load",
+                                              name, error);
+    if (status != RT_OK)
+        return status;
+#define TAKE(field) RT__TAKE_FIELD(rt_load_options, in, out, field)
     TAKE(format) TAKE(tessellation) TAKE(width) TAKE(height)
     TAKE(look_from_given) TAKE(look_at_given) TAKE(up_given) TAKE(fov_given)
     TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)

@@ -37,6 +37,7 @@
 #include <unistd.h>
 
 #include "base/error.h"
+#include "base/sized.h"
 #include "formats/formats.h"
 #include "formats/save_target.h"
 #include "raytrace/image.h"
@@ -478,15 +479,26 @@ static rt_status take_options(const rt_save_options *in, rt_save_options *out,
     rt_save_options_init(out);
     if (in == NULL)
         return RT_OK;
-    if (in->size == 0 || in->size > sizeof *out)
-        return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
-                             "save options of %zu bytes: expected 1..%zu "
-                             "(set by rt_save_options_init)",
-                             in->size, sizeof *out);
-    if (offsetof(rt_save_options, hold_termination_signals) +
-            sizeof in->hold_termination_signals <= in->size)
-        out->hold_termination_signals = in->hold_termination_signals;
-    return RT_OK;
+    rt_status status = rt__options_size_check(in->size, sizeof *out, "save",
+                                              path, error);
+    if (status == RT_OK)
+        RT__TAKE_FIELD(rt_save_options, in, out, hold_termination_signals)
+    return status;
+}
+
+/* The start of every save and check of `path`: the caller's options taken
+ * into *o and the destination resolved into *d (whose path is NULL, or
+ * the caller's to free, whatever the status). */
+static rt_status take_target(const char *path,
+                             const rt_save_options *options,
+                             const char *noun, rt_save_options *o,
+                             rt_save_target *d, rt_error *error)
+{
+    memset(d, 0, sizeof *d);
+    rt_status status = take_options(options, o, path, error);
+    if (status != RT_OK)
+        return status;
+    return rt__save_resolve(path, d, noun, error);
 }
 
 rt_status rt__save(const char *path, const rt_producer *producer,
@@ -496,11 +508,9 @@ rt_status rt__save(const char *path, const rt_producer *producer,
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
     rt_save_options o;
-    rt_status status = take_options(options, &o, path, error);
-    if (status != RT_OK)
-        return status;
     rt_save_target d;
-    status = rt__save_resolve(path, &d, noun_of(producer), error);
+    rt_status status = take_target(path, options, noun_of(producer), &o, &d,
+                                   error);
     /* A descriptor of this process: written through it, at its offset (at
      * the end when it appends), and left open; nothing is truncated or
      * replaced, so what the caller wrote before and writes after stays
@@ -552,11 +562,8 @@ rt_status rt_image_save_check(const char *path,
         return rt__error_set(error, RT_ERR_ARGUMENT, path, 0, 0,
                              "expected a path");
     rt_save_options o;
-    rt_status status = take_options(options, &o, path, error);
-    if (status != RT_OK)
-        return status;
     rt_save_target d;
-    status = rt__save_resolve(path, &d, "image", error);
+    rt_status status = take_target(path, options, "image", &o, &d, error);
     if (status != RT_OK) {
         free(d.path);
         return status;

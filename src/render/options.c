@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/sized.h"
 #include "render_internal.h"
 #include "scene/scene_internal.h"
 
@@ -39,14 +40,11 @@ static rt_status take_options(const rt_render_options *in,
     rt_render_options_init(out);
     if (in == NULL)
         return RT_OK;
-    if (in->size == 0 || in->size > sizeof *out)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "render options of %zu bytes: expected 1..%zu "
-                             "(set by rt_render_options_init)",
-                             in->size, sizeof *out);
-#define TAKE(field)                                                          \
-    if (offsetof(rt_render_options, field) + sizeof in->field <= in->size)    \
-        out->field = in->field;
+    rt_status status = rt__options_size_check(in->size, sizeof *out,
+                                              "render", NULL, error);
+    if (status != RT_OK)
+        return status;
+#define TAKE(field) RT__TAKE_FIELD(rt_render_options, in, out, field)
     TAKE(max_depth) TAKE(threads) TAKE(precision) TAKE(fast_inv_sqrt)
     TAKE(samples) TAKE(sampling) TAKE(on_row) TAKE(cancel) TAKE(user)
     TAKE(stats) TAKE(kernel) TAKE(accel) TAKE(aperture) TAKE(focal_distance)

@@ -12,20 +12,32 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The array `items` of `count` elements of `size` bytes with room for one
+ * more: itself, or moved to twice *capacity (`first` when empty), or NULL
+ * (out of memory: the notes have failed, `items` is unchanged). */
+static void *room_for_one(rt_notes *notes, void *items, int *capacity,
+                          int count, size_t size, int first)
+{
+    if (count < *capacity)
+        return items;
+    int bigger = *capacity ? 2 * *capacity : first;
+    void *grown = realloc(items, (size_t)bigger * size);
+    if (grown == NULL) {
+        notes->failed = 1;
+        return NULL;
+    }
+    *capacity = bigger;
+    return grown;
+}
+
 /* A new item at the end of the list, or NULL (out of memory: failed). */
 static rt_warning *new_item(rt_notes *notes)
 {
-    if (notes->count == notes->capacity) {
-        int bigger = notes->capacity ? 2 * notes->capacity : 8;
-        rt_warning *grown = realloc(notes->items,
-                                    (size_t)bigger * sizeof *grown);
-        if (grown == NULL) {
-            notes->failed = 1;
-            return NULL;
-        }
-        notes->items = grown;
-        notes->capacity = bigger;
-    }
+    rt_warning *items = room_for_one(notes, notes->items, &notes->capacity,
+                                     notes->count, sizeof *items, 8);
+    if (items == NULL)
+        return NULL;
+    notes->items = items;
     return &notes->items[notes->count++];
 }
 
@@ -118,17 +130,12 @@ static rt_note_kind *find_kind(rt_notes *notes, const char *kind)
         if (notes->kinds[i].kind == kind ||
             strcmp(notes->kinds[i].kind, kind) == 0)
             return &notes->kinds[i];
-    if (notes->kind_count == notes->kind_capacity) {
-        int bigger = notes->kind_capacity ? 2 * notes->kind_capacity : 4;
-        rt_note_kind *grown = realloc(notes->kinds,
-                                      (size_t)bigger * sizeof *grown);
-        if (grown == NULL) {
-            notes->failed = 1;
-            return NULL;
-        }
-        notes->kinds = grown;
-        notes->kind_capacity = bigger;
-    }
+    rt_note_kind *kinds = room_for_one(notes, notes->kinds,
+                                       &notes->kind_capacity,
+                                       notes->kind_count, sizeof *kinds, 4);
+    if (kinds == NULL)
+        return NULL;
+    notes->kinds = kinds;
     rt_note_kind *k = &notes->kinds[notes->kind_count++];
     memset(k, 0, sizeof *k);
     k->kind = kind;
