@@ -106,10 +106,12 @@ static const spec table[] = {
      "auto (default: the fastest loops this processor runs) or scalar "
      "(one facet at a time); the image is the same"},
     {CLI_GROUP_QUALITY, "accel", 0, "A", 0, V_CHOICE, 0, 0, 0,
-     "auto|none|octree", {RT_ACCEL_AUTO, RT_ACCEL_NONE, RT_ACCEL_OCTREE},
+     "auto|none|octree|kdtree",
+     {RT_ACCEL_AUTO, RT_ACCEL_NONE, RT_ACCEL_OCTREE, RT_ACCEL_KDTREE},
      AT(render.accel), NO_OFFSET, NULL,
      "auto (default: an octree from 300 facets on), none (every ray tests "
-     "every facet) or octree; the image is the same"},
+     "every facet), octree or kdtree (built by the surface area "
+     "heuristic); the image is the same"},
     {CLI_GROUP_SIZE, "size", 0, "WxH", 0, V_SIZE, 1, RT_MAX_IMAGE_SIDE, 0,
      NULL, {0}, NO_OFFSET, NO_OFFSET, NULL,
      "the image's size in pixels instead of the scene's; the screen keeps "

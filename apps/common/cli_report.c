@@ -102,6 +102,7 @@ static const char *accel_name(rt_accel a)
 {
     return a == RT_ACCEL_NONE     ? "none"
            : a == RT_ACCEL_OCTREE ? "octree"
+           : a == RT_ACCEL_KDTREE ? "kdtree"
                                   : "auto";
 }
 
@@ -159,17 +160,18 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     if (!s->accel_used)
         return;
     uint64_t queries = s->accel_queries ? s->accel_queries : 1;
+    const char *name = s->accel_kdtree ? "kd-tree" : "octree";
     fprintf(out,
-            "octree: built in %.3f s; %llu leaves, depth %d, %.2f references "
+            "%s: built in %.3f s; %llu leaves, depth %d, %.2f references "
             "per facet (+%llu facets in every ray's list), %.1f MB\n"
-            "octree per query: %.2f leaves visited, %.2f facets tested "
+            "%s per query: %.2f leaves visited, %.2f facets tested "
             "(brute force: %llu); %llu queries left to brute force\n",
-            s->accel_build_seconds, (unsigned long long)s->accel_leaves,
+            name, s->accel_build_seconds, (unsigned long long)s->accel_leaves,
             s->accel_depth,
             s->accel_facets > 0
                 ? (double)s->accel_references / (double)s->accel_facets
                 : 0.0,
-            (unsigned long long)s->accel_always, s->accel_bytes / 1e6,
+            (unsigned long long)s->accel_always, s->accel_bytes / 1e6, name,
             (double)s->accel_leaves_visited / queries,
             (double)s->accel_facet_tests / queries,
             (unsigned long long)s->accel_facets,
@@ -210,13 +212,21 @@ static void print_json_group(FILE *out, const rt_render_stats *s,
 
 static void print_json_octree(FILE *out, const rt_render_stats *s)
 {
-    if (!s->accel_used) {
-        fputs("\"octree\":null", out);
-        return;
+    /* "octree" then "kdtree": the structure used has its figures, the
+     * other one is null */
+    int kd = s->accel_used && s->accel_kdtree;
+    int oct = s->accel_used && !s->accel_kdtree;
+    for (int which = 0; which < 2; which++) {
+        int used = which ? kd : oct;
+        fputs(which ? ",\"kdtree\":" : "\"octree\":", out);
+        if (!used) {
+            fputs("null", out);
+            continue;
+        }
+        fputc('{', out);
+        print_json_group(out, s, "octree");
+        fputc('}', out);
     }
-    fputs("\"octree\":{", out);
-    print_json_group(out, s, "octree");
-    fputc('}', out);
 }
 
 static void print_json_settings(FILE *out, const cli_render_report *r)

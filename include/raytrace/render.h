@@ -111,7 +111,10 @@ extern "C" {
     /* the mirror ray of a total internal reflection carries t */            \
     X(uint64_t, refraction_rays_skipped, THREAD, SUM, rays_skipped,          \
       refraction, "refraction rays (depth limit or total internal "          \
-                  "reflection; none where t = 0)")
+                  "reflection; none where t = 0)")                           \
+    /* 1: the structure the render used (accel_used) was the kd-tree, whose  \
+       figures the accel_ fields are; 0: the octree */                       \
+    X(int, accel_kdtree, OCTREE, MAX, flag, kdtree, "kd-tree")
 
 typedef struct rt_render_stats {
     size_t size;            /* sizeof(rt_render_stats), set by the caller */
@@ -157,14 +160,18 @@ typedef enum rt_kernel_choice {
 /*
  * How a ray finds the facets it may hit.  Every choice gives the same
  * image, bit for bit; the octree is built once per scene and precision, by
- * the first render that needs it, and kept with the scene.
+ * the first render that needs it, and kept with the scene; so is the
+ * kd-tree.
  */
 typedef enum rt_accel {
     RT_ACCEL_AUTO = 0,      /* the octree from RT_ACCEL_AUTO_FACETS live
                                facets on, else brute force */
     RT_ACCEL_NONE = 1,      /* brute force: every ray tests every facet */
-    RT_ACCEL_OCTREE = 2     /* an octree of the facets, whatever their
+    RT_ACCEL_OCTREE = 2,    /* an octree of the facets, whatever their
                                number */
+    RT_ACCEL_KDTREE = 3     /* a kd-tree of the facets built by the surface
+                               area heuristic, whatever their number
+                               (docs/kdtree.md) */
 } rt_accel;
 
 /* Below this many live facets brute force is as fast as the octree on the

@@ -17,6 +17,8 @@
  * threads may trace with it.  Its octree is built on first request, once,
  * under a lock (prepare_octree, thread-safe), and only read afterwards;
  * once it exists, nearest_hit and occluded go through it (same answers).
+ * Its kd-tree (prepare_kdtree) is made the same way, and once it exists
+ * it serves those two queries instead.
  *
  * Nothing here calls up into the scene, the render or the formats: what a
  * trace reports besides its colour (the counters, a recorder's callbacks)
@@ -94,6 +96,9 @@ typedef struct rt_trace_settings {
                                octree (rt__kernel_prepare_octree first) */
     const rt_trace_recorder *recorder;  /* NULL (renders), or what records
                                            the rays for rt_explain_pixel */
+    int kdtree;             /* non-zero: queries go through the kernel's
+                               kd-tree (rt__kernel_prepare_kdtree first);
+                               it takes precedence over `octree` */
 } rt_trace_settings;
 
 /* Work counters of one thread: the THREAD counters of RT_STATS_MAP
@@ -120,7 +125,10 @@ typedef struct rt_counters {
 #define RT_OCTREE_REFERENCE_BUDGET 16
 #define RT_OCTREE_REFERENCE_EXTRA 4096
 
-/* What an octree holds (octree_build_impl.h builds it on first use). */
+/* What an octree holds (octree_build_impl.h builds it on first use); a
+ * kd-tree's figures come in the same struct (kdtree_build_impl.h; its
+ * `always` counts the facets of a scene whose coordinates leave no room
+ * for cells, all of them then). */
 typedef struct rt_octree_info {
     double build_seconds;
     uint64_t nodes;
@@ -172,6 +180,12 @@ struct rt_kernel_ops {
      * nothing is kept, so a later call builds it again.
      */
     rt_status (*prepare_octree)(const rt_kernel *kernel,
+                                const rt_cancel *cancel,
+                                rt_octree_info *info);
+    /* The same for the kernel's kd-tree (docs/kdtree.md): RT_OK,
+     * RT_ERR_NOMEM or RT_ERR_CANCELLED, nothing kept when cancelled.
+     * Once it exists, nearest_hit and occluded go through it. */
+    rt_status (*prepare_kdtree)(const rt_kernel *kernel,
                                 const rt_cancel *cancel,
                                 rt_octree_info *info);
     /* The colour the ray carries (docs/rendering-model.md), its work added
@@ -226,6 +240,13 @@ static inline rt_status rt__kernel_prepare_octree(const rt_kernel *kernel,
                                                   rt_octree_info *info)
 {
     return kernel->ops->prepare_octree(kernel, cancel, info);
+}
+
+static inline rt_status rt__kernel_prepare_kdtree(const rt_kernel *kernel,
+                                                  const rt_cancel *cancel,
+                                                  rt_octree_info *info)
+{
+    return kernel->ops->prepare_kdtree(kernel, cancel, info);
 }
 
 static inline rt_color rt__kernel_trace(const rt_kernel *kernel,

@@ -21,8 +21,11 @@
  *     octree_impl.h        the octree's nodes (octree_build_impl.h builds
  *                          them, octree_walk_impl.h walks a ray through
  *                          them)
+ *     kdtree_impl.h        the kd-tree's nodes (kdtree_build_impl.h,
+ *                          kdtree_walk_impl.h: the same for it)
  *     query_brute_impl.h   nearest hit and any hit over every facet
  *     query_octree_impl.h  the same through the octree
+ *     query_kdtree_impl.h  the same through the kd-tree
  *     query_impl.h         the queries a trace makes: the only chooser
  *     shade_impl.h         what happens at a hit: the point, its offsets,
  *                          the direct light (shade_hit)
@@ -60,6 +63,7 @@ typedef struct tri {
 
 typedef struct block block;     /* eight facets, simd_impl.h */
 typedef struct octree octree;   /* octree_impl.h */
+typedef struct kdtree kdtree;   /* kdtree_impl.h */
 
 /* The vertices minus one ray origin, for the rays that start there, and
  * for a scene of few facets their edge functions for the packets. */
@@ -91,7 +95,8 @@ typedef struct KERNEL_T {
     REAL extent;            /* the largest |coordinate| of a vertex or a
                                light */
     _Atomic(octree *) tree;     /* built on first use, then only read */
-    pthread_mutex_t tree_lock;  /* serialises that construction */
+    _Atomic(kdtree *) kd;       /* the same for the kd-tree */
+    pthread_mutex_t tree_lock;  /* serialises both constructions */
 } KERNEL_T;
 
 /* The precision's kernel behind the interface's handle (its first
@@ -122,6 +127,8 @@ typedef struct trace_ctx {
     int max_depth;
     rt_counters *counters;
     const rt_trace_recorder *rec;   /* NULL in renders */
+    const kdtree *kd;           /* NULL, or the kd-tree the queries use
+                                   (then tree is NULL) */
 } trace_ctx;
 
 #include "intersect_impl.h"
@@ -129,11 +136,21 @@ typedef struct trace_ctx {
 #include "octree_impl.h"
 #include "octree_build_impl.h"
 #include "octree_walk_impl.h"
+#include "kdtree_impl.h"
+#include "kdtree_build_impl.h"
+#include "kdtree_walk_impl.h"
 
 /* k's octree, once prepare_octree() has built it; else NULL. */
 static const octree *octree_of(const KERNEL_T *k)
 {
     return atomic_load_explicit((_Atomic(octree *) *)&k->tree,
+                                memory_order_acquire);
+}
+
+/* k's kd-tree, once prepare_kdtree() has built it; else NULL. */
+static const kdtree *kdtree_of(const KERNEL_T *k)
+{
+    return atomic_load_explicit((_Atomic(kdtree *) *)&k->kd,
                                 memory_order_acquire);
 }
 
@@ -146,21 +163,28 @@ static inline trace_ctx trace_context(const KERNEL_T *k,
                                       const rt_trace_recorder *rec)
 {
     return (trace_ctx){
-        k, settings->octree ? octree_of(k) : NULL, eye_of(settings->eye),
-        k->avx2 && settings->kernel != RT_KERNEL_SCALAR,
-        settings->fast_inv_sqrt, settings->max_depth, counters, rec};
+        k, settings->octree && !settings->kdtree ? octree_of(k) : NULL,
+        eye_of(settings->eye), k->avx2 && settings->kernel != RT_KERNEL_SCALAR,
+        settings->fast_inv_sqrt, settings->max_depth, counters, rec,
+        settings->kdtree ? kdtree_of(k) : NULL};
 }
 
 /* The context of the queries nearest_hit and occluded: the fast loops,
- * the octree once built, nothing recorded. */
+ * the kd-tree once built, else the octree once built, nothing recorded. */
 static inline trace_ctx query_context(const KERNEL_T *k,
                                       rt_counters *counters)
 {
-    return (trace_ctx){k, octree_of(k), NULL, k->avx2, 0, 0, counters, NULL};
+    const kdtree *kd = kdtree_of(k);
+    return (trace_ctx){k,    kd != NULL ? NULL : octree_of(k),
+                       NULL, k->avx2,
+                       0,    0,
+                       counters, NULL,
+                       kd};
 }
 
 #include "query_brute_impl.h"
 #include "query_octree_impl.h"
+#include "query_kdtree_impl.h"
 #include "query_impl.h"
 #include "shade_impl.h"
 #include "trace_impl.h"
@@ -230,6 +254,7 @@ static rt_kernel *kernel_create(const rt_kernel_source *s)
         return NULL;
     k->base.ops = &KERNEL_OPS;
     atomic_init(&k->tree, NULL);
+    atomic_init(&k->kd, NULL);
     pthread_mutex_init(&k->tree_lock, NULL);
     if (!allocate(k, s)) {
         kernel_destroy(&k->base);
@@ -274,6 +299,7 @@ static void kernel_destroy(rt_kernel *kernel)
         free(k->planes);
         free(k->light_side);
         octree_free(atomic_load(&k->tree));
+        kdtree_free(atomic_load(&k->kd));
         pthread_mutex_destroy(&k->tree_lock);
     }
     free(k);
@@ -309,6 +335,40 @@ static rt_status kernel_prepare_octree(const rt_kernel *kernel,
         info->depth = t->depth;
         info->references = (uint64_t)t->ref_count;
         info->always = (uint64_t)t->always_count;
+        info->slivers = (uint64_t)t->sliver_count;
+        info->bytes = (uint64_t)t->bytes;
+    }
+    return RT_OK;
+}
+
+static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
+                                       const rt_cancel *cancel,
+                                       rt_octree_info *info)
+{
+    const KERNEL_T *k = kernel_of(kernel);
+    KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy kd-tree changes */
+    const kdtree *t = kdtree_of(k);
+    rt_status status = RT_OK;
+    if (t == NULL) {
+        pthread_mutex_lock(&mutable->tree_lock);
+        t = atomic_load_explicit(&mutable->kd, memory_order_relaxed);
+        if (t == NULL) {
+            /* stored only when complete, as the octree */
+            kdtree *built = kdtree_build(k, cancel, &status);
+            atomic_store_explicit(&mutable->kd, built, memory_order_release);
+            t = built;
+        }
+        pthread_mutex_unlock(&mutable->tree_lock);
+    }
+    if (t == NULL)
+        return status;
+    if (info != NULL) {
+        info->build_seconds = t->build_seconds;
+        info->nodes = (uint64_t)t->node_count;
+        info->leaves = (uint64_t)t->leaf_count;
+        info->depth = t->depth;
+        info->references = (uint64_t)t->ref_count;
+        info->always = t->brute ? (uint64_t)k->count : 0;
         info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
     }
@@ -404,6 +464,7 @@ const rt_kernel_ops KERNEL_OPS = {
     .eye_create = kernel_eye_create,
     .eye_destroy = kernel_eye_destroy,
     .prepare_octree = kernel_prepare_octree,
+    .prepare_kdtree = kernel_prepare_kdtree,
     .trace = kernel_trace,
     .trace_span = kernel_trace_span,
     .nearest_hit = kernel_nearest_hit,

@@ -180,6 +180,27 @@ typedef struct walk {
 } walk;
 
 /*
+ * The growth of the cells a ray must walk through a tree whose root is
+ * lo..hi and whose margin covers the test's perturbation up to
+ * reach_margin (docs/octree.md, steps 1 and 6; the kd-tree's walk uses it
+ * too): 0 within that reach, the bound beyond it up to `limit`, and -1
+ * past `limit` (brute force is cheaper).
+ */
+static double growth_for(const double lo[3], const double hi[3],
+                         double reach_margin, double limit, const ray *r)
+{
+    double reach = 0;
+    for (int a = 0; a < 3; a++) {
+        double o = (double)get(r->origin, a);
+        reach = fmax(reach, fmax(fabs(lo[a] - o), fabs(hi[a] - o)));
+    }
+    double bound = 16 * (double)gamma_bound(8) * reach;
+    if (bound <= reach_margin)
+        return 0;
+    return bound <= limit ? bound : -1;
+}
+
+/*
  * The growth of the cells a ray must walk (docs/octree.md, steps 1 and 6).
  * The watertight test in REAL is exact for vertices moved by about
  * 4 gamma(8) times their distance to the ray's origin, which 16 gamma(8) R
@@ -191,15 +212,8 @@ typedef struct walk {
  */
 static double fat_growth(const octree *t, const ray *r)
 {
-    double reach = 0;
-    for (int a = 0; a < 3; a++) {
-        double o = (double)get(r->origin, a);
-        reach = fmax(reach, fmax(fabs(t->lo[a] - o), fabs(t->hi[a] - o)));
-    }
-    double bound = 16 * (double)gamma_bound(8) * reach;
-    if (bound <= t->reach_margin)
-        return 0;
-    return bound <= OCTREE_FAT_MAX * (t->hi[0] - t->lo[0]) ? bound : -1;
+    return growth_for(t->lo, t->hi, t->reach_margin,
+                      OCTREE_FAT_MAX * (t->hi[0] - t->lo[0]), r);
 }
 
 /* Starts the walk of ray r with cells grown by g >= 0 (fat_growth()). */

@@ -481,7 +481,8 @@ static rt_color trace_alone(const trace_ctx *c, vec origin, vec incoming,
      * context that says so in constants, so that the loop's octree,
      * scalar and recording code is compiled away. */
     const trace_ctx plain = {c->k, NULL,    c->eye,       1,
-                             c->fast, c->max_depth, c->counters, NULL};
+                             c->fast, c->max_depth, c->counters, NULL,
+                             NULL};
     REAL color[3] = {0, 0, 0};
     trace_opaque(&plain, origin, incoming, known, color);
     return (rt_color){color[0], color[1], color[2]};
@@ -511,7 +512,7 @@ static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
     const KERNEL_EYE_T *eye = c.eye;
     vec origin = from_rt(origin_d);
     int packets = c.simd && eye != NULL && eye->edges != NULL &&
-                  !k->transparent && !settings->octree &&
+                  !k->transparent && !settings->octree && !settings->kdtree &&
                   settings->recorder == NULL &&
                   memcmp(&eye->origin, &origin, sizeof origin) == 0;
 #else

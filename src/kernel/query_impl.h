@@ -1,6 +1,7 @@
 /*
  * query_impl.h - the queries a trace makes, nearest hit and any hit: the
- * only place that chooses how - through the octree when the trace has one
+ * only place that chooses how - through the kd-tree when the trace has one
+ * (query_kdtree_impl.h), else through the octree when it has one
  * (query_octree_impl.h), else brute force (query_brute_impl.h), which
  * itself picks the scalar loops or the AVX2 filter.  Part of
  * kernel_impl.h, compiled once per precision; everything here is static.
@@ -19,6 +20,9 @@
 static inline int nearest(const trace_ctx *c, const KERNEL_EYE_T *eye,
                           const ray *r, REAL t_max, int skip, hit *h)
 {
+    if (c->kd != NULL)
+        return nearest_kdtree(c->k, c->simd, c->kd, r, t_max, skip, h,
+                              c->counters);
     if (c->tree != NULL)
         return nearest_octree(c->k, c->simd, c->tree, r, t_max, skip, h,
                               c->counters);
@@ -30,6 +34,9 @@ static inline int nearest(const trace_ctx *c, const KERNEL_EYE_T *eye,
 static inline int any_hit(const trace_ctx *c, const ray *r, REAL t_max,
                           int skip)
 {
+    if (c->kd != NULL)
+        return any_hit_kdtree(c->k, c->simd, c->kd, r, t_max, skip,
+                              c->counters);
     if (c->tree != NULL)
         return any_hit_octree(c->k, c->simd, c->tree, r, t_max, skip,
                               c->counters);

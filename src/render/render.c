@@ -142,9 +142,10 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *out)
     stats->ray_facet_tests_skipped = skipped_rays * (live + dead) +
                                      rays_cast(stats) * dead +
                                      j->totals.early_exit_saved;
-    if (j->frame.settings.octree) {
+    if (j->frame.settings.octree || j->frame.settings.kdtree) {
         const rt_octree_info *octree = &j->frame.octree;
         stats->accel_used = 1;
+        stats->accel_kdtree = j->frame.settings.kdtree;
         stats->accel_build_seconds = octree->build_seconds;
         stats->accel_nodes = octree->nodes;
         stats->accel_leaves = octree->leaves;
@@ -173,6 +174,13 @@ static rt_status prepare_octree(rt_frame *f, const rt_scene *scene,
     if (accel == RT_ACCEL_NONE ||
         (accel == RT_ACCEL_AUTO && scene->live_count < RT_ACCEL_AUTO_FACETS))
         return RT_OK;
+    if (accel == RT_ACCEL_KDTREE) {
+        rt_status status = rt__kernel_prepare_kdtree(f->kernel, cancel,
+                                                     &f->octree);
+        if (status == RT_OK)
+            f->settings.kdtree = 1;
+        return status;
+    }
     rt_status status = rt__kernel_prepare_octree(f->kernel, cancel,
                                                  &f->octree);
     if (status == RT_OK)
@@ -209,7 +217,7 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
     f->lens_up = v3_normalize(scene->camera.up);
     f->settings = (rt_trace_settings){options->max_depth,
                                       options->fast_inv_sqrt != 0,
-                                      options->kernel, NULL, 0, NULL};
+                                      options->kernel, NULL, 0, NULL, 0};
     rt_status status = rt_scene_check_precision(scene, options->precision,
                                                 error);
     if (status != RT_OK)
@@ -227,7 +235,8 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
         return rt__render_out_of_memory(error);
     /* The camera rays' origin, subtracted from every vertex once for the
      * scene (only the fast brute-force loops read it). */
-    if (options->kernel != RT_KERNEL_SCALAR && !f->settings.octree) {
+    if (options->kernel != RT_KERNEL_SCALAR && !f->settings.octree &&
+        !f->settings.kdtree) {
         f->settings.eye = rt__scene_eye(scene, options->precision);
         if (f->settings.eye == NULL)
             return rt__render_out_of_memory(error);
