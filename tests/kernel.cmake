@@ -16,3 +16,15 @@ raytrace_add_suite(test_packets_edges INTERNAL)
 # What a render prepares once and reuses: the scene's eye, the team of
 # threads (src/base/workers.c), the statistics generated from RT_STATS_MAP.
 raytrace_add_suite(test_prepared INTERNAL)
+
+# The kd-tree against brute force (tests/test_kdtree.c): the octree's
+# scenes and checks (accel_scenes.c) through the kd-tree, and its own
+# bounds.  The scenes of ../shared get their own entry, skipped (exit 77)
+# when it is absent.
+raytrace_add_suite(test_kdtree INTERNAL
+  SOURCES "${PROJECT_SOURCE_DIR}/tools/rt-perf/bench_scenes.c"
+          accel_scenes.c)
+target_include_directories(raytrace_test_kdtree PRIVATE
+  "${PROJECT_SOURCE_DIR}/tools/rt-perf")
+set_tests_properties(test_kdtree PROPERTIES TIMEOUT 900)
+raytrace_add_shared_test(test_kdtree TIMEOUT 900)

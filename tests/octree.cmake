@@ -2,7 +2,8 @@
 # tests/CMakeLists.txt; uses the benchmark's scene generators.  The scenes
 # of ../shared get their own entry, skipped (exit 77) when it is absent.
 raytrace_add_suite(test_octree INTERNAL
-  SOURCES "${PROJECT_SOURCE_DIR}/tools/rt-perf/bench_scenes.c")
+  SOURCES "${PROJECT_SOURCE_DIR}/tools/rt-perf/bench_scenes.c"
+          accel_scenes.c)
 target_include_directories(raytrace_test_octree PRIVATE
   "${PROJECT_SOURCE_DIR}/tools/rt-perf")
 set_tests_properties(test_octree PROPERTIES TIMEOUT 900)

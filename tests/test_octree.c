@@ -12,14 +12,13 @@
  *
  * The reference is brute force in the same process (the fold over every
  * facet in file order, which tests/test_kernel.c and the expected images
- * check on their own).
+ * check on their own); the scenes and the checks are accel_scenes.c's,
+ * which tests/test_kdtree.c runs through the kd-tree.
  */
-#include <glob.h>
-#include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
+#include "accel_scenes.h"
 #include "bench_scenes.h"
 #include "kernel/kernel.h"
 #include "scene/scene_internal.h"
@@ -57,71 +56,15 @@ static rt_image render(const rt_scene *scene, const image_size *size,
     return rt_test_render_with(scene, &options);
 }
 
-/* Brute force on one thread against the octree on 1 and 3 threads, with 1
- * and 4 samples per pixel, in double and float. */
 static void check_scene(const rt_scene *scene, image_size size,
                         const char *name)
 {
-    for (int p = 0; p < 2; p++) {
-        rt_precision precision = p ? RT_PRECISION_FLOAT : RT_PRECISION_DOUBLE;
-        /* a scene float cannot resolve is refused alike with or without
-         * the octree (rt_scene_check_precision) */
-        if (rt_scene_check_precision(scene, precision, NULL) != RT_OK)
-            continue;
-        for (int samples = 1; samples <= 4; samples += 3) {
-            rt_render_stats s_ref = {.size = sizeof s_ref};
-            rt_render_stats s_oct = {.size = sizeof s_oct};
-            rt_image ref = render(scene, &size, precision, RT_ACCEL_NONE, 1,
-                                  samples,
-                                  &s_ref);
-            rt_image one = render(scene, &size, precision, RT_ACCEL_OCTREE, 1,
-                                  samples, &s_oct);
-            rt_image three = render(scene, &size, precision, RT_ACCEL_OCTREE,
-                                    3,
-                                    samples, NULL);
-            ck_assert_msg(rt_test_image_diff(&ref, &one, NULL) == 0,
-                          "%s (%s, %d samples): the octree changed the image",
-                          name, p ? "float" : "double", samples);
-            ck_assert_msg(rt_test_image_diff(&ref, &three, NULL) == 0,
-                          "%s (%s, %d samples): the octree on 3 threads "
-                          "changed the image",
-                          name, p ? "float" : "double", samples);
-            ck_assert_uint_eq(s_ref.shadow_rays, s_oct.shadow_rays);
-            ck_assert_uint_eq(s_ref.reflection_rays, s_oct.reflection_rays);
-            ck_assert_int_eq(s_ref.accel_used, 0);
-            ck_assert_int_eq(s_oct.accel_used, 1);
-            rt_image_release(&ref);
-            rt_image_release(&one);
-            rt_image_release(&three);
-        }
-    }
+    accel_check_scene(scene, size.width, size.height, RT_ACCEL_OCTREE, name);
 }
 
-/* Every .scn of a directory, at most side x side pixels; the number of
- * scenes. */
 static size_t check_directory(const char *dir, int side)
 {
-    glob_t g;
-    char pattern[4096];
-    snprintf(pattern, sizeof pattern, "%s/*.scn", dir);
-    if (glob(pattern, 0, NULL, &g) != 0)
-        return 0;
-    for (size_t i = 0; i < g.gl_pathc; i++) {
-        rt_scene *scene;
-        rt_error error;
-        ck_assert_msg(rt_scene_load(g.gl_pathv[i], NULL, &scene, &error) ==
-                          RT_OK,
-                      "%s", error.message);
-        rt_scene_info info = {.size = sizeof info};
-        rt_scene_get_info(scene, &info);
-        int w = side && info.width > side ? side : info.width;
-        int h = side && info.height > side ? side : info.height;
-        check_scene(scene, (image_size){w, h}, g.gl_pathv[i]);
-        rt_scene_destroy(scene);
-    }
-    size_t count = g.gl_pathc;
-    globfree(&g);
-    return count;
+    return accel_check_directory(dir, side, RT_ACCEL_OCTREE);
 }
 
 START_TEST(project_scenes_render_identically_through_the_octree)
@@ -162,135 +105,29 @@ static double uniform(double lo, double hi)
     return rt_test_rng_range(&rng, lo, hi);
 }
 
-typedef struct soup {
-    rt_vec3 *v;
-    rt_facet_desc *f;
-    int nv, nf, cap;
-} soup;
-
-static void soup_add(soup *s, rt_vec3 a, rt_vec3 b, rt_vec3 c, double k)
+/* Renders the scene (destroyed after) through the octree and brute force. */
+static void check_and_destroy(rt_scene *scene, const char *name)
 {
-    if (s->nf == s->cap) {
-        s->cap = s->cap ? 2 * s->cap : 64;
-        s->v = realloc(s->v, (size_t)s->cap * 3 * sizeof *s->v);
-        s->f = realloc(s->f, (size_t)s->cap * sizeof *s->f);
-        ck_assert_ptr_nonnull(s->v);
-        ck_assert_ptr_nonnull(s->f);
-    }
-    s->v[s->nv] = a;
-    s->v[s->nv + 1] = b;
-    s->v[s->nv + 2] = c;
-    rt_rgb8 color = {(unsigned char)(40 + s->nf * 37 % 200),
-                     (unsigned char)(60 + s->nf * 91 % 190),
-                     (unsigned char)(30 + s->nf * 53 % 220)};
-    s->f[s->nf] = (rt_facet_desc){{s->nv, s->nv + 1, s->nv + 2}, k, color};
-    s->nv += 3;
-    s->nf++;
-}
-
-/* The scene of `desc` (which holds the soup's arrays); the soup is then
- * emptied. */
-static rt_scene *soup_create(const rt_scene_desc *desc, soup *s)
-{
-    rt_scene *scene;
-    rt_error error;
-    ck_assert_msg(rt_scene_create(desc, &scene, &error) == RT_OK, "%s",
-                  error.message);
-    free(s->v);
-    free(s->f);
-    memset(s, 0, sizeof *s);
-    return scene;
-}
-
-/* The soup seen from `eye` towards `at`, the light at `light`. */
-static rt_scene *soup_scene(soup *s, rt_vec3 eye, rt_vec3 at, rt_vec3 light,
-                            int side)
-{
-    rt_vec3 d = {at.x - eye.x, at.y - eye.y, at.z - eye.z};
-    double len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    rt_vec3 a = {eye.x + d.x / len, eye.y + d.y / len, eye.z + d.z / len};
-    /* right: d x up (z), or x when looking along z */
-    rt_vec3 r = {d.y, -d.x, 0};
-    double rl = sqrt(r.x * r.x + r.y * r.y);
-    if (rl == 0)
-        r = (rt_vec3){1, 0, 0}, rl = 1;
-    rt_vec3 b = {a.x + 0.6 * r.x / rl, a.y + 0.6 * r.y / rl, a.z};
-    rt_scene_desc desc = {
-        .observer = eye, .screen_center = a, .screen_right = b,
-        .width = side, .height = side,
-        .vertices = s->v, .vertex_count = s->nv,
-        .facets = s->f, .facet_count = s->nf,
-        .background = {20, 30, 40},
-        .lights = &(rt_light){light, {255, 240, 220}}, .light_count = 1};
-    return soup_create(&desc, s);
-}
-
-static rt_vec3 jitter(rt_vec3 p, double r)
-{
-    return (rt_vec3){p.x + uniform(-r, r), p.y + uniform(-r, r),
-                     p.z + uniform(-r, r)};
+    check_scene(scene, full_size, name);
+    rt_scene_destroy(scene);
 }
 
 START_TEST(facets_all_in_one_spot_render_identically)
 {
-    soup s = {0};
-    rt_vec3 c = {0.1, 0.2, 0.3};
-    for (int i = 0; i < (reduced() ? 200 : 3000); i++)
-        soup_add(&s, jitter(c, 1e-3), jitter(c, 1e-3), jitter(c, 1e-3),
-                 i % 4 == 0 ? 0.5 : 0.0);
-    /* and one big floor far away, so the box is large */
-    soup_add(&s, (rt_vec3){-50, -50, -1}, (rt_vec3){50, -50, -1},
-             (rt_vec3){0, 50, -1}, 0.3);
-    rt_scene *scene = soup_scene(&s, (rt_vec3){0.1, 0.2 - 0.01, 0.31},
-                                 c, (rt_vec3){1, 1, 3},
-                                     reduced() ? 12 : 48);
-    check_scene(scene, (image_size){0, 0}, "one spot");
-    rt_scene_destroy(scene);
+    check_and_destroy(accel_one_spot(&rng, reduced()), "one spot");
 }
 END_TEST
 
 START_TEST(a_few_facets_spanning_everything_render_identically)
 {
-    soup s = {0};
-    for (int i = 0; i < 40; i++)
-        soup_add(&s, jitter((rt_vec3){-10, -10, 0}, 3),
-                 jitter((rt_vec3){10, -10, 0}, 3),
-                 jitter((rt_vec3){0, 10, 0}, 3), i % 3 == 0 ? 0.6 : 0.0);
-    for (int i = 0; i < 200; i++) {     /* small ones among them */
-        rt_vec3 p = {uniform(-5, 5), uniform(-5, 5), uniform(-2, 2)};
-        soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), 0.0);
-    }
-    rt_scene *scene = soup_scene(&s, (rt_vec3){0, -15, 6}, (rt_vec3){0, 0, 0},
-                                 (rt_vec3){3, -4, 12},
-                                     reduced() ? 12 : 48);
-    check_scene(scene, (image_size){0, 0}, "spanning");
-    rt_scene_destroy(scene);
+    check_and_destroy(accel_spanning(&rng, reduced()), "spanning");
 }
 END_TEST
 
 START_TEST(slivers_beside_huge_walls_render_identically)
 {
-    soup s = {0};
-    /* walls of 1e6, a floor, and slivers 1e-6 thin near the centre */
-    soup_add(&s, (rt_vec3){-1e6, 5, -1e6}, (rt_vec3){1e6, 5, -1e6},
-             (rt_vec3){0, 5, 1e6}, 0.5);
-    soup_add(&s, (rt_vec3){-1e6, -1e6, -2}, (rt_vec3){1e6, -1e6, -2},
-             (rt_vec3){0, 1e6, -2}, 0.0);
-    for (int i = 0; i < (reduced() ? 100 : 1500); i++) {
-        rt_vec3 p = {uniform(-2, 2), uniform(-1, 3), uniform(-1.5, 1.5)};
-        rt_vec3 q = jitter(p, 1.0);
-        rt_vec3 m = {(p.x + q.x) / 2 + uniform(-1e-6, 1e-6),
-                     (p.y + q.y) / 2 + uniform(-1e-6, 1e-6),
-                     (p.z + q.z) / 2 + uniform(-1e-6, 1e-6)};
-        if (i % 3 == 0)         /* an ordinary one now and then */
-            m = jitter(p, 0.4);
-        soup_add(&s, p, q, m, i % 5 == 0 ? 0.4 : 0.0);
-    }
-    rt_scene *scene = soup_scene(&s, (rt_vec3){0.3, -6, 1.5},
-                                 (rt_vec3){0, 1, 0}, (rt_vec3){-2, -3, 4},
-                                 reduced() ? 12 : 56);
-    check_scene(scene, (image_size){0, 0}, "slivers and walls");
-    rt_scene_destroy(scene);
+    check_and_destroy(accel_slivers_and_walls(&rng, reduced()),
+                      "slivers and walls");
 }
 END_TEST
 
@@ -299,49 +136,16 @@ END_TEST
  * the facets come from. */
 START_TEST(coincident_facets_keep_the_tie_of_the_file_order)
 {
-    soup s = {0};
-    int n = reduced() ? 60 : 600;
-    for (int i = 0; i < n; i++) {
-        double x = uniform(-3, 3), y = uniform(-3, 3);
-        double size = uniform(0.2, 2.5);
-        double z = (i % 3) * 0.5;   /* three planes */
-        rt_vec3 a = {x, y, z}, b = {x + size, y, z},
-                c = {x + uniform(-1, 1) * size, y + size, z};
-        soup_add(&s, a, b, c, i % 7 == 0 ? 0.5 : 0.0);
-        if (i % 2 == 0)         /* the same facet again, other vertex order */
-            soup_add(&s, c, a, b, 0.0);
-    }
-    rt_scene *scene = soup_scene(&s, (rt_vec3){0.5, -7, 6},
-                                 (rt_vec3){0, 0, 0}, (rt_vec3){1, -2, 9},
-                                 reduced() ? 12 : 64);
-    check_scene(scene, (image_size){0, 0}, "coincident");
-    rt_scene_destroy(scene);
+    check_and_destroy(accel_coincident(&rng, reduced()), "coincident");
 }
 END_TEST
 
-/* A mesh seen from very far (most rays fall back to brute force) and one
- * seen from inside. */
+/* A mesh seen from very far (beyond the margin's reach) and one seen from
+ * inside. */
 START_TEST(far_and_inside_cameras_render_identically)
 {
-    soup s = {0};
-    for (int i = 0; i < 400; i++) {
-        rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-        soup_add(&s, p, jitter(p, 0.2), jitter(p, 0.2), i % 4 ? 0.0 : 0.7);
-    }
-    soup t = {0};
-    for (int i = 0; i < s.nf; i++)
-        soup_add(&t, s.v[3 * i], s.v[3 * i + 1], s.v[3 * i + 2],
-                 s.f[i].reflection);
-    rt_scene *far = soup_scene(&s, (rt_vec3){1e5, -2e5, 3e4},
-                               (rt_vec3){0, 0, 0}, (rt_vec3){5, 5, 5},
-                               reduced() ? 12 : 40);
-    check_scene(far, (image_size){0, 0}, "far camera");
-    rt_scene_destroy(far);
-    rt_scene *inside = soup_scene(&t, (rt_vec3){0.01, 0.02, 0.03},
-                                  (rt_vec3){1, 0.5, 0.2}, (rt_vec3){0, 0, 0},
-                                  reduced() ? 12 : 40);
-    check_scene(inside, (image_size){0, 0}, "inside");
-    rt_scene_destroy(inside);
+    check_and_destroy(accel_far_camera(&rng, reduced(), 0), "far camera");
+    check_and_destroy(accel_far_camera(&rng, reduced(), 1), "inside");
 }
 END_TEST
 
@@ -350,31 +154,8 @@ END_TEST
  * octree too. */
 START_TEST(transparency_lights_and_lens_render_identically)
 {
-    soup s = {0};
-    for (int i = 0; i < (reduced() ? 150 : 1200); i++) {
-        rt_vec3 p = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-        soup_add(&s, p, jitter(p, 0.3), jitter(p, 0.3), i % 5 ? 0.0 : 0.3);
-        if (i % 3 == 0) {
-            s.f[s.nf - 1].transparency = 0.6;
-            s.f[s.nf - 1].refractive_index = i % 2 ? 1.5 : 0.7;
-        }
-    }
-    rt_light lights[3] = {{{1, -2, 5}, {255, 255, 255}},
-                          {{-3, 2, 4}, {120, 200, 90}},
-                          {{2, -4, -3}, {200, 80, 150}}};
-    rt_scene_desc desc = {
-        .observer = {0.2, -4, 0.5}, .screen_center = {0.2, -3, 0.45},
-        .screen_right = {0.8, -3, 0.45},
-        .width = reduced() ? 12 : 48,
-            .height = reduced() ? 12 : 48,
-        .vertices = s.v, .vertex_count = s.nv,
-        .facets = s.f, .facet_count = s.nf,
-        .background = {30, 40, 50},
-        .lights = lights, .light_count = 3,
-        .aperture = 0.05, .focal_distance = 4};
-    rt_scene *scene = soup_create(&desc, &s);
-    check_scene(scene, (image_size){0, 0}, "transparency, lights, lens");
-    rt_scene_destroy(scene);
+    check_and_destroy(accel_transparency_lights_lens(&rng, reduced()),
+                      "transparency, lights, lens");
 }
 END_TEST
 
@@ -383,27 +164,7 @@ END_TEST
  * only: a float render of such a scene is refused). */
 START_TEST(coordinates_at_the_limit_of_a_scene_render_identically)
 {
-    soup s = {0};
-    double big = 8e151;
-    for (int i = 0; i < 400; i++) {
-        rt_vec3 p = {uniform(-big, big), uniform(-big, big), uniform(-1, 1)};
-        rt_vec3 q = {p.x + uniform(-1e151, 1e151),
-                     p.y + uniform(-1e151, 1e151), uniform(-1, 1)};
-        rt_vec3 r = {p.x + uniform(-1e151, 1e151),
-                     p.y + uniform(-1e151, 1e151), uniform(-1, 1)};
-        soup_add(&s, p, q, r, i % 4 ? 0.0 : 0.5);
-    }
-    rt_scene_desc desc = {
-        .observer = {0, -1e151, 5e150}, .screen_center = {0, 0, 4e150},
-        .screen_right = {1e151, 0, 4e150},
-        .width = reduced() ? 8 : 32,
-            .height = reduced() ? 8 : 32,
-        .vertices = s.v, .vertex_count = s.nv,
-        .facets = s.f, .facet_count = s.nf,
-        .background = {20, 30, 40},
-        .lights = &(rt_light){{1e150, -2e150, 5e151}, {255, 255, 255}},
-        .light_count = 1};
-    rt_scene *scene = soup_create(&desc, &s);
+    rt_scene *scene = accel_at_the_limit(&rng, reduced());
     for (int samples = 1; samples <= 4; samples += 3) {
         rt_render_stats stats = {.size = sizeof stats};
         rt_image ref = render(scene, &full_size, RT_PRECISION_DOUBLE,
@@ -425,55 +186,19 @@ END_TEST
 
 /* The same colour, bit for bit, through the octree and brute force, in
  * both precisions. */
+static const rt_trace_settings through_octree = {5, 0, RT_KERNEL_AUTO, NULL,
+                                                 1, NULL, 0};
+
 static void check_ray(const rt_kernel *kd, const rt_kernel *kf,
                       rt_vec3 origin, rt_vec3 target)
 {
-    rt_vec3 d = {target.x - origin.x, target.y - origin.y,
-                 target.z - origin.z};
-    if (d.x == 0 && d.y == 0 && d.z == 0)
-        return;
-    for (int kernel = 0; kernel < 2; kernel++) {
-        rt_trace_settings brute = {5, 0, (rt_kernel_choice)kernel, NULL, 0};
-        rt_trace_settings tree = {5, 0, (rt_kernel_choice)kernel, NULL, 1};
-        rt_counters c = {0};
-        rt_color a = rt__kernel_trace(kd, origin, d, &brute, &c);
-        rt_color b = rt__kernel_trace(kd, origin, d, &tree, &c);
-        ck_assert_msg(memcmp(&a, &b, sizeof a) == 0,
-                      "double: (%.17g %.17g %.17g) -> (%.17g %.17g %.17g)",
-                      origin.x, origin.y, origin.z, target.x, target.y,
-                      target.z);
-        a = rt__kernel_trace(kf, origin, d, &brute, &c);
-        b = rt__kernel_trace(kf, origin, d, &tree, &c);
-        ck_assert_msg(memcmp(&a, &b, sizeof a) == 0,
-                      "float: (%.9g %.9g %.9g) -> (%.9g %.9g %.9g)",
-                      origin.x, origin.y, origin.z, target.x, target.y,
-                      target.z);
-    }
-}
-
-/* An n x n grid of unit squares in z = 0 (every vertex an integer: cell
- * faces of the octree fall on its edges) with a reflective box over it. */
-static rt_scene *grid_scene(int n)
-{
-    soup s = {0};
-    for (int y = 0; y < n; y++)
-        for (int x = 0; x < n; x++) {
-            rt_vec3 a = {x, y, 0}, b = {x + 1, y, 0}, c = {x, y + 1, 0},
-                    d = {x + 1, y + 1, 0};
-            soup_add(&s, a, b, d, (x + y) % 3 == 0 ? 0.5 : 0.0);
-            soup_add(&s, a, d, c, 0.0);
-        }
-    soup_add(&s, (rt_vec3){0, 0, 2}, (rt_vec3){n, 0, 2}, (rt_vec3){0, n, 2},
-             0.8);
-    return soup_scene(&s, (rt_vec3){n / 2.0, -n / 2.0, 1},
-                      (rt_vec3){n / 2.0, n / 2.0, 0},
-                      (rt_vec3){n / 3.0, n / 4.0, 1.5}, 8);
+    accel_check_ray(kd, kf, origin, target, &through_octree);
 }
 
 START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
 {
     const int n = 16;
-    rt_scene *scene = grid_scene(n);
+    rt_scene *scene = accel_grid(n);
     const rt_kernel *kf = rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL);
     ck_assert_ptr_nonnull(kf);
     ck_assert_int_eq(rt__kernel_prepare_octree(scene->kernel, NULL, NULL), RT_OK);
@@ -481,25 +206,7 @@ START_TEST(rays_grazing_and_along_cell_faces_see_the_same_through_the_octree)
     int count = reduced() ? 300 : 6000;
     for (int i = 0; i < count; i++) {
         rt_vec3 o, t;
-        switch (i % 4) {
-        case 0:     /* random, from above or below */
-            o = (rt_vec3){uniform(-2, n + 2), uniform(-2, n + 2),
-                          uniform(-3, 3)};
-            t = (rt_vec3){uniform(0, n), uniform(0, n), 0};
-            break;
-        case 1:     /* grazing the grid's plane */
-            o = (rt_vec3){uniform(-2, 0), uniform(0, n), uniform(1e-9, 1e-3)};
-            t = (rt_vec3){n + 1, uniform(0, n), -uniform(0, 1e-3)};
-            break;
-        case 2:     /* in the plane of a cell face (integer x) */
-            o = (rt_vec3){(int)uniform(0, n), -1, uniform(0.1, 1.9)};
-            t = (rt_vec3){o.x, n + 1, uniform(-1, 1)};
-            break;
-        default:    /* through a vertex, from anywhere */
-            o = (rt_vec3){uniform(-n, 2 * n), uniform(-n, 2 * n),
-                          uniform(-5, 5)};
-            t = (rt_vec3){(int)uniform(0, n), (int)uniform(0, n), 0};
-        }
+        accel_grid_ray(&rng, n, i, &o, &t);
         check_ray(scene->kernel, kf, o, t);
     }
     rt_scene_destroy(scene);
@@ -607,12 +314,13 @@ END_TEST
  * multiple of the facets, depth at most the limit. */
 START_TEST(a_degenerate_scene_keeps_the_octree_bounded)
 {
-    soup s = {0};
+    accel_soup s = {0};
     rt_vec3 c = {1, 1, 1};
     for (int i = 0; i < 5000; i++)      /* 5000 facets through one point */
-        soup_add(&s, c, jitter(c, 10), jitter(c, 10), 0.0);
-    rt_scene *scene = soup_scene(&s, (rt_vec3){1, -30, 1}, c,
-                                 (rt_vec3){5, -5, 20}, 4);
+        accel_soup_add(&s, c, accel_jitter(&rng, c, 10),
+                       accel_jitter(&rng, c, 10), 0.0);
+    rt_scene *scene = accel_soup_scene(&s, (rt_vec3){1, -30, 1}, c,
+                                       (rt_vec3){5, -5, 20}, 4);
     rt_render_stats stats = {.size = sizeof stats};
     rt_image image = render(scene, &full_size, RT_PRECISION_DOUBLE,
                             RT_ACCEL_OCTREE, 1, 1,

@@ -125,6 +125,14 @@ typedef struct rt_counters {
 #define RT_OCTREE_REFERENCE_BUDGET 16
 #define RT_OCTREE_REFERENCE_EXTRA 4096
 
+/* A kd-tree lists at most this many facet references per facet (plus
+ * RT_KDTREE_REFERENCE_EXTRA) in all its leaves together, and has at most
+ * that many nodes; its depth is at most RT_KDTREE_MAX_DEPTH
+ * (kdtree_impl.h gives the reasons). */
+#define RT_KDTREE_REFERENCE_LIMIT 64
+#define RT_KDTREE_REFERENCE_EXTRA 4096
+#define RT_KDTREE_MAX_DEPTH 60
+
 /* What an octree holds (octree_build_impl.h builds it on first use); a
  * kd-tree's figures come in the same struct (kdtree_build_impl.h; its
  * `always` counts the facets of a scene whose coordinates leave no room
