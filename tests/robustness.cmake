@@ -32,8 +32,9 @@ raytrace_set_warnings(raytrace_robustness_report)
 
 # One suite, tests/test_robust.c, a table of groups: each group is a ctest
 # entry of its own (test_robust_<group>, label robustness), run with the
-# octree forced off, and again forced on (test_robust_<group>_octree): the
-# same assertions hold either way.  Without an argument the suite checks
+# accelerators forced off, then with the octree forced on
+# (test_robust_<group>_octree) and with the kd-tree forced on
+# (test_robust_<group>_kdtree): the same assertions hold every way.  Without an argument the suite checks
 # that every case of robust/cases.c is in one group (test_robust).
 raytrace_add_suite(test_robust LIBS raytrace_robust)
 foreach(group
@@ -47,10 +48,10 @@ foreach(group
     special
     determinism
     transparency)
-  foreach(accel none octree)
+  foreach(accel none octree kdtree)
     set(name test_robust_${group})
-    if(accel STREQUAL "octree")
-      string(APPEND name _octree)
+    if(NOT accel STREQUAL "none")
+      string(APPEND name _${accel})
     endif()
     add_test(NAME ${name} COMMAND raytrace_test_robust ${group}
              WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")

@@ -89,12 +89,13 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
                                                      : &rt__kernel_double_ops)
                         ->create(&source);
     free(lights);       /* the kernel keeps its own copy */
-    /* With the octree forced on, every query of the kernel goes through it
-     * (a kernel that has one uses it for nearest_hit and occluded too). */
-    if (rb_accel() == RT_ACCEL_OCTREE) {
-        if (e->kernel != NULL)
-            rt__kernel_prepare_octree(e->kernel, NULL, NULL);
-    }
+    /* With the octree or the kd-tree forced on, every query of the kernel
+     * goes through it (a kernel that has one uses it for nearest_hit and
+     * occluded too). */
+    if (rb_accel() == RT_ACCEL_OCTREE && e->kernel != NULL)
+        rt__kernel_prepare_octree(e->kernel, NULL, NULL);
+    if (rb_accel() == RT_ACCEL_KDTREE && e->kernel != NULL)
+        rt__kernel_prepare_kdtree(e->kernel, NULL, NULL);
     return e;
 }
 
@@ -103,6 +104,8 @@ rt_accel rb_accel(void)
     const char *accel = getenv("RT_TEST_ACCEL");
     if (accel != NULL && strcmp(accel, "octree") == 0)
         return RT_ACCEL_OCTREE;
+    if (accel != NULL && strcmp(accel, "kdtree") == 0)
+        return RT_ACCEL_KDTREE;
     if (accel != NULL && strcmp(accel, "none") == 0)
         return RT_ACCEL_NONE;
     return RT_ACCEL_AUTO;
@@ -147,6 +150,7 @@ rt_color rb_engine_trace(const rb_engine *e, rt_ray ray, int depth)
     settings.max_depth = depth;
     settings.kernel = RT_KERNEL_AUTO;
     settings.octree = rb_accel() == RT_ACCEL_OCTREE;
+    settings.kdtree = rb_accel() == RT_ACCEL_KDTREE;
     rt_counters counters;
     memset(&counters, 0, sizeof counters);
     return rt__kernel_trace(e->kernel, ray.origin, ray.direction, &settings,

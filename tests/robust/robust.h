@@ -63,8 +63,8 @@ long rb_engine_render(const rb_engine *engine, int depth, int threads,
 int rb_color_has_nan(rt_color c);
 
 /* The acceleration the cases render with: RT_TEST_ACCEL=octree forces the
- * octree on, =none off; unset, the library's default (tests/robustness.cmake
- * registers every suite both ways). */
+ * octree on, =kdtree the kd-tree, =none both off; unset, the library's
+ * default (tests/robustness.cmake registers every suite all three ways). */
 rt_accel rb_accel(void);
 
 /* ------------------------------------------------------------------ */
