@@ -5,21 +5,24 @@
  *
  * Depth first, sequential.  Each facet is represented by its bounding box
  * grown by the margin and rounded outward to float ("plain" bounds, not
- * clipped to the cell: a superset of the clipped ones, so conservative,
- * at the price of some references).  A node's plane is chosen by the
- * surface area heuristic over every bound of its facets on each axis, by
- * a sweep of the sorted bounds (O(n log n) a node, O(N log^2 N) for the
- * tree); a facet goes below a plane p when its box starts before p (or
- * lies wholly at or below it), above when it ends after p (or lies wholly
- * at or above it), so a facet whose grown box straddles p is on both
- * sides and one that only touches p is on the side it lies on (why that
- * suffices: docs/kdtree.md, "Listing").  kdtree_impl.h lists the bounds,
+ * clipped to the cell: a superset of the clipped ones, so conservative).
+ * A node's plane is chosen by the surface area heuristic over every bound
+ * of its facets on each axis, by a sweep of the sorted bounds (O(n log n)
+ * a node, O(N log^2 N) for the tree).  A facet goes below a plane p when
+ * its box starts before p (or lies wholly at or below it), above when it
+ * ends after p (or lies wholly at or above it); one whose box straddles p
+ * goes to each side whose cell, grown by the octree's margin, the
+ * triangle itself overlaps (the octree's triangle-box test), so a facet
+ * crossing a cell's corner is not listed where only its box reaches (why
+ * all this suffices: docs/kdtree.md, "Listing").  kdtree_impl.h lists the bounds,
  * each with its reason; the build polls the cancellation flag as it goes
  * and keeps nothing half built.
  */
 
 typedef struct kd_builder {
     float (*lo)[3], (*hi)[3];   /* each facet's grown box, in float */
+    double (*v)[3][3];      /* each facet's vertices, in double */
+    double overlap_margin;  /* the octree's margin, for the overlap test */
     const unsigned char *sliver;
     kdtree *tree;
     size_t node_capacity, ref_capacity;
@@ -231,18 +234,41 @@ static void kd_build_node(kd_builder *b, size_t off, int n,
             *above = b->lists + top + n;
     int nb = 0, na = 0;
     double p = (double)split;
-    for (int j = 0; j < n; j++) {
-        double l = b->lo[list[j]][axis], h = b->hi[list[j]][axis];
-        if (l < p || h <= p)
-            below[nb++] = list[j];
-        if (h > p || l >= p)
-            above[na++] = list[j];
-    }
-    memmove(list, above, (size_t)na * sizeof *list);
-    memmove(list + na, below, (size_t)nb * sizeof *list);
     double cut_hi[3] = {hi[0], hi[1], hi[2]}, cut_lo[3] = {lo[0], lo[1], lo[2]};
     cut_hi[axis] = p;
     cut_lo[axis] = p;
+    /* the children's cells grown by the octree's margin, for the
+     * triangle-box test of the facets whose boxes straddle the plane */
+    double c_below[3], h_below[3], c_above[3], h_above[3];
+    int finite = 1;
+    for (int a = 0; a < 3; a++) {
+        c_below[a] = lo[a] + (cut_hi[a] - lo[a]) * 0.5;
+        h_below[a] = (cut_hi[a] - lo[a]) * 0.5 + b->overlap_margin;
+        c_above[a] = cut_lo[a] + (hi[a] - cut_lo[a]) * 0.5;
+        h_above[a] = (hi[a] - cut_lo[a]) * 0.5 + b->overlap_margin;
+        finite &= isfinite(h_below[a]) && isfinite(h_above[a]) &&
+                  isfinite(c_below[a]) && isfinite(c_above[a]);
+    }
+    for (int j = 0; j < n; j++) {
+        double l = b->lo[list[j]][axis], h = b->hi[list[j]][axis];
+        int in_below = l < p || h <= p, in_above = h > p || l >= p;
+        if (in_below && in_above && finite) {
+            /* a box that straddles the plane: the facet itself may miss
+             * one side (Akenine-Moller's test, as the octree's listing) */
+            in_below = triangle_box_overlap(c_below, h_below, b->v[list[j]]);
+            in_above = triangle_box_overlap(c_above, h_above, b->v[list[j]]);
+            if (!in_below && !in_above)
+                in_below = in_above = 1;    /* rounding: keep both */
+        }
+        if (in_below)
+            below[nb++] = list[j];
+        if (in_above)
+            above[na++] = list[j];
+    }
+    if (kd_stopped(b, (size_t)n))
+        return;
+    memmove(list, above, (size_t)na * sizeof *list);
+    memmove(list + na, below, (size_t)nb * sizeof *list);
     kd_build_node(b, off + (size_t)na, nb, lo, cut_hi, depth + 1);
     if (b->status != RT_OK || b->too_big)
         return;
@@ -268,7 +294,7 @@ static int kd_facet_boxes(kd_builder *b, const KERNEL_T *k, double margin,
         if (i % KD_POLL_WORK == 0 && kd_stopped(b, KD_POLL_WORK))
             return 0;
         const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
-        double v[3][3];
+        double (*v)[3] = b->v[i];
         for (int j = 0; j < 3; j++) {
             v[j][0] = (double)p[j]->x;
             v[j][1] = (double)p[j]->y;
@@ -310,6 +336,7 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     b.cancel = cancel;
     b.lo = malloc((n ? n : 1) * sizeof *b.lo);
     b.hi = malloc((n ? n : 1) * sizeof *b.hi);
+    b.v = malloc((n ? n : 1) * sizeof *b.v);
     unsigned char *sliver = malloc(n ? n : 1);
     b.sliver = sliver;
     double size = 0, box_lo[3], box_hi[3];
@@ -329,7 +356,16 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     for (int a = 0; a < 3 && k->count > 0; a++)
         size = box_hi[a] - box_lo[a] > size ? box_hi[a] - box_lo[a] : size;
     t->reach_margin = size * KD_MARGIN;
-    if (b.lo == NULL || b.hi == NULL || sliver == NULL)
+    double extent = 0;
+    for (int a = 0; a < 3 && k->count > 0; a++) {
+        extent = fabs(box_lo[a]) > extent ? fabs(box_lo[a]) : extent;
+        extent = fabs(box_hi[a]) > extent ? fabs(box_hi[a]) : extent;
+    }
+    /* the octree's margin, rounding term included: the overlap test
+     * computes the cells' centres (octree_impl.h, OCTREE_ROUNDING) */
+    b.overlap_margin = fmax(t->reach_margin,
+                            (extent + size) * OCTREE_ROUNDING);
+    if (b.lo == NULL || b.hi == NULL || b.v == NULL || sliver == NULL)
         b.status = RT_ERR_NOMEM;
     else if (k->count == 0 || !(size * 4 < INFINITY))
         t->brute = 1;   /* nothing to list, or no room for cells */
@@ -366,6 +402,7 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     }
     free(b.lo);
     free(b.hi);
+    free(b.v);
     free(sliver);
     free(b.lists);
     free(b.keys);

@@ -8,7 +8,8 @@
  * volume hierarchy: the root is the facets' box grown by the margin, each
  * internal node cuts its cell by one plane chosen by the surface area
  * heuristic, and a facet is listed in every leaf its box, grown by the
- * margin and rounded outward to float, reaches into.  docs/kdtree.md gives
+ * margin and rounded outward to float, reaches into - unless the triangle
+ * itself misses the leaf's cell grown by the octree's margin.  docs/kdtree.md gives
  * the argument that the queries through it (query_kdtree_impl.h) give
  * exactly the brute-force answers.
  *
