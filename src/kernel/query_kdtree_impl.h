@@ -46,7 +46,7 @@ static int nearest_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
 {
     double grow = tree->brute ? -1 : kd_growth(tree, r);
     if (grow < 0)
-        goto brute_force;
+        return nearest_fallback(k, simd, r, t_max, skip, h, counters);
     int stops = grow == 0;      /* far origins walk to t_max */
     collector found;
     found.n = 0;
@@ -77,20 +77,11 @@ static int nearest_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
         if (n > 0 && !collect_batch(&found, k, simd, r, t_max, batch, n))
             goto overflow;
     }
-    counters->ray_facet_tests += found.made;
-    counters->accel_facet_tests += found.made;
-    counters->accel_queries++;
-    if (found.n == 0)
-        return 0;
-    if (!(w.skipped > cutoff(found.reach, found.n)))
-        goto brute_force;   /* reach grew past a node left out */
-    return fold_near(k, &found, h);
+    return nearest_finish(k, simd, &found, 1, w.skipped, r, t_max, skip, h,
+                          counters);
 overflow:
-    counters->ray_facet_tests += found.made;
-brute_force:
-    counters->accel_fallbacks++;
-    return nearest_brute(k, simd, NULL, r, t_max, skip, h,
-                         &counters->ray_facet_tests);
+    return nearest_finish(k, simd, &found, 0, INFINITY, r, t_max, skip, h,
+                          counters);
 }
 
 /* any_hit_brute() through the kd-tree: the same answer, as every facet

@@ -183,6 +183,37 @@ static int fold_near(const KERNEL_T *k, const collector *c, hit *h)
     return best != NULL;
 }
 
+/* A nearest-hit query a structure cannot serve, by brute force. */
+static int nearest_fallback(const KERNEL_T *k, int simd, const ray *r,
+                            REAL t_max, int skip, hit *h,
+                            rt_counters *counters)
+{
+    counters->accel_fallbacks++;
+    return nearest_brute(k, simd, NULL, r, t_max, skip, h,
+                         &counters->ray_facet_tests);
+}
+
+/* The end of a nearest-hit query through a structure (the octree, the
+ * kd-tree): its tests counted, then the fold over the hits that matter -
+ * or brute force when the hits overflowed (`complete` 0) or the reach
+ * grew past the smallest entry of a node left out (`skipped`). */
+static int nearest_finish(const KERNEL_T *k, int simd,
+                          const collector *found, int complete,
+                          double skipped, const ray *r, REAL t_max, int skip,
+                          hit *h, rt_counters *counters)
+{
+    counters->ray_facet_tests += found->made;
+    if (complete) {
+        counters->accel_facet_tests += found->made;
+        counters->accel_queries++;
+        if (found->n == 0)
+            return 0;
+        if (skipped > cutoff(found->reach, found->n))
+            return fold_near(k, found, h);
+    }
+    return nearest_fallback(k, simd, r, t_max, skip, h, counters);
+}
+
 /* The part of leaf `leaf` the walk asks for: all its facets, or when it
  * lies beyond the stopping point only its slivers (the last ones). */
 static void leaf_part(const octree *tree, const walk *w, int leaf,
@@ -203,7 +234,7 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
 {
     double grow = fat_growth(tree, r);
     if (grow < 0)
-        goto brute_force;
+        return nearest_fallback(k, simd, r, t_max, skip, h, counters);
     /* The stopping rule (docs/octree.md, step 5) only for rays within the
      * margin's reach: a farther one walks every cell to t_max. */
     int stops = grow == 0;
@@ -240,20 +271,11 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
         if (n > 0 && !collect_batch(&found, k, simd, r, t_max, batch, n))
             goto overflow;
     }
-    counters->ray_facet_tests += found.made;
-    counters->accel_facet_tests += found.made;
-    counters->accel_queries++;
-    if (found.n == 0)
-        return 0;
-    if (!(w.skipped > cutoff(found.reach, found.n)))
-        goto brute_force;   /* reach grew past a node left out */
-    return fold_near(k, &found, h);
+    return nearest_finish(k, simd, &found, 1, w.skipped, r, t_max, skip, h,
+                          counters);
 overflow:
-    counters->ray_facet_tests += found.made;
-brute_force:
-    counters->accel_fallbacks++;
-    return nearest_brute(k, simd, NULL, r, t_max, skip, h,
-                         &counters->ray_facet_tests);
+    return nearest_finish(k, simd, &found, 0, INFINITY, r, t_max, skip, h,
+                          counters);
 }
 
 /* any_hit_brute() through the octree: the same answer, as the facets that
