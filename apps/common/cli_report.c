@@ -162,11 +162,16 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     uint64_t queries = s->accel_queries ? s->accel_queries : 1;
     const char *name = s->accel_kdtree ? "kd-tree" : "octree";
     fprintf(out,
-            "%s: built in %.3f s; %llu leaves, depth %d, %.2f references "
+            "%s: built in %.3f s (%.3g facets per second); %llu leaves, "
+            "depth %d, %.2f references "
             "per facet (+%llu facets in every ray's list), %.1f MB\n"
             "%s per query: %.2f leaves visited, %.2f facets tested "
             "(brute force: %llu); %llu queries left to brute force\n",
-            name, s->accel_build_seconds, (unsigned long long)s->accel_leaves,
+            name, s->accel_build_seconds,
+            s->accel_build_seconds > 0
+                ? (double)s->accel_facets / s->accel_build_seconds
+                : 0.0,
+            (unsigned long long)s->accel_leaves,
             s->accel_depth,
             s->accel_facets > 0
                 ? (double)s->accel_references / (double)s->accel_facets
