@@ -389,7 +389,7 @@ static rt_render_stats *stats_of_size(size_t size)
     X(e10, "sampling", o->sampling = (rt_sampling)2)                         \
     X(e11, "sampling", o->sampling = (rt_sampling)-1)                        \
     X(e12, "kernel", o->kernel = (rt_kernel_choice)9)                        \
-    X(e13, "accel", o->accel = (rt_accel)3)                                  \
+    X(e13, "accel", o->accel = (rt_accel)4)                                  \
     X(e14, "aperture", o->aperture = NAN)                                    \
     X(e15, "aperture", o->aperture = INFINITY)                               \
     X(e16, "aperture", o->aperture = -INFINITY)                              \
