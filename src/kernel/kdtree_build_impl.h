@@ -14,9 +14,9 @@
  * goes to each side whose cell, grown by the octree's margin, the
  * triangle itself overlaps (the octree's triangle-box test), so a facet
  * crossing a cell's corner is not listed where only its box reaches (why
- * all this suffices: docs/kdtree.md, "Listing").  kdtree_impl.h lists the bounds,
- * each with its reason; the build polls the cancellation flag as it goes
- * and keeps nothing half built.
+ * all this suffices: docs/kdtree.md, "Listing").  kdtree_impl.h lists the
+ * bounds, each with its reason; the build polls the cancellation flag as
+ * it goes and keeps nothing half built.
  */
 
 typedef struct kd_builder {

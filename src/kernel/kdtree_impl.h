@@ -9,9 +9,9 @@
  * internal node cuts its cell by one plane chosen by the surface area
  * heuristic, and a facet is listed in every leaf its box, grown by the
  * margin and rounded outward to float, reaches into - unless the triangle
- * itself misses the leaf's cell grown by the octree's margin.  docs/kdtree.md gives
- * the argument that the queries through it (query_kdtree_impl.h) give
- * exactly the brute-force answers.
+ * itself misses the leaf's cell grown by the octree's margin.
+ * docs/kdtree.md gives the argument that the queries through it
+ * (query_kdtree_impl.h) give exactly the brute-force answers.
  *
  * Everything here is in double (the float kernel's vertices are exact in
  * double) but the split planes, which are floats: a node is 8 bytes, as in

@@ -148,10 +148,12 @@ static rt_status check_options(const rt_render_options *options,
                              "a kernel of %d: expected RT_KERNEL_AUTO or "
                              "RT_KERNEL_SCALAR", (int)options->kernel);
     if (options->accel != RT_ACCEL_AUTO && options->accel != RT_ACCEL_NONE &&
-        options->accel != RT_ACCEL_OCTREE && options->accel != RT_ACCEL_KDTREE)
+        options->accel != RT_ACCEL_OCTREE &&
+        options->accel != RT_ACCEL_KDTREE)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "an accel of %d: expected RT_ACCEL_AUTO, "
-                             "RT_ACCEL_NONE, RT_ACCEL_OCTREE or RT_ACCEL_KDTREE",
+                             "RT_ACCEL_NONE, RT_ACCEL_OCTREE or "
+                             "RT_ACCEL_KDTREE",
                              (int)options->accel);
     if (!isfinite(options->aperture))
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
