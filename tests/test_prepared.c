@@ -260,9 +260,12 @@ START_TEST(the_stats_keep_the_layout_of_0_3)
 #define COUNT_FIELD(type, name, origin, merge, group, key, title) all++;
     RT_STATS_MAP(COUNT_FIELD)
 #undef COUNT_FIELD
-    ck_assert_int_eq(all, 25);  /* 0.3's and accel_kdtree, after them */
+    /* 0.3's, then accel_kdtree and accel_steps after them */
+    ck_assert_int_eq(all, 26);
     ck_assert_uint_ge(offsetof(rt_render_stats, accel_kdtree),
                       sizeof(stats_0_3));
+    ck_assert_uint_gt(offsetof(rt_render_stats, accel_steps),
+                      offsetof(rt_render_stats, accel_kdtree));
 }
 END_TEST
 

@@ -114,7 +114,12 @@ extern "C" {
                   "reflection; none where t = 0)")                           \
     /* 1: the structure the render used (accel_used) was the kd-tree, whose  \
        figures the accel_ fields are; 0: the octree */                       \
-    X(int, accel_kdtree, OCTREE, MAX, flag, kdtree, "kd-tree")
+    X(int, accel_kdtree, OCTREE, MAX, flag, kdtree, "kd-tree")           \
+    /* the nodes the walks took up, leaves and inner nodes: each node       \
+       popped from the walk's stack or descended into, whether entered or   \
+       passed over beyond the stopping point (0 for queries left to brute   \
+       force before any walk) */                                            \
+    X(uint64_t, accel_steps, THREAD, SUM, octree, steps, "traversal steps")
 
 typedef struct rt_render_stats {
     size_t size;            /* sizeof(rt_render_stats), set by the caller */
