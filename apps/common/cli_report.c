@@ -106,18 +106,6 @@ static const char *accel_name(rt_accel a)
                                   : "auto";
 }
 
-/* The rays a render cast: the sum of RT_STATS_MAP's group `rays`. */
-static unsigned long long rays_in_all(const rt_render_stats *s)
-{
-    unsigned long long all = 0;
-#define RAYS_(type, name, origin, merge, group, key, title)                  \
-    if (strcmp(#group, "rays") == 0)                                         \
-        all += (unsigned long long)s->name;
-    RT_STATS_MAP(RAYS_)
-#undef RAYS_
-    return all;
-}
-
 /* The counters of RT_STATS_MAP's `group`, in its order, as
  * "<value> <title>" joined by ", " (the integer counters of the groups
  * the text lists). */
@@ -151,7 +139,7 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     fputs("rays: ", out);
     print_text_group(out, s, "rays");
     fprintf(out, " (%llu in all)\nskipped by the scene analysis: ",
-            rays_in_all(s));
+            (unsigned long long)rt_render_stats_rays(s));
     print_text_group(out, s, "rays_skipped");
     fprintf(out,
             "\n"
@@ -289,7 +277,8 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
     print_json_group(out, s, "seconds");
     fprintf(out, ",\"write\":%.6f},\"rays\":{", r->write_seconds);
     print_json_group(out, s, "rays");
-    fprintf(out, ",\"total\":%llu},\"rays_skipped\":{", rays_in_all(s));
+    fprintf(out, ",\"total\":%llu},\"rays_skipped\":{",
+            (unsigned long long)rt_render_stats_rays(s));
     print_json_group(out, s, "rays_skipped");
     fputs("},", out);
     print_json_group(out, s, "tests");

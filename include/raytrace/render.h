@@ -130,6 +130,17 @@ typedef struct rt_render_stats {
 } rt_render_stats;
 
 /*
+ * The rays a render cast: the sum of the counters of RT_STATS_MAP's group
+ * `rays` (camera, shadow, reflection and refraction rays; `total` in
+ * --stats=json), as many as lie wholly within stats->size.  A count of
+ * rays, never a wrap in practice (64 bits).  `stats`, the caller's, is
+ * only read.  A NULL `stats`, or a size short of the layout of 0.3 (the
+ * rule above), is a programmer's error: an assert stops a debug build; with
+ * NDEBUG the result is 0.  Thread-safe.
+ */
+RT_API uint64_t rt_render_stats_rays(const rt_render_stats *stats);
+
+/*
  * Called from a rendering thread each time row `row` is complete in the
  * image; calls are serialised (never two at once) but may come from any
  * thread and in any row order.  Return non-zero to go on, 0 to cancel.
