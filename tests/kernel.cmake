@@ -13,6 +13,10 @@ raytrace_add_shared_test(test_kernel)
 raytrace_add_suite(test_packets INTERNAL)
 raytrace_add_suite(test_packets_edges INTERNAL)
 
+# The shadow rays' last-blocker cache (src/kernel/shade_impl.h), counted
+# exactly by brute force, the octree and the kd-tree.
+raytrace_add_suite(test_shadow_cache INTERNAL)
+
 # What a render prepares once and reuses: the scene's eye, the team of
 # threads (src/base/workers.c), the statistics generated from RT_STATS_MAP.
 raytrace_add_suite(test_prepared INTERNAL)

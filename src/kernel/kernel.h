@@ -103,7 +103,9 @@ typedef struct rt_trace_settings {
 
 /* Work counters of one thread: the THREAD counters of RT_STATS_MAP
  * (raytrace/render.h), by the same names, summed into rt_render_stats at
- * the end, and what the kernel counts for the render's own use. */
+ * the end, what the kernel counts for the render's own use, and the
+ * thread's last-blocker cache (shade_impl.h), which rides along because
+ * the counters are the one thing a thread hands every trace. */
 #define RT_COUNTER_FIELD_(type, name, origin, merge, group, key, title)     \
     RT_COUNTER_##origin##_(type, name)
 #define RT_COUNTER_THREAD_(type, name) type name;
@@ -114,11 +116,23 @@ typedef struct rt_counters {
     uint64_t early_exit_saved;  /* facets a shadow ray did not test after
                                    its first hit */
     int out_of_memory;          /* a ray tree outgrew the memory */
+    /* no counter: per light, 1 + the kernel index of the facet that last
+     * blocked a shadow ray to it, 0 for none; {0} starts empty and
+     * rt__counters_forget_blockers() empties it (each row, so that the
+     * counts do not depend on which thread took which row) */
+    int32_t last_blocker[RT_MAX_LIGHTS];
 } rt_counters;
 #undef RT_COUNTER_FIELD_
 #undef RT_COUNTER_THREAD_
 #undef RT_COUNTER_RENDER_
 #undef RT_COUNTER_OCTREE_
+
+/* Empties the last-blocker cache of `counters` (its counts stay). */
+static inline void rt__counters_forget_blockers(rt_counters *counters)
+{
+    for (int l = 0; l < RT_MAX_LIGHTS; l++)
+        counters->last_blocker[l] = 0;
+}
 
 /* An octree lists at most this many facet references per facet (plus
  * RT_OCTREE_REFERENCE_EXTRA) in all its leaves together. */

@@ -454,7 +454,8 @@ static int kernel_occluded(const rt_kernel *kernel, rt_vec3 from, rt_vec3 to,
     ray r = prepare(o, d);
     rt_counters counters = {0};
     trace_ctx c = query_context(k, &counters);
-    return any_hit(&c, &r, 1, skip);
+    int blocker;
+    return any_hit(&c, &r, 1, skip, &blocker);
 }
 
 const rt_kernel_ops KERNEL_OPS = {

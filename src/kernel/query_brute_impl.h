@@ -21,9 +21,11 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
 }
 
 
-/* Any hit in (0, t_max), all facets but `skip`; stops at the first. */
+/* Any hit in (0, t_max), all facets but `skip`; stops at the first,
+ * whose index goes to *blocker. */
 static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
-                          int skip, uint64_t *tests, uint64_t *saved)
+                          int skip, uint64_t *tests, uint64_t *saved,
+                          int *blocker)
 {
     hit ignored;
     uint64_t made = 0;
@@ -34,6 +36,8 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
         made++;
         found = intersect(r, &k->tris[i], t_max, &ignored) &&
                 blocks(&ignored, t_max);
+        if (found)
+            *blocker = i;
     }
     *tests += made;
     *saved += (uint64_t)k->count - (skip >= 0) - made;
@@ -62,16 +66,19 @@ static inline int nearest_brute(const KERNEL_T *k, int simd,
     return nearest_scalar(k, r, t_max, skip, h, tests);
 }
 
+/* Any hit by the loops nearest_brute() picks; the blocker's index goes to
+ * *blocker. */
 static inline int any_hit_brute(const KERNEL_T *k, int simd, const ray *r,
-                                REAL t_max, int skip, rt_counters *counters)
+                                REAL t_max, int skip, rt_counters *counters,
+                                int *blocker)
 {
 #if HAVE_AVX2_KERNEL
     if (simd)
         return any_hit_avx2(k, r, t_max, skip, &counters->ray_facet_tests,
-                            &counters->early_exit_saved);
+                            &counters->early_exit_saved, blocker);
 #else
     (void)simd;
 #endif
     return any_hit_scalar(k, r, t_max, skip, &counters->ray_facet_tests,
-                          &counters->early_exit_saved);
+                          &counters->early_exit_saved, blocker);
 }

@@ -30,15 +30,18 @@ static inline int nearest(const trace_ctx *c, const KERNEL_EYE_T *eye,
                          &c->counters->ray_facet_tests);
 }
 
-/* Non-zero when some facet but `skip` blocks r within (0, t_max). */
+/* Non-zero when some facet but `skip` blocks r within (0, t_max); the
+ * index of the blocker found (the first one each loop meets, not
+ * necessarily the nearest) goes to *blocker. */
 static inline int any_hit(const trace_ctx *c, const ray *r, REAL t_max,
-                          int skip)
+                          int skip, int *blocker)
 {
     if (c->kd != NULL)
         return any_hit_kdtree(c->k, c->simd, c->kd, r, t_max, skip,
-                              c->counters);
+                              c->counters, blocker);
     if (c->tree != NULL)
         return any_hit_octree(c->k, c->simd, c->tree, r, t_max, skip,
-                              c->counters);
-    return any_hit_brute(c->k, c->simd, r, t_max, skip, c->counters);
+                              c->counters, blocker);
+    return any_hit_brute(c->k, c->simd, r, t_max, skip, c->counters,
+                         blocker);
 }

@@ -91,12 +91,12 @@ overflow:
  * first blocker. */
 static int any_hit_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
                           const ray *r, REAL t_max, int skip,
-                          rt_counters *counters)
+                          rt_counters *counters, int *blocker)
 {
     double grow = tree->brute ? -1 : kd_growth(tree, r);
     if (grow < 0) {
         counters->accel_fallbacks++;
-        return any_hit_brute(k, simd, r, t_max, skip, counters);
+        return any_hit_brute(k, simd, r, t_max, skip, counters, blocker);
     }
     uint64_t made = 0;
     int found = 0;
@@ -116,12 +116,14 @@ static int any_hit_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
                 continue;
             batch[n++] = i;
             if (n == BLOCK_LANES) {
-                found = blocked_batch(k, simd, r, t_max, batch, n, &made);
+                found = blocked_batch(k, simd, r, t_max, batch, n, &made,
+                                      blocker);
                 n = 0;
             }
         }
         if (!found && n > 0)
-            found = blocked_batch(k, simd, r, t_max, batch, n, &made);
+            found = blocked_batch(k, simd, r, t_max, batch, n, &made,
+                                  blocker);
     }
     counters->ray_facet_tests += made;
     counters->accel_facet_tests += made;

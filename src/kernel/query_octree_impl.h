@@ -144,7 +144,8 @@ static int collect_batch(collector *c, const KERNEL_T *k, int simd,
 /* Non-zero when one of the facets ids[0..n) blocks a shadow ray; counts
  * in *made the facets up to the blocker, as the scalar loop does. */
 static int blocked_batch(const KERNEL_T *k, int simd, const ray *r,
-                         REAL t_max, const int *ids, int n, uint64_t *made)
+                         REAL t_max, const int *ids, int n, uint64_t *made,
+                         int *blocker)
 {
     unsigned candidates = batch_candidates(k, simd, r, ids, n);
     hit ignored;
@@ -152,8 +153,10 @@ static int blocked_batch(const KERNEL_T *k, int simd, const ray *r,
         (*made)++;
         if ((candidates >> j & 1) &&
             intersect(r, &k->tris[ids[j]], t_max, &ignored) &&
-            blocks(&ignored, t_max))
+            blocks(&ignored, t_max)) {
+            *blocker = ids[j];
             return 1;
+        }
     }
     return 0;
 }
@@ -285,12 +288,12 @@ overflow:
  * cells grown for far origins, as nearest_octree() does). */
 static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
                           const ray *r, REAL t_max, int skip,
-                          rt_counters *counters)
+                          rt_counters *counters, int *blocker)
 {
     double grow = fat_growth(tree, r);
     if (grow < 0) {
         counters->accel_fallbacks++;
-        return any_hit_brute(k, simd, r, t_max, skip, counters);
+        return any_hit_brute(k, simd, r, t_max, skip, counters, blocker);
     }
     hit ignored;
     uint64_t made = 0;
@@ -302,6 +305,8 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
         made++;
         found = intersect(r, &k->tris[i], t_max, &ignored) &&
                 blocks(&ignored, t_max);
+        if (found)
+            *blocker = i;
     }
     tested seen;
     tested_clear(&seen);
@@ -318,12 +323,14 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
                 continue;
             batch[n++] = i;
             if (n == BLOCK_LANES) {
-                found = blocked_batch(k, simd, r, t_max, batch, n, &made);
+                found = blocked_batch(k, simd, r, t_max, batch, n, &made,
+                                      blocker);
                 n = 0;
             }
         }
         if (!found && n > 0)
-            found = blocked_batch(k, simd, r, t_max, batch, n, &made);
+            found = blocked_batch(k, simd, r, t_max, batch, n, &made,
+                                  blocker);
     }
     counters->ray_facet_tests += made;
     counters->accel_facet_tests += made;

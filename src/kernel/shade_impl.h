@@ -106,6 +106,41 @@ static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
                              (size_t)(l - 1)) * 3];
 }
 
+/*
+ * any_hit() of the shadow ray r to light l, which leaves facet `skip`,
+ * through the thread's last-blocker cache: the facet that blocked the last
+ * shadow ray to l, if it was blocked, is tested first, by the test every
+ * query makes of a facet (intersect() and blocks()), and when it blocks r
+ * the answer is yes without a query.  Exact: a facet but `skip` that
+ * blocks r is a blocker the query would find too, as any_hit() answers
+ * whether there is one (which one it meets first does not matter).  A ray
+ * that nothing blocks empties the entry, so a lit region costs no test
+ * but at its edge (docs/kdtree.md, "The last-blocker cache", measured).
+ */
+HOT_INLINE int shadow_blocked(const trace_ctx *c, const ray *r, int l,
+                              int skip)
+{
+    int32_t *last = &c->counters->last_blocker[l];
+    int cached = *last - 1;
+    /* any facet of this kernel is a valid first try, even one cached by
+     * another kernel's trace with the same counters: in range suffices */
+    if (cached >= 0 && cached < c->k->count && cached != skip) {
+        hit ignored;
+        c->counters->ray_facet_tests++;
+        if (intersect(r, &c->k->tris[cached], 1, &ignored) &&
+            blocks(&ignored, 1)) {
+            if (c->kd == NULL && c->tree == NULL)   /* as brute force */
+                c->counters->early_exit_saved +=
+                    (uint64_t)c->k->count - (skip >= 0) - 1;
+            return 1;
+        }
+    }
+    int blocker = -1;
+    int blocked = any_hit(c, r, 1, skip, &blocker);
+    *last = blocked ? blocker + 1 : 0;
+    return blocked;
+}
+
 /* Lights whose shadow rays a caller may have answered before the trace
  * (known_hit.blocked); beyond, the trace casts them itself. */
 #define KNOWN_LIGHTS 8
@@ -189,7 +224,7 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
         } else {
             shadow = shadow_ray(s->point, s->error_bound, s->normal, light,
                                 to_light);
-            blocked = any_hit(c, &shadow, 1, s->index);
+            blocked = shadow_blocked(c, &shadow, l, s->index);
         }
         if (blocked) {
             if (c->rec != NULL)

@@ -239,7 +239,8 @@ AVX2 static int nearest_eye_avx2(const KERNEL_T *k, const block *translated,
 /* any_hit() with the AVX2 filter; stops after the block of the first hit
  * and counts the facets of the blocks it went through. */
 AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
-                             int skip, uint64_t *tests, uint64_t *saved)
+                             int skip, uint64_t *tests, uint64_t *saved,
+                             int *blocker)
 {
     vray q;
     broadcast(r, &q);
@@ -261,6 +262,7 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
                     made = k->count;
                 *tests += (uint64_t)made - (skip >= 0 && skip < made);
                 *saved += (uint64_t)(k->count - made) - (skip >= made);
+                *blocker = i;
                 return 1;
             }
         }

@@ -245,6 +245,7 @@ static void render_span(const rt_frame *f, int row, int i0, int i1,
 int rt__frame_row(const rt_frame *f, int row, unsigned char *out,
                   const rt_stop *stop, rt_counters *counters)
 {
+    rt__counters_forget_blockers(counters);
     if (spans(f)) {
         int per_span = span_width(f);
         for (int i = 0; i < f->width; i += per_span) {
