@@ -102,6 +102,7 @@ typedef struct kdtree {
     int sliver_count;
     size_t ref_count;       /* references in all leaves */
     size_t bytes;
+    uint64_t digest;        /* FNV-1a of the nodes and the references */
     double build_seconds;
 } kdtree;
 

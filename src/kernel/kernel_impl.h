@@ -337,12 +337,14 @@ static rt_status kernel_prepare_octree(const rt_kernel *kernel,
         info->always = (uint64_t)t->always_count;
         info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
+        info->digest = 0;
     }
     return RT_OK;
 }
 
 static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
                                        const rt_cancel *cancel,
+                                       rt_workers *workers, int threads,
                                        rt_octree_info *info)
 {
     const KERNEL_T *k = kernel_of(kernel);
@@ -354,7 +356,8 @@ static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
         t = atomic_load_explicit(&mutable->kd, memory_order_relaxed);
         if (t == NULL) {
             /* stored only when complete, as the octree */
-            kdtree *built = kdtree_build(k, cancel, &status);
+            kdtree *built = kdtree_build(k, cancel, workers, threads,
+                                          &status);
             atomic_store_explicit(&mutable->kd, built, memory_order_release);
             t = built;
         }
@@ -371,6 +374,7 @@ static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
         info->always = t->brute ? (uint64_t)k->count : 0;
         info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
+        info->digest = t->digest;
     }
     return RT_OK;
 }
