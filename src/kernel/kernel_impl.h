@@ -21,8 +21,10 @@
  *     octree_impl.h        the octree's nodes (octree_build_impl.h builds
  *                          them, octree_walk_impl.h walks a ray through
  *                          them)
- *     kdtree_impl.h        the kd-tree's nodes (kdtree_build_impl.h,
- *                          kdtree_walk_impl.h: the same for it)
+ *     kdtree_impl.h        the kd-tree's nodes (kdtree_split_impl.h
+ *                          splits a node, kdtree_build_impl.h builds
+ *                          the tree on several threads,
+ *                          kdtree_walk_impl.h walks it)
  *     query_brute_impl.h   nearest hit and any hit over every facet
  *     query_octree_impl.h  the same through the octree
  *     query_kdtree_impl.h  the same through the kd-tree
@@ -137,6 +139,7 @@ typedef struct trace_ctx {
 #include "octree_build_impl.h"
 #include "octree_walk_impl.h"
 #include "kdtree_impl.h"
+#include "kdtree_split_impl.h"
 #include "kdtree_build_impl.h"
 #include "kdtree_walk_impl.h"
 

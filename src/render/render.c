@@ -178,7 +178,7 @@ static rt_status prepare_octree(rt_frame *f, const rt_scene *scene,
     if (accel == RT_ACCEL_NONE ||
         (accel == RT_ACCEL_AUTO && scene->live_count < RT_ACCEL_AUTO_FACETS))
         return RT_OK;
-    if (accel == RT_ACCEL_KDTREE) {
+    if (accel == RT_ACCEL_KDTREE || accel == RT_ACCEL_AUTO) {
         int threads = thread_count(options->threads, INT_MAX);
         rt_status status = rt__kernel_prepare_kdtree(
             f->kernel, cancel, threads > 1 ? rt__scene_workers(scene) : NULL,
