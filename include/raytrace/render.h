@@ -177,7 +177,7 @@ typedef enum rt_accel {
 /* Below this many live facets brute force is as fast as the kd-tree (and
  * faster than the octree) on the machine of docs/kdtree.md (measured
  * there, "What auto chooses"). */
-#define RT_ACCEL_AUTO_FACETS 300
+#define RT_ACCEL_AUTO_FACETS 240
 
 /*
  * A cancellation flag that renders poll before every pixel, and while they
