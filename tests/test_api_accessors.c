@@ -161,6 +161,15 @@ static int tree_value_is_zero(void)
     return c.r == 0 && c.g == 0 && c.b == 0;
 }
 
+/* The rays of stats of `size` bytes that count rays of every kind. */
+static uint64_t stats_rays_with_size(size_t size)
+{
+    rt_render_stats stats = {.size = size, .camera_rays = 1,
+                             .shadow_rays = 2, .reflection_rays = 4,
+                             .refraction_rays = 8};
+    return rt_render_stats_rays(&stats);
+}
+
 #define ACCESSOR_CASES(X)                                                    \
     X(a1, "rt_scene_vertex", vertex_is_zero(-1))                             \
     X(a2, "rt_scene_vertex", vertex_is_zero(3))                              \
@@ -193,7 +202,11 @@ static int tree_value_is_zero(void)
       facet_with_size_is_untouched(sizeof(rt_facet_info) - sizeof(double)))  \
     X(a26, "rt_scene_get_info", info_with_size_is_untouched(0))              \
     X(a27, "rt_scene_get_info",                                              \
-      info_with_size_is_untouched(offsetof(rt_scene_info, light_count)))
+      info_with_size_is_untouched(offsetof(rt_scene_info, light_count)))    \
+    X(a28, "rt_render_stats_rays", rt_render_stats_rays(NULL) == 0)          \
+    X(a29, "rt_render_stats_rays", stats_rays_with_size(0) == 0)             \
+    X(a30, "rt_render_stats_rays",                                           \
+      stats_rays_with_size(offsetof(rt_render_stats, refraction_rays)) == 0)
 
 ACCESSOR_CASES(ACCESSOR)
 

@@ -547,7 +547,16 @@ static const char json_check[] =
     "assert o['ray_facet_tests'] > 0 and o['seconds']['render'] >= 0\n"
     "for k in ('load', 'render', 'write'): "
     "assert isinstance(o['seconds'][k], float)\n"
-    "assert o['octree'] is None or o['octree']['leaves'] > 0\n";
+    "assert o['octree'] is None or o['octree']['leaves'] > 0\n"
+    "for a in ('octree', 'kdtree'):\n"
+    "    t = o[a]\n"
+    "    if t is None: continue\n"
+    "    for ratio, top, bottom in (('references_per_facet', 'references', "
+    "'facets'), ('bytes_per_facet', 'bytes', 'facets'), "
+    "('steps_per_query', 'steps', 'queries')):\n"
+    "        want_r = t[top] / t[bottom]\n"
+    "        assert abs(t[ratio] - want_r) <= 1e-5 * want_r, (ratio, t)\n"
+    "    assert t['steps'] >= t['leaves_visited'] > 0, t\n";
 
 static void check_json(const char *dir, const char *err, const char *w,
                        const char *h, const char *samples,
@@ -584,6 +593,17 @@ START_TEST(stats_json_is_one_object_a_json_parser_reads)
     ck_assert_msg(r.code == 0, "%s", r.err);
     check_json(dir, r.err, "10", "6", "4", "2,3,12,9", cubes());
     rt_test_output_free(&r);
+    for (int a = 0; a < 2; a++) {   /* the structures' figures and ratios */
+        const char *accel[] = {cubes(), "--size=40x30",
+                               a ? "--accel=kdtree" : "--accel=octree",
+                               "--stats=json", "-o", "out.ppm", NULL};
+        r = rt_test_run(dir, RT_EXPORT_PATH, accel);
+        ck_assert_msg(r.code == 0, "%s", r.err);
+        ck_assert_msg(strstr(r.err, a ? "\"kdtree\":{" : "\"octree\":{"),
+                      "%s", r.err);
+        check_json(dir, r.err, "40", "30", "1", "null", cubes());
+        rt_test_output_free(&r);
+    }
     rt_test_remove_dir(dir);
 }
 END_TEST

@@ -196,7 +196,8 @@ END_TEST
 
 /* RT_ACCEL_KDTREE is a valid choice and its figures say it was used: a
  * tree of several leaves, each query testing fewer facets than brute
- * force, nothing left to brute force on an ordinary mesh. */
+ * force, nothing left to brute force on an ordinary mesh, and traversal
+ * steps that a binary tree's walks can take. */
 START_TEST(the_kdtree_is_chosen_by_its_option_and_reports_its_figures)
 {
     rt_scene *scene;
@@ -217,6 +218,14 @@ START_TEST(the_kdtree_is_chosen_by_its_option_and_reports_its_figures)
     ck_assert_uint_eq(stats.accel_fallbacks, 0);
     ck_assert_uint_lt(stats.accel_facet_tests,
                       stats.accel_queries * stats.accel_facets / 20);
+    /* the nodes a walk takes up form a subtree holding the root, whose
+     * leaves include the L leaves it visited: at least 2L - 1 nodes for
+     * L >= 1, and at most every node once */
+    ck_assert_uint_ge(stats.accel_steps + stats.accel_queries,
+                      2 * stats.accel_leaves_visited);
+    ck_assert_uint_gt(stats.accel_steps, stats.accel_leaves_visited);
+    ck_assert_uint_le(stats.accel_steps,
+                      stats.accel_queries * stats.accel_nodes);
     rt_image_release(&image);
     /* the octree's figures are not the kd-tree's: the flag follows */
     image = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_OCTREE, 1, &stats);

@@ -277,6 +277,12 @@ START_TEST(auto_uses_the_kdtree_from_the_threshold_on)
     ck_assert_uint_gt(stats.accel_queries, 0);
     ck_assert_uint_lt(stats.accel_facet_tests,
                       stats.accel_queries * stats.accel_facets);
+    /* every leaf visited is a step, and so is the root (inner: the tree
+     * has several leaves) of each query that reached a leaf; no walk
+     * takes up a node twice */
+    ck_assert_uint_gt(stats.accel_steps, stats.accel_leaves_visited);
+    ck_assert_uint_le(stats.accel_steps,
+                      stats.accel_queries * stats.accel_nodes);
     rt_image_release(&a);
     rt_image_release(&b);
     rt_scene_destroy(small);

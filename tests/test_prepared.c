@@ -260,9 +260,27 @@ START_TEST(the_stats_keep_the_layout_of_0_3)
 #define COUNT_FIELD(type, name, origin, merge, group, key, title) all++;
     RT_STATS_MAP(COUNT_FIELD)
 #undef COUNT_FIELD
-    ck_assert_int_eq(all, 25);  /* 0.3's and accel_kdtree, after them */
+    /* 0.3's, then accel_kdtree and accel_steps after them */
+    ck_assert_int_eq(all, 26);
     ck_assert_uint_ge(offsetof(rt_render_stats, accel_kdtree),
                       sizeof(stats_0_3));
+    ck_assert_uint_gt(offsetof(rt_render_stats, accel_steps),
+                      offsetof(rt_render_stats, accel_kdtree));
+}
+END_TEST
+
+/* rt_render_stats_rays sums the group `rays` (camera, shadow, reflection,
+ * refraction) and nothing else. */
+START_TEST(the_rays_of_the_stats_are_the_sum_of_the_rays_group)
+{
+    rt_render_stats stats = {.size = sizeof stats, .camera_rays = 1,
+                             .shadow_rays = 2, .reflection_rays = 4,
+                             .refraction_rays = 8, .pixels = 16,
+                             .shadow_rays_skipped = 32,
+                             .reflection_rays_skipped = 64,
+                             .refraction_rays_skipped = 128,
+                             .ray_facet_tests = 256, .accel_queries = 512};
+    ck_assert_uint_eq(rt_render_stats_rays(&stats), 15);
 }
 END_TEST
 
@@ -327,6 +345,7 @@ static Suite *prepared_suite(void)
     suite_add_tcase(s, team);
     TCase *stats = tcase_create("stats");
     tcase_add_test(stats, the_stats_keep_the_layout_of_0_3);
+    tcase_add_test(stats, the_rays_of_the_stats_are_the_sum_of_the_rays_group);
     tcase_add_test(stats,
                    the_threads_counters_sum_to_the_same_stats_for_any_count);
     suite_add_tcase(s, stats);

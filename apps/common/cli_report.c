@@ -106,18 +106,6 @@ static const char *accel_name(rt_accel a)
                                   : "auto";
 }
 
-/* The rays a render cast: the sum of RT_STATS_MAP's group `rays`. */
-static unsigned long long rays_in_all(const rt_render_stats *s)
-{
-    unsigned long long all = 0;
-#define RAYS_(type, name, origin, merge, group, key, title)                  \
-    if (strcmp(#group, "rays") == 0)                                         \
-        all += (unsigned long long)s->name;
-    RT_STATS_MAP(RAYS_)
-#undef RAYS_
-    return all;
-}
-
 /* The counters of RT_STATS_MAP's `group`, in its order, as
  * "<value> <title>" joined by ", " (the integer counters of the groups
  * the text lists). */
@@ -135,6 +123,13 @@ static void print_text_group(FILE *out, const rt_render_stats *s,
 #undef TEXT_
 }
 
+/* count / the structure's live facets, 0 without any. */
+static double per_facet(const rt_render_stats *s, uint64_t count)
+{
+    return s->accel_facets > 0 ? (double)count / (double)s->accel_facets
+                               : 0.0;
+}
+
 void cli_print_stats_text(FILE *out, const rt_render_stats *s,
                           const cli_render_report *r)
 {
@@ -144,7 +139,7 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     fputs("rays: ", out);
     print_text_group(out, s, "rays");
     fprintf(out, " (%llu in all)\nskipped by the scene analysis: ",
-            rays_in_all(s));
+            (unsigned long long)rt_render_stats_rays(s));
     print_text_group(out, s, "rays_skipped");
     fprintf(out,
             "\n"
@@ -164,19 +159,20 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
     fprintf(out,
             "%s: built in %.3f s (%.3g facets per second); %llu leaves, "
             "depth %d, %.2f references "
-            "per facet (+%llu facets in every ray's list), %.1f MB\n"
-            "%s per query: %.2f leaves visited, %.2f facets tested "
+            "per facet (+%llu facets in every ray's list), %.1f MB "
+            "(%.1f bytes per facet)\n"
+            "%s per query: %.2f traversal steps, %.2f leaves visited, "
+            "%.2f facets tested "
             "(brute force: %llu); %llu queries left to brute force\n",
             name, s->accel_build_seconds,
             s->accel_build_seconds > 0
                 ? (double)s->accel_facets / s->accel_build_seconds
                 : 0.0,
             (unsigned long long)s->accel_leaves,
-            s->accel_depth,
-            s->accel_facets > 0
-                ? (double)s->accel_references / (double)s->accel_facets
-                : 0.0,
-            (unsigned long long)s->accel_always, s->accel_bytes / 1e6, name,
+            s->accel_depth, per_facet(s, s->accel_references),
+            (unsigned long long)s->accel_always, s->accel_bytes / 1e6,
+            per_facet(s, s->accel_bytes), name,
+            (double)s->accel_steps / queries,
             (double)s->accel_leaves_visited / queries,
             (double)s->accel_facet_tests / queries,
             (unsigned long long)s->accel_facets,
@@ -230,6 +226,14 @@ static void print_json_octree(FILE *out, const rt_render_stats *s)
         }
         fputc('{', out);
         print_json_group(out, s, "octree");
+        /* the ratios the text prints, computed once for every reader */
+        uint64_t queries = s->accel_queries ? s->accel_queries : 1;
+        fprintf(out,
+                ",\"references_per_facet\":%.6g,\"bytes_per_facet\":%.6g,"
+                "\"steps_per_query\":%.6g",
+                per_facet(s, s->accel_references),
+                per_facet(s, s->accel_bytes),
+                (double)s->accel_steps / (double)queries);
         fputc('}', out);
     }
 }
@@ -273,7 +277,8 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
     print_json_group(out, s, "seconds");
     fprintf(out, ",\"write\":%.6f},\"rays\":{", r->write_seconds);
     print_json_group(out, s, "rays");
-    fprintf(out, ",\"total\":%llu},\"rays_skipped\":{", rays_in_all(s));
+    fprintf(out, ",\"total\":%llu},\"rays_skipped\":{",
+            (unsigned long long)rt_render_stats_rays(s));
     print_json_group(out, s, "rays_skipped");
     fputs("},", out);
     print_json_group(out, s, "tests");

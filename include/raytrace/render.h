@@ -114,7 +114,12 @@ extern "C" {
                   "reflection; none where t = 0)")                           \
     /* 1: the structure the render used (accel_used) was the kd-tree, whose  \
        figures the accel_ fields are; 0: the octree */                       \
-    X(int, accel_kdtree, OCTREE, MAX, flag, kdtree, "kd-tree")
+    X(int, accel_kdtree, OCTREE, MAX, flag, kdtree, "kd-tree")           \
+    /* the nodes the walks took up, leaves and inner nodes: each node       \
+       popped from the walk's stack or descended into, whether entered or   \
+       passed over beyond the stopping point (0 for queries left to brute   \
+       force before any walk) */                                            \
+    X(uint64_t, accel_steps, THREAD, SUM, octree, steps, "traversal steps")
 
 typedef struct rt_render_stats {
     size_t size;            /* sizeof(rt_render_stats), set by the caller */
@@ -123,6 +128,17 @@ typedef struct rt_render_stats {
     RT_STATS_MAP(RT_STATS_FIELD_)
 #undef RT_STATS_FIELD_
 } rt_render_stats;
+
+/*
+ * The rays a render cast: the sum of the counters of RT_STATS_MAP's group
+ * `rays` (camera, shadow, reflection and refraction rays; `total` in
+ * --stats=json), as many as lie wholly within stats->size.  A count of
+ * rays, never a wrap in practice (64 bits).  `stats`, the caller's, is
+ * only read.  A NULL `stats`, or a size short of the layout of 0.3 (the
+ * rule above), is a programmer's error: an assert stops a debug build; with
+ * NDEBUG the result is 0.  Thread-safe.
+ */
+RT_API uint64_t rt_render_stats_rays(const rt_render_stats *stats);
 
 /*
  * Called from a rendering thread each time row `row` is complete in the

@@ -36,6 +36,7 @@ typedef struct kd_walk {
     kd_pending stack[KD_STACK];
     int top;
     double skipped;
+    uint64_t steps;         /* the nodes taken up so far (accel_steps) */
 } kd_walk;
 
 /* The growth of the cells for ray r through t (growth_for()): 0, g > 0,
@@ -56,6 +57,7 @@ static void kd_walk_start(kd_walk *w, const kdtree *t, const ray *r,
     w->grow = g;
     w->top = 0;
     w->skipped = INFINITY;
+    w->steps = 0;
     kd_pending root = {t_min, t_max, 0};
     double lo[3], hi[3];
     for (int a = 0; a < 3; a++) {   /* outward: the sums round */
@@ -77,17 +79,21 @@ static int kd_walk_next(kd_walk *w, double cutoff)
 {
     const kdnode *nodes = w->t->nodes;
     double slack = 2 * gamma_double(3), g = w->grow;
+    uint64_t steps = w->steps;
     while (w->top > 0) {
         kd_pending cur = w->stack[--w->top];
         for (;;) {
             const kdnode *n = &nodes[cur.node];
+            steps++;
             if (cur.t0 > cutoff && !(n->bits & KD_SLIVER)) {
                 if (cur.t0 < w->skipped)
                     w->skipped = cur.t0;
                 break;
             }
-            if (kd_is_leaf(n))
+            if (kd_is_leaf(n)) {
+                w->steps = steps;
                 return (int)cur.node;
+            }
             int a = (int)(n->bits & 3u);
             double p = (double)n->at.split;
             double o = w->q.origin[a], d = w->q.direction[a];
@@ -137,5 +143,6 @@ static int kd_walk_next(kd_walk *w, double cutoff)
             cur = *near;
         }
     }
+    w->steps = steps;
     return -1;
 }

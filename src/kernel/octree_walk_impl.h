@@ -177,6 +177,7 @@ typedef struct walk {
     int top;
     int slivers_only;       /* of the leaf walk_next returned */
     double skipped;         /* smallest entry of a node left out */
+    uint64_t steps;         /* the nodes popped so far (accel_steps) */
 } walk;
 
 /*
@@ -226,6 +227,7 @@ static void walk_start(walk *w, const octree *t, const ray *r, double t_min,
     w->top = 0;
     w->slivers_only = 0;
     w->skipped = INFINITY;
+    w->steps = 0;
     pending root = {{t->lo[0], t->lo[1], t->lo[2]},
                     {t->hi[0], t->hi[1], t->hi[2]}, t_min, t_max, 0};
     double lo[3] = {t->lo[0] - g, t->lo[1] - g, t->lo[2] - g};
@@ -239,6 +241,7 @@ static int walk_next(walk *w, double cutoff)
 {
     while (w->top > 0) {
         const pending *p = &w->stack[--w->top];
+        w->steps++;
         if (p->t0 > cutoff) {
             if (w->t->slivers == NULL || !w->t->slivers[p->node]) {
                 if (p->t0 < w->skipped)

@@ -77,9 +77,11 @@ static int nearest_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
         if (n > 0 && !collect_batch(&found, k, simd, r, t_max, batch, n))
             goto overflow;
     }
+    counters->accel_steps += w.steps;
     return nearest_finish(k, simd, &found, 1, w.skipped, r, t_max, skip, h,
                           counters);
 overflow:
+    counters->accel_steps += w.steps;
     return nearest_finish(k, simd, &found, 0, INFINITY, r, t_max, skip, h,
                           counters);
 }
@@ -123,6 +125,7 @@ static int any_hit_kdtree(const KERNEL_T *k, int simd, const kdtree *tree,
     }
     counters->ray_facet_tests += made;
     counters->accel_facet_tests += made;
+    counters->accel_steps += w.steps;
     counters->accel_queries++;
     return found;
 }

@@ -244,12 +244,12 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
     found.made = 0;
     tested seen;
     tested_clear(&seen);
+    walk w;
+    walk_start(&w, tree, r, 0, (double)t_max, grow);
     for (int j = 0; j < tree->always_count; j++)
         if (tree->always[j] != skip &&
             !collect(&found, k, r, t_max, tree->always[j]))
             goto overflow;
-    walk w;
-    walk_start(&w, tree, r, 0, (double)t_max, grow);
     int leaf;
     while ((leaf = walk_next(&w, stops ? cutoff(found.reach, found.n)
                                        : INFINITY)) >= 0) {
@@ -271,9 +271,11 @@ static int nearest_octree(const KERNEL_T *k, int simd, const octree *tree,
         if (n > 0 && !collect_batch(&found, k, simd, r, t_max, batch, n))
             goto overflow;
     }
+    counters->accel_steps += w.steps;
     return nearest_finish(k, simd, &found, 1, w.skipped, r, t_max, skip, h,
                           counters);
 overflow:
+    counters->accel_steps += w.steps;
     return nearest_finish(k, simd, &found, 0, INFINITY, r, t_max, skip, h,
                           counters);
 }
@@ -325,6 +327,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
     }
     counters->ray_facet_tests += made;
     counters->accel_facet_tests += made;
+    counters->accel_steps += w.steps;
     counters->accel_queries++;
     return found;
 }

@@ -105,13 +105,16 @@ static int thread_count(int requested, int rows)
     return n < 1 ? 1 : n;
 }
 
-/* The rays a render cast: the sum of RT_STATS_MAP's group `rays`. */
-static uint64_t rays_cast(const rt_render_stats *s)
+uint64_t rt_render_stats_rays(const rt_render_stats *stats)
 {
+    if (!RT__EXPECT(stats != NULL &&
+                    stats->size >= RT__RENDER_STATS_SIZE_0_3))
+        return 0;
     uint64_t all = 0;
 #define RAYS_(type, name, origin, merge, group, key, title)                  \
-    if (strcmp(#group, "rays") == 0)                                         \
-        all += (uint64_t)s->name;
+    if (strcmp(#group, "rays") == 0 &&                                       \
+        RT__FIELD_END(rt_render_stats, name) <= stats->size)                 \
+        all += (uint64_t)stats->name;
     RT_STATS_MAP(RAYS_)
 #undef RAYS_
     return all;
@@ -123,6 +126,7 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *out)
 {
     rt_render_stats all, *stats = &all;
     memset(stats, 0, sizeof *stats);
+    stats->size = sizeof *stats;    /* whole, for rt_render_stats_rays */
     /* the THREAD counters, summed over the threads */
 #define COPY_THREAD_(type, name) stats->name = j->totals.name;
 #define COPY_RENDER_(type, name)
@@ -141,7 +145,7 @@ static void fill_stats(const job *j, double seconds, rt_render_stats *out)
     uint64_t skipped_rays = stats->shadow_rays_skipped +
                             stats->reflection_rays_skipped;
     stats->ray_facet_tests_skipped = skipped_rays * (live + dead) +
-                                     rays_cast(stats) * dead +
+                                     rt_render_stats_rays(stats) * dead +
                                      j->totals.early_exit_saved;
     if (j->frame.settings.octree || j->frame.settings.kdtree) {
         const rt_octree_info *octree = &j->frame.octree;

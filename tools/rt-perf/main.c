@@ -224,19 +224,6 @@ static int measure_once(const rt_scene *scene, const setting *s,
     return 1;
 }
 
-/* The rays a render cast, refracted ones included: the sum of
- * RT_STATS_MAP's group `rays` (raytrace/render.h). */
-static uint64_t rays(const rt_render_stats *s)
-{
-    uint64_t all = 0;
-#define RAYS_(type, name, origin, merge, group, key, title)                  \
-    if (strcmp(#group, "rays") == 0)                                         \
-        all += (uint64_t)s->name;
-    RT_STATS_MAP(RAYS_)
-#undef RAYS_
-    return all;
-}
-
 static int same_pixels(const rt_image *a, const rt_image *b)
 {
     for (int y = 0; y < a->height; y++)
@@ -374,7 +361,8 @@ int main(int argc, char **argv)
                 (skip_scalar && settings[s].kernel == RT_KERNEL_SCALAR))
                 printf(" - |");
             else
-                printf(" %.2f / %.3f |", rays(&r->stats) / r->seconds * 1e-6,
+                printf(" %.2f / %.3f |",
+                       rt_render_stats_rays(&r->stats) / r->seconds * 1e-6,
                        r->stats.ray_facet_tests / r->seconds * 1e-9);
         }
         printf("\n");
@@ -466,7 +454,8 @@ int main(int argc, char **argv)
             continue;
         const result *r = &results[e][1];
         const rt_render_stats *st = &r->stats;
-        double n = (double)rays(st), camera = (double)st->camera_rays;
+        double n = (double)rt_render_stats_rays(st);
+        double camera = (double)st->camera_rays;
         char cycles[32] = "n/a", instructions[32] = "n/a", per_test[32] = "n/a";
         if (r->median_cycles >= 0) {
             snprintf(cycles, sizeof cycles, "%.0f", r->median_cycles / n);
