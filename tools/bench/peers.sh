@@ -124,7 +124,10 @@ table() {
         if (slow == "-" || fast == "-" || fast == 0) return "-";
         return sprintf("%.2f×", slow / fast);
     }
-    function sec(x) { return x == "-" ? "-" : sprintf("%.3f s", x); }
+    function sec(x) {
+        if (x == "-") return "-";
+        return sprintf(x < 0.01 ? "%.4f s" : "%.3f s", x);
+    }
     function rel(a, b) { return a == b ? 0 : (a > b ? a - b : b - a) / (a > b ? a : b); }
     BEGIN {
         print "| scene (" size ") | facets | rt-export whole, 2 threads, kd-tree | octree | POV-Ray trace | POV trace / ours | POV parse+bound+trace / ours | Embree build, 1 thread | our build | ours / Embree | Embree render, 1 thread | our render | ours / Embree | rays differ by |";
