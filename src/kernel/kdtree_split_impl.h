@@ -120,12 +120,6 @@ static float float_above(double x)
     return (double)f < x ? nextafterf(f, INFINITY) : f;
 }
 
-/* Surface area of a box of extents d, up to the factor 2. */
-static double half_area(const double d[3])
-{
-    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
-}
-
 static int kd_grow(void **array, size_t *capacity, size_t needed,
                    size_t size, kd_builder *b)
 {
@@ -136,11 +130,45 @@ static int kd_grow(void **array, size_t *capacity, size_t needed,
     return 0;
 }
 
+/* What a sweep on one axis of one cell keeps: the cell, its areas, the
+ * best plane so far. */
+typedef struct kd_sweep {
+    double lo, hi;          /* the cell on the axis */
+    double other_sum, other_product;    /* of the other two extents */
+    double scale;           /* K_I over the cell's half area */
+    double *cost;
+    int *axis;
+    float *split;
+    int a;
+} kd_sweep;
+
+/* The SAH's cost of plane p with `below` and `above` facets on its sides,
+ * kept if below *cost. */
+static inline void kd_consider(kd_sweep *w, float p, int below, int above)
+{
+    double x = (double)p;
+    if (!(x > w->lo && x < w->hi))
+        return;
+    double below_area = (x - w->lo) * w->other_sum + w->other_product;
+    double above_area = (w->hi - x) * w->other_sum + w->other_product;
+    double c = (below_area * below + above_area * above) * w->scale;
+    if (below == 0 || above == 0)
+        c *= KD_EMPTY_BONUS;
+    c += KD_COST_TRAVERSE;
+    if (c < *w->cost) {
+        *w->cost = c;
+        *w->axis = w->a;
+        *w->split = p;
+    }
+}
+
 /*
  * The best plane on axis a of the cell lo..hi for the node's facets
  * (node_lists, shape sh), if cheaper than *cost: *cost, *axis and *split
  * updated.  The block's lists for a are in order, so one pass over them
- * sees every bound from the lowest up.
+ * sees every bound from the lowest up.  Below a plane p: the boxes
+ * starting before p and the flat ones at or before it; above: the boxes
+ * ending after p and the flat ones at or after it.
  */
 static void sweep(kd_builder *b, const int32_t *node_lists, kd_shape sh,
                   const double lo[3], const double hi[3], int a,
@@ -157,9 +185,27 @@ static void sweep(kd_builder *b, const int32_t *node_lists, kd_shape sh,
     }
     for (int j = 0; j < nf; j++)
         flat[j] = b->sh->lo[list[2 * ns + j]][a];
-    double d[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-    double area = half_area(d);
+    int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
+    double d1 = hi[a1] - lo[a1], d2 = hi[a2] - lo[a2], da = hi[a] - lo[a];
+    kd_sweep w = {lo[a], hi[a], d1 + d2, d1 * d2,
+                  KD_COST_INTERSECT / (da * (d1 + d2) + d1 * d2),
+                  cost, axis, split, a};
     int cs = 0, ce = 0, cf = 0;
+    if (nf == 0) {
+        /* no flat box (the usual case): two lists; every box ends after
+         * it starts, so the ends are the last to run out */
+        while (ce < ns) {
+            float p = cs < ns && starts[cs] < ends[ce] ? starts[cs]
+                                                       : ends[ce];
+            int starts_before = cs;
+            while (cs < ns && starts[cs] == p)
+                cs++;
+            while (ce < ns && ends[ce] == p)
+                ce++;
+            kd_consider(&w, p, starts_before, ns - ce);
+        }
+        return;
+    }
     while (cs < ns || ce < ns || cf < nf) {
         float p = INFINITY;
         if (cs < ns && starts[cs] < p)
@@ -175,24 +221,7 @@ static void sweep(kd_builder *b, const int32_t *node_lists, kd_shape sh,
             ce++;
         while (cf < nf && flat[cf] == p)
             cf++;
-        if (!((double)p > lo[a] && (double)p < hi[a]))
-            continue;
-        /* below: boxes starting before p, flat ones at or before it;
-         * above: boxes ending after p, flat ones at or after it */
-        int below = starts_before + cf;
-        int above = (ns - ce) + (nf - flat_before);
-        double db[3] = {d[0], d[1], d[2]}, da[3] = {d[0], d[1], d[2]};
-        db[a] = (double)p - lo[a];
-        da[a] = hi[a] - (double)p;
-        double c = (half_area(db) * below + half_area(da) * above) / area;
-        if (below == 0 || above == 0)
-            c *= KD_EMPTY_BONUS;
-        c = KD_COST_TRAVERSE + KD_COST_INTERSECT * c;
-        if (c < *cost) {
-            *cost = c;
-            *axis = a;
-            *split = p;
-        }
+        kd_consider(&w, p, starts_before + cf, (ns - ce) + (nf - flat_before));
     }
 }
 
