@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # same-bytes.sh OLD NEW [OUTDIR] - renders every scene of the project (and
 # the course's and the SPD scenes of ../shared when that folder is there)
-# with two rt-export binaries, OLD and NEW, under nine option sets (sizes,
-# both precisions, the octree, the scalar loops, samples, stratified
+# with two rt-export binaries, OLD and NEW, under eleven option sets (sizes,
+# both precisions, the octree, the kd-tree, the scalar loops, samples, stratified
 # sampling, a lens), and compares the images byte for byte: how a change
 # that must not move a pixel (a restructuring, a faster path) is checked
 # against the binary before it.  Prints each difference and a count; exits
@@ -20,6 +20,8 @@ variants=(""
           "--size 96x72 --precision float"
           "--size 96x72 --accel octree"
           "--size 96x72 --accel octree --precision float"
+          "--size 96x72 --accel kdtree -j3"
+          "--size 96x72 --accel kdtree --precision float"
           "--size 64x48 --kernel scalar --accel none"
           "--size 64x48 --kernel scalar --accel none --precision float"
           "--size 48x36 --samples 4 --sampling stratified -j1"
