@@ -151,9 +151,10 @@ static void prepare_both(rt_scene *scene, const rt_kernel **kf)
 {
     *kf = rt__scene_kernel(scene, RT_PRECISION_FLOAT, NULL);
     ck_assert_ptr_nonnull(*kf);
-    ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, NULL, NULL),
+    ck_assert_int_eq(
+        rt__kernel_prepare_kdtree(scene->kernel, NULL, NULL, 1, NULL), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_kdtree(*kf, NULL, NULL, 1, NULL),
                      RT_OK);
-    ck_assert_int_eq(rt__kernel_prepare_kdtree(*kf, NULL, NULL), RT_OK);
 }
 
 START_TEST(rays_grazing_and_along_integer_planes_see_the_same_through_the_kdtree)
@@ -301,12 +302,14 @@ START_TEST(a_cancelled_kdtree_build_keeps_nothing_and_is_built_again)
     ck_assert_int_eq(rt_cancel_create(&flag, NULL), RT_OK);
     rt_cancel_request(flag);
     rt_octree_info info = {0};
-    ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, flag, &info),
-                     RT_ERR_CANCELLED);
+    ck_assert_int_eq(
+        rt__kernel_prepare_kdtree(scene->kernel, flag, NULL, 1, &info),
+        RT_ERR_CANCELLED);
     ck_assert_uint_eq(info.nodes, 0);
     rt_cancel_reset(flag);
-    ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, flag, &info),
-                     RT_OK);
+    ck_assert_int_eq(
+        rt__kernel_prepare_kdtree(scene->kernel, flag, NULL, 1, &info),
+        RT_OK);
     ck_assert_uint_gt(info.nodes, 1);
     rt_image tree = render(scene, RT_PRECISION_DOUBLE, RT_ACCEL_KDTREE, 2,
                            NULL);
@@ -314,6 +317,54 @@ START_TEST(a_cancelled_kdtree_build_keeps_nothing_and_is_built_again)
     ck_assert_int_eq(rt_test_image_diff(&ref, &tree, NULL), 0);
     rt_image_release(&ref);
     rt_image_release(&tree);
+    rt_cancel_destroy(flag);
+    rt_scene_destroy(scene);
+}
+END_TEST
+
+START_TEST(the_kdtree_is_the_same_tree_on_any_number_of_threads)
+{
+    /* enough facets for many tasks (the build's parts) */
+    int facets = reduced() ? 6000 : 24000;
+    rt_octree_info first = {0};
+    for (int threads = 1; threads <= 5; threads++) {
+        rt_scene *scene;
+        rt_error error;
+        ck_assert_int_eq(bench_soup(facets, 8, 8, &scene, &error), RT_OK);
+        rt_octree_info info = {0};
+        ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, NULL, NULL,
+                                                   threads, &info),
+                         RT_OK);
+        ck_assert_uint_gt(info.nodes, 100);
+        if (threads == 1)
+            first = info;
+        ck_assert_uint_eq(info.nodes, first.nodes);
+        ck_assert_uint_eq(info.references, first.references);
+        ck_assert_int_eq(info.depth, first.depth);
+        ck_assert_uint_eq(info.digest, first.digest);
+        rt_scene_destroy(scene);
+    }
+}
+END_TEST
+
+START_TEST(a_kdtree_build_cancelled_on_several_threads_keeps_nothing)
+{
+    rt_scene *scene;
+    rt_error error;
+    ck_assert_int_eq(bench_soup(6000, 8, 8, &scene, &error), RT_OK);
+    rt_cancel *flag;
+    ck_assert_int_eq(rt_cancel_create(&flag, NULL), RT_OK);
+    rt_cancel_request(flag);
+    rt_octree_info info = {0};
+    ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, flag, NULL, 3,
+                                               &info),
+                     RT_ERR_CANCELLED);
+    ck_assert_uint_eq(info.nodes, 0);
+    rt_cancel_reset(flag);
+    ck_assert_int_eq(rt__kernel_prepare_kdtree(scene->kernel, flag, NULL, 3,
+                                               &info),
+                     RT_OK);
+    ck_assert_uint_gt(info.nodes, 1);
     rt_cancel_destroy(flag);
     rt_scene_destroy(scene);
 }
@@ -358,6 +409,10 @@ static Suite *kdtree_suite(void)
                    the_kdtree_is_chosen_by_its_option_and_reports_its_figures);
     tcase_add_test(promises, the_kdtree_is_built_once_and_reused_by_every_render);
     tcase_add_test(promises, a_degenerate_scene_keeps_the_kdtree_bounded);
+    tcase_add_test(promises,
+                   the_kdtree_is_the_same_tree_on_any_number_of_threads);
+    tcase_add_test(promises,
+                   a_kdtree_build_cancelled_on_several_threads_keeps_nothing);
     tcase_add_test(promises,
                    a_cancelled_kdtree_build_keeps_nothing_and_is_built_again);
     suite_add_tcase(s, promises);

@@ -254,7 +254,7 @@ START_TEST(the_default_is_auto_and_an_unknown_choice_is_an_argument_error)
 }
 END_TEST
 
-START_TEST(auto_uses_the_octree_from_the_threshold_on)
+START_TEST(auto_uses_the_kdtree_from_the_threshold_on)
 {
     rt_scene *small, *big;
     rt_error error;
@@ -272,6 +272,7 @@ START_TEST(auto_uses_the_octree_from_the_threshold_on)
                         1, 1,
                         &stats);
     ck_assert_int_eq(stats.accel_used, 1);
+    ck_assert_int_eq(stats.accel_kdtree, 1);
     ck_assert_uint_gt(stats.accel_leaves, 1);
     ck_assert_uint_gt(stats.accel_queries, 0);
     ck_assert_uint_lt(stats.accel_facet_tests,
@@ -367,7 +368,7 @@ static Suite *octree_suite(void)
     tcase_set_timeout(choice, 120);
     tcase_add_test(choice,
                    the_default_is_auto_and_an_unknown_choice_is_an_argument_error);
-    tcase_add_test(choice, auto_uses_the_octree_from_the_threshold_on);
+    tcase_add_test(choice, auto_uses_the_kdtree_from_the_threshold_on);
     tcase_add_test(choice, the_octree_is_built_once_and_reused_by_every_render);
     tcase_add_test(choice, a_degenerate_scene_keeps_the_octree_bounded);
     suite_add_tcase(s, choice);

@@ -88,7 +88,8 @@ static const rt_kernel *kernel_with(const rt_scene *scene, int float_kernel,
     if (accel == RT_ACCEL_OCTREE)
         ck_assert_int_eq(rt__kernel_prepare_octree(k, NULL, NULL), RT_OK);
     if (accel == RT_ACCEL_KDTREE)
-        ck_assert_int_eq(rt__kernel_prepare_kdtree(k, NULL, NULL), RT_OK);
+        ck_assert_int_eq(rt__kernel_prepare_kdtree(k, NULL, NULL, 1, NULL),
+                         RT_OK);
     return k;
 }
 

@@ -180,7 +180,7 @@ typedef enum rt_kernel_choice {
  * kd-tree.
  */
 typedef enum rt_accel {
-    RT_ACCEL_AUTO = 0,      /* the octree from RT_ACCEL_AUTO_FACETS live
+    RT_ACCEL_AUTO = 0,      /* the kd-tree from RT_ACCEL_AUTO_FACETS live
                                facets on, else brute force */
     RT_ACCEL_NONE = 1,      /* brute force: every ray tests every facet */
     RT_ACCEL_OCTREE = 2,    /* an octree of the facets, whatever their
@@ -190,9 +190,10 @@ typedef enum rt_accel {
                                (docs/kdtree.md) */
 } rt_accel;
 
-/* Below this many live facets brute force is as fast as the octree on the
- * machine of docs/performance.md (measured there). */
-#define RT_ACCEL_AUTO_FACETS 300
+/* Below this many live facets brute force is as fast as the kd-tree (and
+ * faster than the octree) on the machine of docs/kdtree.md (measured
+ * there, "What auto chooses"). */
+#define RT_ACCEL_AUTO_FACETS 240
 
 /*
  * A cancellation flag that renders poll before every pixel, and while they

@@ -3,324 +3,352 @@
  * (part of kernel_impl.h, compiled once per precision; everything here is
  * static).
  *
- * Depth first, sequential.  Each facet is represented by its bounding box
- * grown by the margin and rounded outward to float ("plain" bounds, not
- * clipped to the cell: a superset of the clipped ones, so conservative).
- * A node's plane is chosen by the surface area heuristic over every bound
- * of its facets on each axis, by a sweep of the sorted bounds (O(n log n)
- * a node, O(N log^2 N) for the tree).  A facet goes below a plane p when
- * its box starts before p (or lies wholly at or below it), above when it
- * ends after p (or lies wholly at or above it); one whose box straddles p
- * goes to each side whose cell, grown by the octree's margin, the
- * triangle itself overlaps (the octree's triangle-box test), so a facet
- * crossing a cell's corner is not listed where only its box reaches (why
- * all this suffices: docs/kdtree.md, "Listing").  kdtree_impl.h lists the
- * bounds, each with its reason; the build polls the cancellation flag as
- * it goes and keeps nothing half built.
+ * Each facet is represented by its bounding box grown by the margin and
+ * rounded outward to float ("plain" bounds, not clipped to the cell: a
+ * superset of the clipped ones, so conservative).  A node's plane is
+ * chosen by the surface area heuristic over every bound of its facets on
+ * each axis, by a sweep of the bounds in order.  A facet goes below a
+ * plane p when its box starts before p (or lies wholly at or below it),
+ * above when it ends after p (or lies wholly at or above it); one whose
+ * box straddles p goes to each side whose cell, grown by the octree's
+ * margin, the triangle itself overlaps (the octree's triangle-box test),
+ * so a facet crossing a cell's corner is not listed where only its box
+ * reaches (why all this suffices: docs/kdtree.md, "Listing").
+ *
+ * O(N log N), after Wald and Havran (2006, section 4.3): the bounds are
+ * sorted once, at the root, on each axis (a radix sort); a node's sorted
+ * lists are split into its children's by a stable filter, so they stay
+ * sorted and a node costs time linear in its facets.  The plain bounds
+ * make this exact: a facet's bounds are the same in every cell it is
+ * listed in, so the filtered lists are the ones a sort would give.
+ *
+ * In parallel, the same tree for any thread count: the nodes of more than
+ * KD_TASK_FACETS facets are split first, on the calling thread; each node
+ * at or below that size is then a task, whose subtree the threads build
+ * on their own, taking tasks in turn; the subtrees are finally laid out in
+ * the order a depth-first build gives.  What a task builds depends only on
+ * its facets and cell, never on the thread that takes it or when.
+ * kdtree_impl.h lists the bounds, each with its reason; the build polls
+ * the cancellation flag as it goes and keeps nothing half built.  The
+ * work at one node - the sweep, the split, a subtree - is
+ * kdtree_split_impl.h's.
  */
 
-typedef struct kd_builder {
-    float (*lo)[3], (*hi)[3];   /* each facet's grown box, in float */
-    double (*v)[3][3];      /* each facet's vertices, in double */
-    double overlap_margin;  /* the octree's margin, for the overlap test */
-    const unsigned char *sliver;
-    kdtree *tree;
-    size_t node_capacity, ref_capacity;
-    int32_t *lists;         /* the lists of the nodes waiting, then the
-                               one being split */
-    size_t list_capacity;
-    size_t stored;          /* references in tree->refs (a leaf of one
-                               facet holds it in its node) */
-    float *keys;            /* the sweep's sorted bounds: 3 n */
-    size_t key_capacity;
-    size_t limit;           /* references and nodes allowed */
-    int cap;                /* the depth cap */
-    const rt_cancel *cancel;    /* NULL: the build cannot be cancelled */
-    size_t work;            /* units of work since the flag was read */
-    int too_big;            /* the limit was passed: redo with a lower cap */
-    rt_status status;       /* RT_OK, RT_ERR_NOMEM or RT_ERR_CANCELLED */
-} kd_builder;
-
-/* Counts `amount` units of work and, every KD_POLL_WORK of them, reads
- * the cancellation flag; non-zero once the build must stop. */
-static int kd_stopped(kd_builder *b, size_t amount)
-{
-    b->work += amount;
-    if (b->work >= KD_POLL_WORK) {
-        b->work = 0;
-        if (b->status == RT_OK && b->cancel != NULL &&
-            rt_cancel_requested(b->cancel))
-            b->status = RT_ERR_CANCELLED;
-    }
-    return b->status != RT_OK || b->too_big;
-}
-
-/* The largest float <= x, and the smallest float >= x (infinite beyond
- * float's range on the side that overflows). */
-static float float_below(double x)
-{
-    float f = (float)x;
-    return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-
-static float float_above(double x)
-{
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
-
-static int compare_floats(const void *a, const void *b)
-{
-    float x = *(const float *)a, y = *(const float *)b;
-    return (x > y) - (x < y);
-}
-
-/* Surface area of a box of extents d, up to the factor 2. */
-static double half_area(const double d[3])
-{
-    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
-}
-
-/* The best plane on axis a of the cell lo..hi for facets list[0 .. n),
- * if cheaper than *cost: *cost, *axis and *split updated. */
-static void sweep(kd_builder *b, const int32_t *list, int n,
-                  const double lo[3], const double hi[3], int a,
-                  double *cost, int *axis, float *split)
-{
-    float *starts = b->keys, *ends = b->keys + n, *flat = b->keys + 2 * n;
-    int ns = 0, nf = 0;
-    for (int j = 0; j < n; j++) {
-        float l = b->lo[list[j]][a], h = b->hi[list[j]][a];
-        if (l == h) {
-            flat[nf++] = l;
-        } else {
-            starts[ns] = l;
-            ends[ns++] = h;
-        }
-    }
-    qsort(starts, (size_t)ns, sizeof *starts, compare_floats);
-    qsort(ends, (size_t)ns, sizeof *ends, compare_floats);
-    qsort(flat, (size_t)nf, sizeof *flat, compare_floats);
-    double d[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-    double area = half_area(d);
-    int cs = 0, ce = 0, cf = 0;
-    while (cs < ns || ce < ns || cf < nf) {
-        float p = INFINITY;
-        if (cs < ns && starts[cs] < p)
-            p = starts[cs];
-        if (ce < ns && ends[ce] < p)
-            p = ends[ce];
-        if (cf < nf && flat[cf] < p)
-            p = flat[cf];
-        int starts_before = cs, flat_before = cf;
-        while (cs < ns && starts[cs] == p)
-            cs++;
-        while (ce < ns && ends[ce] == p)
-            ce++;
-        while (cf < nf && flat[cf] == p)
-            cf++;
-        if (!((double)p > lo[a] && (double)p < hi[a]))
-            continue;
-        /* below: boxes starting before p, flat ones at or before it;
-         * above: boxes ending after p, flat ones at or after it */
-        int below = starts_before + cf;
-        int above = (ns - ce) + (nf - flat_before);
-        double db[3] = {d[0], d[1], d[2]}, da[3] = {d[0], d[1], d[2]};
-        db[a] = (double)p - lo[a];
-        da[a] = hi[a] - (double)p;
-        double c = (half_area(db) * below + half_area(da) * above) / area;
-        if (below == 0 || above == 0)
-            c *= KD_EMPTY_BONUS;
-        c = KD_COST_TRAVERSE + KD_COST_INTERSECT * c;
-        if (c < *cost) {
-            *cost = c;
-            *axis = a;
-            *split = p;
-        }
-    }
-}
-
-static int kd_grow(void **array, size_t *capacity, size_t needed,
-                   size_t size, kd_builder *b)
-{
-    if (grow(array, capacity, needed, size))
-        return 1;
-    b->status = RT_ERR_NOMEM;
-    return 0;
-}
-
-/* A new node (its fields set later); -1 when out of memory or past the
- * limit. */
-static int kd_new_node(kd_builder *b)
-{
-    kdtree *t = b->tree;
-    if ((size_t)t->node_count >= b->limit) {
-        b->too_big = 1;
-        return -1;
-    }
-    if (!kd_grow((void **)&t->nodes, &b->node_capacity,
-                 (size_t)t->node_count + 1, sizeof *t->nodes, b))
-        return -1;
-    return t->node_count++;
-}
-
-static void kd_make_leaf(kd_builder *b, int node, const int32_t *list, int n)
-{
-    kdtree *t = b->tree;
-    uint32_t sliver = 0;
-    for (int j = 0; j < n; j++)
-        sliver |= b->sliver[list[j]];
-    t->nodes[node].bits = (uint32_t)n << 3 | (sliver ? KD_SLIVER : 0) |
-                          KD_LEAF;
-    t->leaf_count++;
-    if (n == 1) {
-        t->nodes[node].at.first = (uint32_t)list[0];
-    } else {
-        if (t->ref_count + (size_t)n > b->limit) {
-            b->too_big = 1;
-            return;
-        }
-        if (n > 0 && !kd_grow((void **)&t->refs, &b->ref_capacity,
-                              b->stored + (size_t)n, sizeof *t->refs, b))
-            return;
-        if (n > 0)
-            memcpy(t->refs + b->stored, list, (size_t)n * sizeof *list);
-        t->nodes[node].at.first = (uint32_t)b->stored;
-        b->stored += (size_t)n;
-    }
-    t->ref_count += (size_t)n;
-}
+/* The facets a thread prepares at a time (their boxes), a job. */
+#define KD_BOX_CHUNK 16384
 
 /*
- * Builds the subtree of the cell lo..hi whose facets are
- * b->lists[off .. off + n), the last list there.  The children's lists
- * go after it and are then moved down, the one above the plane first, so
- * that while the subtree below is built the list above waits beneath it:
- * the lists waiting hold at most the references their subtrees' leaves
- * will hold (each facet of a node is in one child at least).
+ * Jobs for the threads of one build step: job(argument, j) for every j in
+ * [0, count), each run once, by whichever thread takes it first.  The
+ * results must not depend on which thread ran a job.
  */
-static void kd_build_node(kd_builder *b, size_t off, int n,
-                          const double lo[3], const double hi[3], int depth)
+typedef struct kd_jobs {
+    void (*job)(void *argument, size_t j, unsigned char *scratch);
+    void *argument;
+    size_t count;
+    size_t scratch;         /* bytes of scratch each thread gets */
+    atomic_size_t next;
+} kd_jobs;
+
+static void kd_jobs_thread(void *argument)
 {
-    int node = kd_new_node(b);
-    if (node < 0 || kd_stopped(b, (size_t)n))
-        return;
-    kdtree *t = b->tree;
-    if (depth > t->depth)
-        t->depth = depth;
-    double cost = KD_COST_INTERSECT * n;
-    int axis = -1;
-    float split = 0;
-    if (n > 0 && depth < b->cap) {
-        if (!kd_grow((void **)&b->keys, &b->key_capacity, 3 * (size_t)n,
-                     sizeof *b->keys, b))
-            return;
-        for (int a = 0; a < 3; a++)
-            if (hi[a] > lo[a]) {
-                sweep(b, b->lists + off, n, lo, hi, a, &cost, &axis, &split);
-                if (kd_stopped(b, (size_t)n))
-                    return;
-            }
-    }
-    if (axis < 0) {
-        kd_make_leaf(b, node, b->lists + off, n);
-        return;
-    }
-    size_t top = off + (size_t)n;
-    if (!kd_grow((void **)&b->lists, &b->list_capacity, top + 2 * (size_t)n,
-                 sizeof *b->lists, b))
-        return;
-    int32_t *list = b->lists + off, *below = b->lists + top,
-            *above = b->lists + top + n;
-    int nb = 0, na = 0;
-    double p = (double)split;
-    double cut_hi[3] = {hi[0], hi[1], hi[2]}, cut_lo[3] = {lo[0], lo[1], lo[2]};
-    cut_hi[axis] = p;
-    cut_lo[axis] = p;
-    /* the children's cells grown by the octree's margin, for the
-     * triangle-box test of the facets whose boxes straddle the plane */
-    double c_below[3], h_below[3], c_above[3], h_above[3];
-    int finite = 1;
-    for (int a = 0; a < 3; a++) {
-        c_below[a] = lo[a] + (cut_hi[a] - lo[a]) * 0.5;
-        h_below[a] = (cut_hi[a] - lo[a]) * 0.5 + b->overlap_margin;
-        c_above[a] = cut_lo[a] + (hi[a] - cut_lo[a]) * 0.5;
-        h_above[a] = (hi[a] - cut_lo[a]) * 0.5 + b->overlap_margin;
-        finite &= isfinite(h_below[a]) && isfinite(h_above[a]) &&
-                  isfinite(c_below[a]) && isfinite(c_above[a]);
-    }
-    for (int j = 0; j < n; j++) {
-        double l = b->lo[list[j]][axis], h = b->hi[list[j]][axis];
-        int in_below = l < p || h <= p, in_above = h > p || l >= p;
-        if (in_below && in_above && finite) {
-            /* a box that straddles the plane: the facet itself may miss
-             * one side (Akenine-Moller's test, as the octree's listing) */
-            in_below = triangle_box_overlap(c_below, h_below, b->v[list[j]]);
-            in_above = triangle_box_overlap(c_above, h_above, b->v[list[j]]);
-            if (!in_below && !in_above)
-                in_below = in_above = 1;    /* rounding: keep both */
-        }
-        if (in_below)
-            below[nb++] = list[j];
-        if (in_above)
-            above[na++] = list[j];
-    }
-    if (kd_stopped(b, (size_t)n))
-        return;
-    memmove(list, above, (size_t)na * sizeof *list);
-    memmove(list + na, below, (size_t)nb * sizeof *list);
-    kd_build_node(b, off + (size_t)na, nb, lo, cut_hi, depth + 1);
-    if (b->status != RT_OK || b->too_big)
-        return;
-    int upper = t->node_count;
-    kd_build_node(b, off, na, cut_lo, hi, depth + 1);
-    if (b->status != RT_OK || b->too_big)
-        return;
-    uint32_t sliver = (t->nodes[node + 1].bits | t->nodes[upper].bits) &
-                      KD_SLIVER;
-    t->nodes[node].at.split = split;
-    t->nodes[node].bits = (uint32_t)upper << 3 | sliver | (uint32_t)axis;
+    kd_jobs *jobs = argument;
+    unsigned char *scratch = NULL;
+    if (jobs->scratch > 0 && (scratch = malloc(jobs->scratch)) == NULL)
+        return;     /* the other threads take the jobs */
+    size_t j;
+    while ((j = atomic_fetch_add(&jobs->next, 1)) < jobs->count)
+        jobs->job(jobs->argument, j, scratch);
+    free(scratch);
 }
 
-/*
- * Each facet's box grown by `margin`, rounded outward to float, into
- * b->lo and b->hi, its sliver mark into sliver[], and the exact box of
- * all facets into lo..hi; 0 when cancelled.
- */
-static int kd_facet_boxes(kd_builder *b, const KERNEL_T *k, double margin,
-                          unsigned char *sliver)
+/* Runs the jobs on `threads` threads of `workers` (base/workers.h) and
+ * waits for them; 0 when some could not run (out of memory). */
+static int kd_run(rt_workers *workers, int threads, kd_jobs *jobs)
 {
-    for (int i = 0; i < k->count; i++) {
-        if (i % KD_POLL_WORK == 0 && kd_stopped(b, KD_POLL_WORK))
-            return 0;
+    atomic_init(&jobs->next, 0);
+    if ((size_t)threads > jobs->count)
+        threads = jobs->count > 0 ? (int)jobs->count : 1;
+    rt__workers_run(threads > 1 ? workers : NULL, threads, kd_jobs_thread,
+                    jobs);
+    /* every thread without scratch: jobs left untaken */
+    return atomic_load(&jobs->next) >= jobs->count;
+}
+
+/* The build of a whole tree: its shared inputs and what the jobs fill. */
+typedef struct kd_build {
+    kd_shared sh;
+    const KERNEL_T *k;
+    double margin;
+    int32_t *root;          /* the root's block */
+    kd_shape shape;         /* the root's */
+    size_t offset[3];       /* where the root's lists of each axis start */
+    kd_builder *top;
+} kd_build;
+
+/* Job j of the boxes: facets j * KD_BOX_CHUNK on, their vertices, boxes
+ * grown by the margin and rounded outward to float, and sliver marks. */
+static void kd_boxes_job(void *argument, size_t j, unsigned char *scratch)
+{
+    (void)scratch;
+    kd_build *w = argument;
+    kd_shared *s = &w->sh;
+    size_t end = (j + 1) * KD_BOX_CHUNK;
+    if (end > (size_t)s->facets)
+        end = (size_t)s->facets;
+    if (s->cancel != NULL && rt_cancel_requested(s->cancel)) {
+        atomic_store(&s->stop, 1);
+        return;
+    }
+    for (size_t i = j * KD_BOX_CHUNK; i < end; i++) {
+        const KERNEL_T *k = w->k;
         const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
-        double (*v)[3] = b->v[i];
-        for (int j = 0; j < 3; j++) {
-            v[j][0] = (double)p[j]->x;
-            v[j][1] = (double)p[j]->y;
-            v[j][2] = (double)p[j]->z;
+        double (*v)[3] = s->v[i];
+        for (int c = 0; c < 3; c++) {
+            v[c][0] = (double)p[c]->x;
+            v[c][1] = (double)p[c]->y;
+            v[c][2] = (double)p[c]->z;
         }
-        sliver[i] = !(condition(v) <= OCTREE_CONDITION_MAX);
+        s->sliver[i] = !(condition(v) <= OCTREE_CONDITION_MAX);
         for (int a = 0; a < 3; a++) {
             double low = v[0][a], high = v[0][a];
-            for (int j = 1; j < 3; j++) {
-                low = v[j][a] < low ? v[j][a] : low;
-                high = v[j][a] > high ? v[j][a] : high;
+            for (int c = 1; c < 3; c++) {
+                low = v[c][a] < low ? v[c][a] : low;
+                high = v[c][a] > high ? v[c][a] : high;
             }
             /* one step outward covers the rounding of the sum */
-            b->lo[i][a] = float_below(nextafter(low - margin, -INFINITY));
-            b->hi[i][a] = float_above(nextafter(high + margin, INFINITY));
+            s->lo[i][a] = float_below(nextafter(low - w->margin, -INFINITY));
+            s->hi[i][a] = float_above(nextafter(high + w->margin, INFINITY));
         }
     }
-    return 1;
+}
+
+/* A float's bits as an unsigned key in the floats' order. */
+static uint32_t float_key(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u & 0x80000000u ? ~u : u | 0x80000000u;
+}
+
+/* Sorts ids[0 .. n) by box[id][a], stably: an LSD radix sort of the
+ * pairs (key, id), a byte of the key a pass; tmp holds 2 n pairs. */
+static void kd_sort(int32_t *ids, uint64_t *tmp, size_t n,
+                    float (*box)[3], int a)
+{
+    uint64_t *from = tmp, *to = tmp + n;
+    if (n == 0)
+        return;
+    for (size_t j = 0; j < n; j++)
+        from[j] = (uint64_t)float_key(box[ids[j]][a]) << 32 |
+                  (uint32_t)ids[j];
+    for (int shift = 32; shift < 64; shift += 8) {
+        size_t count[257] = {0};
+        for (size_t j = 0; j < n; j++)
+            count[(from[j] >> shift & 255u) + 1]++;
+        if (count[(from[0] >> shift & 255u) + 1] == n)
+            continue;       /* one byte for all: the pass changes nothing */
+        for (int d = 0; d < 256; d++)
+            count[d + 1] += count[d];
+        for (size_t j = 0; j < n; j++)
+            to[count[from[j] >> shift & 255u]++] = from[j];
+        uint64_t *swap = from;
+        from = to;
+        to = swap;
+    }
+    for (size_t j = 0; j < n; j++)
+        ids[j] = (int32_t)(uint32_t)from[j];
+}
+
+/* Job a of the root: its lists on axis a, at their place in the root's
+ * block (w->offset[a]), made in order of facet and then sorted. */
+static void kd_root_job(void *argument, size_t a, unsigned char *scratch)
+{
+    kd_build *w = argument;
+    kd_shared *s = &w->sh;
+    size_t n = (size_t)s->facets, ns = (size_t)w->shape.s[a];
+    int32_t *starts = w->root + w->offset[a], *ends = starts + ns,
+            *flat = ends + ns;
+    uint64_t *tmp = (uint64_t *)(void *)scratch;
+    size_t js = 0, jf = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (s->lo[i][a] != s->hi[i][a])
+            starts[js++] = (int32_t)i;
+        else
+            flat[jf++] = (int32_t)i;
+    }
+    memcpy(ends, starts, ns * sizeof *ends);
+    kd_sort(starts, tmp, ns, s->lo, (int)a);
+    kd_sort(ends, tmp, ns, s->hi, (int)a);
+    kd_sort(flat, tmp, jf, s->lo, (int)a);
+}
+
+/* Job j of the subtrees: task j built by this thread, its builder's
+ * scratch freed (its nodes and references kept for the layout). */
+static void kd_task_job(void *argument, size_t j, unsigned char *scratch)
+{
+    kd_build *w = argument;
+    kd_task *task = &w->top->tasks[j];
+    kd_builder *b = &task->b;
+    b->sh = &w->sh;
+    b->side = scratch;
+    b->lists = task->node_lists;         /* the block is the builder's now */
+    b->list_capacity = kd_block_size(task->shape);
+    task->node_lists = NULL;
+    kd_build_node(b, 0, task->shape, task->lo, task->hi, task->depth);
+    free(b->lists);
+    free(b->keys);
+    b->lists = NULL;
+    b->keys = NULL;
+    b->side = NULL;
 }
 
 /*
- * The kd-tree of k's facets, with *status RT_OK; or NULL with *status
- * RT_ERR_NOMEM, or RT_ERR_CANCELLED once `cancel` (may be NULL) was
- * raised: a cancelled build frees what it made.
+ * Lays out node i of src (a task's root, when src is the top and node i
+ * one of its leaves) and its subtree at t's next node, depth first with
+ * the subtree below a node right after it: the layout a build on one
+ * thread gives.  Returns the node's index in t.
+ */
+static uint32_t kd_emit(kdtree *t, size_t *stored, const kd_builder *src,
+                        uint32_t i)
+{
+    const kdnode *n = &src->nodes[i];
+    if (src->top && kd_is_leaf(n))
+        return kd_emit(t, stored, &src->tasks[n->at.first].b, 0);
+    uint32_t out = (uint32_t)t->node_count++;
+    if (kd_is_leaf(n)) {
+        uint32_t count = kd_payload(n);
+        t->nodes[out] = *n;
+        if (count > 1) {
+            memcpy(t->refs + *stored, src->refs + n->at.first,
+                   count * sizeof *t->refs);
+            t->nodes[out].at.first = (uint32_t)*stored;
+            *stored += count;
+        }
+        t->leaf_count++;
+        t->ref_count += count;
+        return out;
+    }
+    kd_emit(t, stored, src, i + 1);
+    uint32_t upper = kd_emit(t, stored, src, kd_payload(n));
+    t->nodes[out].at.split = n->at.split;
+    t->nodes[out].bits = upper << 3 |
+                         ((t->nodes[out + 1].bits | t->nodes[upper].bits) &
+                          KD_SLIVER) |
+                         (n->bits & 3u);
+    return out;
+}
+
+/* FNV-1a over `size` bytes from `data`, from `hash` on: the tree's
+ * fingerprint, by which tests see the same tree for any thread count. */
+static uint64_t kd_digest(const void *data, size_t size, uint64_t hash)
+{
+    const unsigned char *byte = data;
+    for (size_t j = 0; j < size; j++)
+        hash = (hash ^ byte[j]) * 0x100000001b3u;
+    return hash;
+}
+
+/* The status of a build's parts together: cancelled first, then out of
+ * memory. */
+static rt_status kd_status(const kd_builder *top)
+{
+    rt_status status = top->status;
+    for (size_t j = 0; j < top->task_count; j++) {
+        rt_status s = top->tasks[j].b.status;
+        if (s == RT_ERR_CANCELLED || status == RT_OK)
+            status = s == RT_OK ? status : s;
+    }
+    return status;
+}
+
+/*
+ * One build of the tree under the depth cap w->sh.cap into t: RT_OK,
+ * RT_ERR_NOMEM, RT_ERR_CANCELLED, or RT_OK with w->sh.too_big set when a
+ * limit was passed (t then holds nothing).
+ */
+static rt_status kd_build_once(kd_build *w, kdtree *t, rt_workers *workers,
+                               int threads)
+{
+    kd_shared *s = &w->sh;
+    size_t n = (size_t)s->facets;
+    atomic_init(&s->nodes_used, 0);
+    atomic_init(&s->refs_used, 0);
+    atomic_init(&s->too_big, 0);
+    kd_builder top = {0};
+    top.sh = s;
+    top.top = 1;
+    rt_status status = RT_ERR_NOMEM;
+    w->shape.n = (int)n;
+    size_t at = n;
+    for (int a = 0; a < 3; a++) {
+        size_t ns = 0;
+        for (size_t i = 0; i < n; i++)
+            ns += s->lo[i][a] != s->hi[i][a];
+        w->shape.s[a] = (int)ns;
+        w->offset[a] = at;
+        at += n + ns;
+    }
+    top.side = malloc(n);
+    if (top.side == NULL ||
+        !kd_grow((void **)&top.lists, &top.list_capacity, at,
+                 sizeof *top.lists, &top))
+        goto done;
+    w->root = top.lists;
+    for (size_t i = 0; i < n; i++)
+        w->root[i] = (int32_t)i;
+    kd_jobs sorts = {kd_root_job, w, 3, 2 * n * sizeof(uint64_t)};
+    if (!kd_run(workers, threads, &sorts))
+        goto done;
+    kd_build_node(&top, 0, w->shape, t->lo, t->hi, 0);
+    free(top.lists);
+    free(top.keys);
+    top.lists = NULL;
+    top.keys = NULL;
+    w->top = &top;
+    if (kd_status(&top) == RT_OK && !atomic_load(&s->too_big)) {
+        kd_jobs tasks = {kd_task_job, w, top.task_count, n};
+        if (!kd_run(workers, threads, &tasks))
+            goto done;
+    }
+    status = kd_status(&top);
+    if (status != RT_OK || atomic_load(&s->too_big))
+        goto done;
+    size_t nodes = top.node_count, refs = 0;
+    t->depth = top.depth;
+    for (size_t j = 0; j < top.task_count; j++) {
+        const kd_builder *b = &top.tasks[j].b;
+        nodes += b->node_count - 1;     /* less its stub in the top */
+        refs += b->stored;
+        t->depth = b->depth > t->depth ? b->depth : t->depth;
+    }
+    t->nodes = malloc(nodes * sizeof *t->nodes);
+    t->refs = malloc((refs ? refs : 1) * sizeof *t->refs);
+    if (t->nodes == NULL || t->refs == NULL) {
+        status = RT_ERR_NOMEM;
+        goto done;
+    }
+    size_t stored = 0;
+    kd_emit(t, &stored, &top, 0);
+    t->digest = kd_digest(t->nodes, nodes * sizeof *t->nodes,
+                          kd_digest(t->refs, refs * sizeof *t->refs,
+                                    0xcbf29ce484222325u));
+    t->bytes = sizeof *t + nodes * sizeof *t->nodes + refs * sizeof *t->refs;
+done:
+    kd_builder_free(&top);
+    w->top = NULL;
+    return status;
+}
+
+/*
+ * The kd-tree of k's facets, built on `threads` threads of `workers`
+ * (may be NULL: threads of the call's own), the same tree for any count,
+ * with *status RT_OK; or NULL with *status RT_ERR_NOMEM, or
+ * RT_ERR_CANCELLED once `cancel` (may be NULL) was raised: a cancelled
+ * build frees what it made.
  */
 static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
+                            rt_workers *workers, int threads,
                             rt_status *status)
 {
     double start = rt__clock_seconds();
@@ -328,17 +356,22 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     if (k->count >= KD_MAX_FACETS)
         return NULL;
     kdtree *t = calloc(1, sizeof *t);
-    if (t == NULL)
+    kd_build *w = calloc(1, sizeof *w);
+    if (t == NULL || w == NULL) {
+        free(t);
+        free(w);
         return NULL;
-    kd_builder b = {0};
+    }
     size_t n = (size_t)k->count;
-    b.tree = t;
-    b.cancel = cancel;
-    b.lo = malloc((n ? n : 1) * sizeof *b.lo);
-    b.hi = malloc((n ? n : 1) * sizeof *b.hi);
-    b.v = malloc((n ? n : 1) * sizeof *b.v);
-    unsigned char *sliver = malloc(n ? n : 1);
-    b.sliver = sliver;
+    kd_shared *s = &w->sh;
+    w->k = k;
+    s->facets = k->count;
+    s->cancel = cancel;
+    atomic_init(&s->stop, 0);
+    s->lo = malloc((n ? n : 1) * sizeof *s->lo);
+    s->hi = malloc((n ? n : 1) * sizeof *s->hi);
+    s->v = malloc((n ? n : 1) * sizeof *s->v);
+    s->sliver = malloc(n ? n : 1);
     double size = 0, box_lo[3], box_hi[3];
     for (int a = 0; a < 3; a++) {
         box_lo[a] = INFINITY;
@@ -356,6 +389,7 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     for (int a = 0; a < 3 && k->count > 0; a++)
         size = box_hi[a] - box_lo[a] > size ? box_hi[a] - box_lo[a] : size;
     t->reach_margin = size * KD_MARGIN;
+    w->margin = t->reach_margin;
     double extent = 0;
     for (int a = 0; a < 3 && k->count > 0; a++) {
         extent = fabs(box_lo[a]) > extent ? fabs(box_lo[a]) : extent;
@@ -363,57 +397,63 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     }
     /* the octree's margin, rounding term included: the overlap test
      * computes the cells' centres (octree_impl.h, OCTREE_ROUNDING) */
-    b.overlap_margin = fmax(t->reach_margin,
-                            (extent + size) * OCTREE_ROUNDING);
-    if (b.lo == NULL || b.hi == NULL || b.v == NULL || sliver == NULL)
-        b.status = RT_ERR_NOMEM;
-    else if (k->count == 0 || !(size * 4 < INFINITY))
+    s->overlap_margin = fmax(t->reach_margin,
+                             (extent + size) * OCTREE_ROUNDING);
+    rt_status result = RT_OK;
+    if (s->lo == NULL || s->hi == NULL || s->v == NULL || s->sliver == NULL) {
+        result = RT_ERR_NOMEM;
+    } else if (k->count == 0 || !(size * 4 < INFINITY)) {
         t->brute = 1;   /* nothing to list, or no room for cells */
-    else if (kd_facet_boxes(&b, k, t->reach_margin, sliver)) {
+    } else {
+        kd_jobs boxes = {kd_boxes_job, w,
+                         (n + KD_BOX_CHUNK - 1) / KD_BOX_CHUNK, 0};
+        if (!kd_run(workers, threads, &boxes))
+            result = RT_ERR_NOMEM;
+        else if (atomic_load(&s->stop))
+            result = RT_ERR_CANCELLED;
+    }
+    if (result == RT_OK && !t->brute) {
         for (int a = 0; a < 3; a++) {
             t->lo[a] = INFINITY;
             t->hi[a] = -INFINITY;
         }
-        for (int i = 0; i < k->count; i++)
+        for (size_t i = 0; i < n; i++)
             for (int a = 0; a < 3; a++) {
-                t->lo[a] = b.lo[i][a] < t->lo[a] ? b.lo[i][a] : t->lo[a];
-                t->hi[a] = b.hi[i][a] > t->hi[a] ? b.hi[i][a] : t->hi[a];
-                t->sliver_count += a == 0 && sliver[i];
+                t->lo[a] = s->lo[i][a] < t->lo[a] ? s->lo[i][a] : t->lo[a];
+                t->hi[a] = s->hi[i][a] > t->hi[a] ? s->hi[i][a] : t->hi[a];
             }
-        b.cap = (int)(KD_DEPTH_BASE + KD_DEPTH_SLOPE * log2((double)n));
-        if (b.cap > KD_MAX_DEPTH)
-            b.cap = KD_MAX_DEPTH;
-        b.limit = (size_t)KD_REFERENCE_LIMIT * n + KD_REFERENCE_EXTRA;
+        for (size_t i = 0; i < n; i++)
+            t->sliver_count += s->sliver[i];
+        s->task_facets = (int)(n / KD_TASK_SHARE);
+        if (s->task_facets < KD_TASK_FACETS)
+            s->task_facets = KD_TASK_FACETS;
+        s->cap = (int)(KD_DEPTH_BASE + KD_DEPTH_SLOPE * log2((double)n));
+        if (s->cap > KD_MAX_DEPTH)
+            s->cap = KD_MAX_DEPTH;
+        size_t limit = (size_t)KD_REFERENCE_LIMIT * n + KD_REFERENCE_EXTRA;
+        /* the nodes' 29-bit indices and the leaves' 32-bit offsets */
+        s->node_limit = limit < KD_MAX_FACETS ? limit : KD_MAX_FACETS - 1;
+        s->ref_limit = limit < UINT32_MAX ? limit : UINT32_MAX;
         for (;;) {
-            t->node_count = t->leaf_count = t->depth = 0;
-            t->ref_count = 0;
-            b.stored = 0;
-            b.too_big = 0;
-            if (!kd_grow((void **)&b.lists, &b.list_capacity, n,
-                         sizeof *b.lists, &b))
+            result = kd_build_once(w, t, workers, threads);
+            if (result != RT_OK || !atomic_load(&s->too_big))
                 break;
-            for (size_t i = 0; i < n; i++)
-                b.lists[i] = (int32_t)i;
-            kd_build_node(&b, 0, (int)n, t->lo, t->hi, 0);
-            if (!b.too_big || b.status != RT_OK)
-                break;
-            b.cap = b.cap > KD_DEPTH_RETRY ? b.cap - KD_DEPTH_RETRY : 0;
+            s->cap = s->cap > KD_DEPTH_RETRY ? s->cap - KD_DEPTH_RETRY : 0;
         }
     }
-    free(b.lo);
-    free(b.hi);
-    free(b.v);
-    free(sliver);
-    free(b.lists);
-    free(b.keys);
-    if (b.status == RT_OK && !(b.too_big)) {
-        t->bytes = sizeof *t + (size_t)t->node_count * sizeof *t->nodes +
-                   b.stored * sizeof *t->refs;
+    free(s->lo);
+    free(s->hi);
+    free(s->v);
+    free(s->sliver);
+    free(w);
+    if (result == RT_OK) {
+        if (t->brute)
+            t->bytes = sizeof *t;
         t->build_seconds = rt__clock_seconds() - start;
         *status = RT_OK;
         return t;
     }
-    *status = b.status == RT_OK ? RT_ERR_NOMEM : b.status;
+    *status = result;
     kdtree_free(t);
     return NULL;
 }

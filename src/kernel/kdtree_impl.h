@@ -19,11 +19,15 @@
  * to the build and to the walk.
  *
  * Bounds, each with its reason:
- *   - the SAH's cost constants KD_COST_TRAVERSE and KD_COST_INTERSECT
- *     (Wald and Havran's K_T = 15 and K_I = 20, provisional until fitted
- *     to this kernel) and KD_EMPTY_BONUS (their lambda = 0.8 for a side
- *     left empty): a node is split only when the split's cost is below
- *     the leaf's;
+ *   - the SAH's cost constants KD_COST_TRAVERSE and KD_COST_INTERSECT,
+ *     fitted to this kernel: a traversal step measured at 0.27 to 0.37 of
+ *     a facet test through the AVX2 filter (profiles of balls-s2,
+ *     gears-s2 and tetra-s6, docs/kdtree.md), rounded up to 0.4 for what
+ *     a leaf visit costs beyond its tests (the mailbox, the batch): K_T =
+ *     8 for K_I = 20, the fastest of 4, 6, 8 and 15 over the SPD scenes
+ *     (Wald and Havran's were 15 and 20); and KD_EMPTY_BONUS (their
+ *     lambda = 0.8 for a side left empty): a node is split only when the
+ *     split's cost is below the leaf's;
  *   - a depth cap of KD_DEPTH_BASE + KD_DEPTH_SLOPE log2(N) levels
  *     (pbrt-v3's 8 + 1.3 log2 N), at most KD_MAX_DEPTH: past it the SAH's
  *     gains are noise, and the walk's stack is sized by it;
@@ -38,7 +42,7 @@
  *   - at most KD_MAX_FACETS facets (the node's 29-bit fields); above, the
  *     build reports RT_ERR_NOMEM (such a scene needs tens of gigabytes).
  */
-#define KD_COST_TRAVERSE 15.0
+#define KD_COST_TRAVERSE 8.0
 #define KD_COST_INTERSECT 20.0
 #define KD_EMPTY_BONUS 0.8
 #define KD_DEPTH_BASE 8
@@ -102,6 +106,7 @@ typedef struct kdtree {
     int sliver_count;
     size_t ref_count;       /* references in all leaves */
     size_t bytes;
+    uint64_t digest;        /* FNV-1a of the nodes and the references */
     double build_seconds;
 } kdtree;
 

@@ -97,6 +97,33 @@ static int kd_walk_next(kd_walk *w, double cutoff)
             int a = (int)(n->bits & 3u);
             double p = (double)n->at.split;
             double o = w->q.origin[a], d = w->q.direction[a];
+            if (g == 0 && d != 0) {
+                /* the common case, the general one below with g = 0 and
+                 * a finite crossing t: the near side's part ends at
+                 * t + e, the far side's starts at t - e */
+                double t = (p - o) * w->q.inverse[a];
+                if (fabs(t) < INFINITY) {
+                    double e = fabs(t) * slack;
+                    uint32_t near_node = d > 0 ? cur.node + 1 : kd_payload(n);
+                    uint32_t far_node = d > 0 ? kd_payload(n) : cur.node + 1;
+                    int near_in = cur.t0 <= t + e &&
+                                  !kd_empty(&nodes[near_node]);
+                    if (t - e <= cur.t1 && !kd_empty(&nodes[far_node])) {
+                        kd_pending far = {t - e > cur.t0 ? t - e : cur.t0,
+                                          cur.t1, far_node};
+                        if (!near_in) {
+                            cur = far;
+                            continue;
+                        }
+                        w->stack[w->top++] = far;
+                    }
+                    if (!near_in)
+                        break;
+                    cur.t1 = t + e < cur.t1 ? t + e : cur.t1;
+                    cur.node = near_node;
+                    continue;
+                }
+            }
             kd_pending below = {cur.t0, cur.t1, cur.node + 1};
             kd_pending above = {cur.t0, cur.t1, kd_payload(n)};
             int in_below = 1, in_above = 1;

@@ -29,6 +29,7 @@
 
 #include <stdint.h>
 
+#include "base/workers.h"
 #include "raytrace/explain.h"
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
@@ -163,6 +164,9 @@ typedef struct rt_octree_info {
     uint64_t slivers;       /* facets listed in leaves whose shape the
                                stopping rule cannot trust: never left out */
     uint64_t bytes;
+    uint64_t digest;        /* the kd-tree's: a hash (FNV-1a) of its nodes
+                               and lists, equal for equal trees; the
+                               octree's: 0 */
 } rt_octree_info;
 
 /* A hit as the queries report it (in double whatever the precision). */
@@ -206,9 +210,12 @@ struct rt_kernel_ops {
                                 rt_octree_info *info);
     /* The same for the kernel's kd-tree (docs/kdtree.md): RT_OK,
      * RT_ERR_NOMEM or RT_ERR_CANCELLED, nothing kept when cancelled.
-     * Once it exists, nearest_hit and occluded go through it. */
+     * Built on `threads` threads of `workers` (NULL: threads of the
+     * call's own), the same tree for any count.  Once it exists,
+     * nearest_hit and occluded go through it. */
     rt_status (*prepare_kdtree)(const rt_kernel *kernel,
                                 const rt_cancel *cancel,
+                                rt_workers *workers, int threads,
                                 rt_octree_info *info);
     /* The colour the ray carries (docs/rendering-model.md), its work added
      * to *counters. */
@@ -266,9 +273,12 @@ static inline rt_status rt__kernel_prepare_octree(const rt_kernel *kernel,
 
 static inline rt_status rt__kernel_prepare_kdtree(const rt_kernel *kernel,
                                                   const rt_cancel *cancel,
+                                                  rt_workers *workers,
+                                                  int threads,
                                                   rt_octree_info *info)
 {
-    return kernel->ops->prepare_kdtree(kernel, cancel, info);
+    return kernel->ops->prepare_kdtree(kernel, cancel, workers, threads,
+                                       info);
 }
 
 static inline rt_color rt__kernel_trace(const rt_kernel *kernel,

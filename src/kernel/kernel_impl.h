@@ -21,8 +21,10 @@
  *     octree_impl.h        the octree's nodes (octree_build_impl.h builds
  *                          them, octree_walk_impl.h walks a ray through
  *                          them)
- *     kdtree_impl.h        the kd-tree's nodes (kdtree_build_impl.h,
- *                          kdtree_walk_impl.h: the same for it)
+ *     kdtree_impl.h        the kd-tree's nodes (kdtree_split_impl.h
+ *                          splits a node, kdtree_build_impl.h builds
+ *                          the tree on several threads,
+ *                          kdtree_walk_impl.h walks it)
  *     query_brute_impl.h   nearest hit and any hit over every facet
  *     query_octree_impl.h  the same through the octree
  *     query_kdtree_impl.h  the same through the kd-tree
@@ -137,6 +139,7 @@ typedef struct trace_ctx {
 #include "octree_build_impl.h"
 #include "octree_walk_impl.h"
 #include "kdtree_impl.h"
+#include "kdtree_split_impl.h"
 #include "kdtree_build_impl.h"
 #include "kdtree_walk_impl.h"
 
@@ -337,12 +340,14 @@ static rt_status kernel_prepare_octree(const rt_kernel *kernel,
         info->always = (uint64_t)t->always_count;
         info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
+        info->digest = 0;
     }
     return RT_OK;
 }
 
 static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
                                        const rt_cancel *cancel,
+                                       rt_workers *workers, int threads,
                                        rt_octree_info *info)
 {
     const KERNEL_T *k = kernel_of(kernel);
@@ -354,7 +359,8 @@ static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
         t = atomic_load_explicit(&mutable->kd, memory_order_relaxed);
         if (t == NULL) {
             /* stored only when complete, as the octree */
-            kdtree *built = kdtree_build(k, cancel, &status);
+            kdtree *built = kdtree_build(k, cancel, workers, threads,
+                                          &status);
             atomic_store_explicit(&mutable->kd, built, memory_order_release);
             t = built;
         }
@@ -371,6 +377,7 @@ static rt_status kernel_prepare_kdtree(const rt_kernel *kernel,
         info->always = t->brute ? (uint64_t)k->count : 0;
         info->slivers = (uint64_t)t->sliver_count;
         info->bytes = (uint64_t)t->bytes;
+        info->digest = t->digest;
     }
     return RT_OK;
 }

@@ -21,6 +21,20 @@ static double cross_axis(const double e[3], int axis, const double v[3])
     return e[j] * v[i] - e[i] * v[j];
 }
 
+/* The least and the greatest of three values, none NaN (no libm call:
+ * this is the builds' inner loop). */
+static inline double least3(double a, double b, double c)
+{
+    double m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static inline double greatest3(double a, double b, double c)
+{
+    double m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
 /* Non-zero when the triangle v[3] overlaps the box of centre c and half
  * sizes h (Akenine-Moller's 13 axes).  Zero only when a separating axis is
  * found with a gap; callers grow h by the margin to absorb rounding. */
@@ -37,8 +51,8 @@ static int triangle_box_overlap(const double c[3], const double h[3],
         e[2][a] = v[0][a] - v[2][a];
     }
     for (int a = 0; a < 3; a++) {       /* the box's faces */
-        double low = fmin(v[0][a], fmin(v[1][a], v[2][a]));
-        double high = fmax(v[0][a], fmax(v[1][a], v[2][a]));
+        double low = least3(v[0][a], v[1][a], v[2][a]);
+        double high = greatest3(v[0][a], v[1][a], v[2][a]);
         if (low > h[a] || high < -h[a])
             return 0;
     }
@@ -49,7 +63,7 @@ static int triangle_box_overlap(const double c[3], const double h[3],
             double p1 = cross_axis(e[k], a, v[1]);
             double p2 = cross_axis(e[k], a, v[2]);
             double r = h[i] * fabs(e[k][j]) + h[j] * fabs(e[k][i]);
-            if (fmin(p0, fmin(p1, p2)) > r || fmax(p0, fmax(p1, p2)) < -r)
+            if (least3(p0, p1, p2) > r || greatest3(p0, p1, p2) < -r)
                 return 0;
         }
     double n[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1],     /* the plane */

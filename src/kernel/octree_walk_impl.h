@@ -193,7 +193,10 @@ static double growth_for(const double lo[3], const double hi[3],
     double reach = 0;
     for (int a = 0; a < 3; a++) {
         double o = (double)get(r->origin, a);
-        reach = fmax(reach, fmax(fabs(lo[a] - o), fabs(hi[a] - o)));
+        double below = fabs(lo[a] - o), above = fabs(hi[a] - o);
+        /* comparisons, not libm's fmax: all finite here */
+        reach = below > reach ? below : reach;
+        reach = above > reach ? above : reach;
     }
     double bound = 16 * (double)gamma_bound(8) * reach;
     if (bound <= reach_margin)

@@ -17,6 +17,7 @@
  * once, not per band.
  */
 #include <math.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -168,19 +169,24 @@ static rt_status cancelled(rt_error *error)
                          "the render was cancelled");
 }
 
-/* Builds (once per scene and precision) the octree of the frame's kernel
- * when the render asks for one, polling `cancel` (may be NULL); RT_OK,
+/* Builds (once per scene and precision) the octree or the kd-tree of the
+ * frame's kernel when the render asks for one (the kd-tree on the
+ * render's threads), polling `cancel` (may be NULL); RT_OK,
  * RT_ERR_NOMEM or RT_ERR_CANCELLED (nothing kept: the next render builds
  * it). */
 static rt_status prepare_octree(rt_frame *f, const rt_scene *scene,
-                                rt_accel accel, const rt_cancel *cancel)
+                                const rt_render_options *options,
+                                const rt_cancel *cancel)
 {
+    rt_accel accel = options->accel;
     if (accel == RT_ACCEL_NONE ||
         (accel == RT_ACCEL_AUTO && scene->live_count < RT_ACCEL_AUTO_FACETS))
         return RT_OK;
-    if (accel == RT_ACCEL_KDTREE) {
-        rt_status status = rt__kernel_prepare_kdtree(f->kernel, cancel,
-                                                     &f->octree);
+    if (accel == RT_ACCEL_KDTREE || accel == RT_ACCEL_AUTO) {
+        int threads = thread_count(options->threads, INT_MAX);
+        rt_status status = rt__kernel_prepare_kdtree(
+            f->kernel, cancel, threads > 1 ? rt__scene_workers(scene) : NULL,
+            threads, &f->octree);
         if (status == RT_OK)
             f->settings.kdtree = 1;
         return status;
@@ -232,7 +238,7 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
     if (f->kernel == NULL)
         return rt_cancel_requested(cancel) ? cancelled(error)
                                            : rt__render_out_of_memory(error);
-    status = prepare_octree(f, scene, options->accel, cancel);
+    status = prepare_octree(f, scene, options, cancel);
     if (status == RT_ERR_CANCELLED)
         return cancelled(error);
     if (status != RT_OK)

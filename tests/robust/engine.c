@@ -95,7 +95,7 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
     if (rb_accel() == RT_ACCEL_OCTREE && e->kernel != NULL)
         rt__kernel_prepare_octree(e->kernel, NULL, NULL);
     if (rb_accel() == RT_ACCEL_KDTREE && e->kernel != NULL)
-        rt__kernel_prepare_kdtree(e->kernel, NULL, NULL);
+        rt__kernel_prepare_kdtree(e->kernel, NULL, NULL, 1, NULL);
     return e;
 }
 
