@@ -33,8 +33,8 @@
  * keeps the point from sliding along the facet.  `direction` is the ray's,
  * in the units of t.
  */
-static inline vec hit_point(const tri *f, const hit *h, vec origin, vec direction,
-                     vec *error_bound)
+static inline vec hit_point(const tri *f, const hit *h, vec origin,
+                            vec direction, vec *error_bound)
 {
     if (h->point_error < 0) {
         /* A crossing (intersect_impl.h): t is accurate, the point the
