@@ -15,6 +15,8 @@ refused.
 import re
 import sys
 
+from vectors import cross, dot, scale, sub
+
 
 def numbers(path):
     lines = []
@@ -25,27 +27,6 @@ def numbers(path):
                 lines.append([float(x) for x in re.split(r"[,\s]+", line)
                               if x])
     return lines
-
-
-def sub(a, b):
-    return [a[i] - b[i] for i in range(3)]
-
-
-def add(a, b):
-    return [a[i] + b[i] for i in range(3)]
-
-
-def scale(a, s):
-    return [x * s for x in a]
-
-
-def dot(a, b):
-    return sum(a[i] * b[i] for i in range(3))
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0]]
 
 
 def vec(v):

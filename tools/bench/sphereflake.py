@@ -23,30 +23,7 @@ colour (1, 0.75, 0.33) with k = 0, spheres (1, 0.9, 0.7) with k = 0.5
 import math
 import sys
 
-
-def sub(a, b):
-    return [a[i] - b[i] for i in range(3)]
-
-
-def add(a, b):
-    return [a[i] + b[i] for i in range(3)]
-
-
-def scale(a, s):
-    return [x * s for x in a]
-
-
-def dot(a, b):
-    return sum(a[i] * b[i] for i in range(3))
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0]]
-
-
-def unit(a):
-    return scale(a, 1.0 / math.sqrt(dot(a, a)))
+from vectors import add, cross, dot, scale, sub, unit
 
 
 def rotate(v, axis, angle):
