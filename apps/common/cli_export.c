@@ -159,7 +159,11 @@ int cli_export_load(cli_export *ex, int check_output)
     ex->report = (cli_render_report){
         .program = ex->program->name, .scene = ex->name,
         .format = ex->settings->format, .settings = ex->settings,
-        .load_seconds = cli_seconds_since(start)};
+        .load_seconds = cli_seconds_since(start),
+        .load_peak_bytes = cli_peak_bytes()};
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(ex->scene, &info);
+    ex->report.facet_count = info.facet_count;
     return CLI_CONTINUE;
 }
 
@@ -309,6 +313,7 @@ static int same_file_as(const char *path, int fd)
 static void report(cli_export *ex, const rt_render_stats *stats)
 {
     cli_stats wanted = ex->settings->stats;
+    ex->report.peak_bytes = cli_peak_bytes();
     if (wanted != CLI_STATS_NONE && ex->config.report != NULL)
         ex->config.report(ex->config.user, stderr);
     if (wanted == CLI_STATS_TEXT)

@@ -96,6 +96,11 @@ rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c)
               orient2d_exact(a.x, a.y, b.x, b.y, c.x, c.y));
 }
 
+rt_vec3 rt__facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
+{
+    return v3_normalize(rt__exact_cross(a, b, c));
+}
+
 int rt__triangle_has_area(rt_vec3 a, rt_vec3 b, rt_vec3 c)
 {
     scale(&a, &b, &c);

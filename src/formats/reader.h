@@ -33,6 +33,12 @@ typedef struct rt_reading {
     const rt_load_options *options; /* may be NULL */
     rt_locate_func locate;          /* may be NULL */
     void *user;                     /* for locate */
+    /* May be NULL: frees the description's arrays (and sets the reader's
+     * pointers to them to NULL), called with release_user once the
+     * scene's records are made and before its kernel is built, so that
+     * a big load never holds the description and the kernel at once. */
+    void (*release)(void *release_user);
+    void *release_user;
 } rt_reading;
 
 /*
