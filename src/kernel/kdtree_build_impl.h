@@ -379,6 +379,8 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     s->lo = malloc((n ? n : 1) * sizeof *s->lo);
     s->hi = malloc((n ? n : 1) * sizeof *s->hi);
     s->tris = k->tris;
+    s->traverse = n >= KD_LARGE_FACETS ? KD_COST_TRAVERSE_LARGE
+                                       : KD_COST_TRAVERSE;
     s->sliver = malloc(n ? n : 1);
     double size = 0, box_lo[3], box_hi[3];
     for (int a = 0; a < 3; a++) {

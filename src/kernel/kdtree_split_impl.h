@@ -43,6 +43,7 @@ typedef struct kd_shared {
     const tri *tris;        /* the facets (their vertices: kd_corners) */
     unsigned char *sliver;
     double overlap_margin;  /* the octree's margin, for the overlap test */
+    double traverse;        /* the SAH's K_T for this tree's size */
     int facets;
     int task_facets;        /* nodes at or below it are tasks */
     int cap;                /* the depth cap */
@@ -166,6 +167,7 @@ typedef struct kd_sweep {
     double lo, hi;          /* the cell on the axis */
     double other_sum, other_product;    /* of the other two extents */
     double scale;           /* K_I over the cell's half area */
+    double traverse;        /* K_T (kd_shared) */
     double *cost;
     int *axis;
     float *split;
@@ -184,7 +186,7 @@ static inline void kd_consider(kd_sweep *w, float p, int below, int above)
     double c = (below_area * below + above_area * above) * w->scale;
     if (below == 0 || above == 0)
         c *= KD_EMPTY_BONUS;
-    c += KD_COST_TRAVERSE;
+    c += w->traverse;
     if (c < *w->cost) {
         *w->cost = c;
         *w->axis = w->a;
@@ -219,7 +221,7 @@ static void sweep(kd_builder *b, const int32_t *node_lists, kd_shape sh,
     double d1 = hi[a1] - lo[a1], d2 = hi[a2] - lo[a2], da = hi[a] - lo[a];
     kd_sweep w = {lo[a], hi[a], d1 + d2, d1 * d2,
                   KD_COST_INTERSECT / (da * (d1 + d2) + d1 * d2),
-                  cost, axis, split, a};
+                  b->sh->traverse, cost, axis, split, a};
     int cs = 0, ce = 0, cf = 0;
     if (nf == 0) {
         /* no flat box (the usual case): two lists; every box ends after
