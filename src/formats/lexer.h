@@ -55,6 +55,7 @@ typedef struct rt_lexer {
     const char *eol;            /* RT_LEX_LINES: the end of that line */
     int line;                   /* the line of `at` */
     unsigned flags;
+    unsigned stops;             /* the classes of bytes that end a token */
     int open;                   /* RT_LEX_LINES: inside a statement */
     int continues;              /* the line's last token ended with '\' */
     long tokens;                /* tokens read so far */

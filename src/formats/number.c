@@ -99,23 +99,26 @@ static const double exact_powers[] = {
  * (strtod is asked beyond the fast path's 10^(22 + 15) anyway). */
 #define EXPONENT_CAP 100000
 
-/* Adds the digits from *c on to *w (leading zeros skipped), counting them
- * in *digits and the significant ones in *significant: 0 when more than
- * MAX_FAST_DIGITS are significant. */
-static int sum_digits(const char **c, const char *e, uint64_t *w,
-                      int *digits, int *significant)
+/* Adds the digits from c on to *w, counting them in *digits and in
+ * *leading those before the first that is not 0 (which change nothing):
+ * the digits after them are exact in *w while at most MAX_FAST_DIGITS.
+ * Returns the first byte that is no digit. */
+static const char *sum_digits(const char *c, const char *e, uint64_t *w,
+                              long *digits, long *leading)
 {
-    const char *at = *c;
-    for (; at < e && (unsigned)(*at - '0') < 10; at++) {
-        (*digits)++;
-        if (*w == 0 && *at == '0')
-            continue;
-        if (++*significant > MAX_FAST_DIGITS)
-            return 0;
-        *w = 10 * *w + (uint64_t)(*at - '0');
+    uint64_t sum = *w;
+    const char *first = c;
+    long zeros = 0;
+    unsigned seen = *digits > *leading;     /* a digit other than 0 */
+    for (unsigned d; c < e && (d = (unsigned)(*c - '0')) < 10; c++) {
+        sum = 10 * sum + d;     /* wraps past 19 digits: then unused */
+        seen |= d;
+        zeros += seen == 0;
     }
-    *c = at;
-    return 1;
+    *w = sum;
+    *digits += c - first;
+    *leading += zeros;
+    return c;
 }
 
 int rt__number_fast(const char *text, size_t length, double *value)
@@ -128,17 +131,15 @@ int rt__number_fast(const char *text, size_t length, double *value)
     if (c < e && (*c == '+' || *c == '-'))
         negative = *c++ == '-';
     uint64_t w = 0;
-    int digits = 0, significant = 0;
-    if (!sum_digits(&c, e, &w, &digits, &significant))
-        return 0;
+    long digits = 0, leading = 0;
+    c = sum_digits(c, e, &w, &digits, &leading);
     long q = 0;                 /* the power of ten of w */
     if (c < e && *c == '.') {
-        const char *fraction = ++c;
-        if (!sum_digits(&c, e, &w, &digits, &significant))
-            return 0;
-        q = -(long)(c - fraction);
+        long whole = digits;
+        c = sum_digits(c + 1, e, &w, &digits, &leading);
+        q = whole - digits;
     }
-    if (digits == 0)
+    if (digits == 0 || digits - leading > MAX_FAST_DIGITS)
         return 0;
     if (c < e && (*c == 'e' || *c == 'E')) {
         c++;
