@@ -99,25 +99,22 @@ static const double exact_powers[] = {
  * (strtod is asked beyond the fast path's 10^(22 + 15) anyway). */
 #define EXPONENT_CAP 100000
 
-/* Adds the digits from c on to *w, counting them in *digits and in
- * *leading those before the first that is not 0 (which change nothing):
- * the digits after them are exact in *w while at most MAX_FAST_DIGITS.
- * Returns the first byte that is no digit. */
-static const char *sum_digits(const char *c, const char *e, uint64_t *w,
-                              long *digits, long *leading)
+/* Adds the digits from c on to *w (which wraps past MAX_FAST_DIGITS of
+ * them: the caller then leaves it), the leading zeros first skipped when
+ * `leading` (they change nothing); returns the first byte that is no
+ * digit, and counts the digits added in *significant. */
+static const char *sum_digits(const char *c, const char *e, int leading,
+                              uint64_t *w, long *significant)
 {
-    uint64_t sum = *w;
+    if (leading)
+        while (c < e && *c == '0')
+            c++;
     const char *first = c;
-    long zeros = 0;
-    unsigned seen = *digits > *leading;     /* a digit other than 0 */
-    for (unsigned d; c < e && (d = (unsigned)(*c - '0')) < 10; c++) {
-        sum = 10 * sum + d;     /* wraps past 19 digits: then unused */
-        seen |= d;
-        zeros += seen == 0;
-    }
+    uint64_t sum = *w;
+    for (unsigned d; c < e && (d = (unsigned)(*c - '0')) < 10; c++)
+        sum = 10 * sum + d;
     *w = sum;
-    *digits += c - first;
-    *leading += zeros;
+    *significant += c - first;
     return c;
 }
 
@@ -131,27 +128,30 @@ int rt__number_fast(const char *text, size_t length, double *value)
     if (c < e && (*c == '+' || *c == '-'))
         negative = *c++ == '-';
     uint64_t w = 0;
-    long digits = 0, leading = 0;
-    c = sum_digits(c, e, &w, &digits, &leading);
+    long significant = 0;       /* the digits of w */
+    const char *first = c;
+    c = sum_digits(c, e, 1, &w, &significant);
     long q = 0;                 /* the power of ten of w */
+    int any = c > first;        /* a digit before the exponent */
     if (c < e && *c == '.') {
-        long whole = digits;
-        c = sum_digits(c + 1, e, &w, &digits, &leading);
-        q = whole - digits;
+        const char *fraction = c + 1;
+        c = sum_digits(fraction, e, significant == 0, &w, &significant);
+        q = -(long)(c - fraction);
+        any |= c > fraction;
     }
-    if (digits == 0 || digits - leading > MAX_FAST_DIGITS)
+    if (!any || significant > MAX_FAST_DIGITS)
         return 0;
     if (c < e && (*c == 'e' || *c == 'E')) {
         c++;
         int minus = 0;
         if (c < e && (*c == '+' || *c == '-'))
             minus = *c++ == '-';
-        const char *first = c;
+        const char *digits = c;
         long exponent = 0;
         for (; c < e && (unsigned)(*c - '0') < 10; c++)
             if (exponent < EXPONENT_CAP)
                 exponent = 10 * exponent + (*c - '0');
-        if (c == first)
+        if (c == digits)
             return 0;
         q += minus ? -exponent : exponent;
     }
