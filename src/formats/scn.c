@@ -40,8 +40,8 @@ typedef struct parser {
     long records;           /* records read, for the cancellation poll */
     int record_lines_left;  /* lines with content from the cursor on */
     rt_error *error;
-    /* the current record */
-    rt_token values[MAX_VALUES];
+    /* the current record (and room for a token too many) */
+    rt_token values[MAX_VALUES + 1];
     int value_count;
     int record_line;
 } parser;
@@ -60,34 +60,41 @@ static int is_comma(const rt_token *t)
 /*
  * Reads the next line with content into values[]: values separated by
  * blanks and/or one comma.  Returns RT_OK, or an error; at the end of the
- * input sets value_count to -1.
+ * input sets value_count to -1.  The lexer writes each token straight into
+ * its place (values[MAX_VALUES] takes the one too many, for the message):
+ * a token copied just after the lexer wrote it waits for the store.
  */
 static rt_status next_record(parser *p)
 {
-    rt_token t, comma;
-    if (!rt__lex_statement(&p->lex, &t)) {
+    rt_token *t = &p->values[0];
+    if (!rt__lex_statement(&p->lex, t)) {
         p->value_count = -1;
         return RT_OK;
     }
-    p->record_line = t.line;
+    p->record_line = t->line;
     p->record_lines_left--;
     if (p->records++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options))
         return rt__load_cancel(p->error, p->name);
     p->value_count = 0;
     int comma_allowed = 0;
+    rt_token comma = {NULL, 0, 0, 0};   /* the last comma */
     do {
-        if (is_comma(&t)) {
+        if (is_comma(t)) {
             if (!comma_allowed)
-                return fail_at(p, RT_ERR_SYNTAX, "a number", &t);
+                return fail_at(p, RT_ERR_SYNTAX, "a number", t);
             comma_allowed = 0;
-            comma = t;
-            continue;
+            comma.text = t->text;
+            comma.length = 1;
+            comma.line = t->line;
+            comma.column = t->column;
+        } else {
+            if (p->value_count == MAX_VALUES)
+                return fail_at(p, RT_ERR_SYNTAX, "the end of the line", t);
+            p->value_count++;
+            comma_allowed = 1;
         }
-        if (p->value_count == MAX_VALUES)
-            return fail_at(p, RT_ERR_SYNTAX, "the end of the line", &t);
-        p->values[p->value_count++] = t;
-        comma_allowed = 1;
-    } while (rt__lex_next(&p->lex, &t));
+        t = &p->values[p->value_count];
+    } while (rt__lex_next(&p->lex, t));
     if (!comma_allowed)         /* a trailing comma */
         return fail_at(p, RT_ERR_SYNTAX, "a number after the comma", &comma);
     return RT_OK;

@@ -4,6 +4,16 @@ triangles (2 N^2 facets), as a .scn, for timing builds on a big mesh
 (tools/bench/peers.sh: N = 708 gives 1,002,528 facets).
 
     terrain.py N > terrain.scn
+    terrain.py --obj N > terrain.obj
+    terrain.py --nff N > terrain.nff
+
+--obj writes the same mesh as an OBJ (`v x y z` and `f a b c`, the
+vertices written as in the .scn; the reader makes its own camera and
+light); --nff writes it as NFF in the style of the SPD generators: the
+view of the .scn, its background and light, one `f` material, and each
+facet as a polygon `p 3` with its three vertices on their own lines (an
+NFF polygon shares no vertices, so the file is about twice the .scn).
+tools/bench/parse-rate.sh times the readers on the three.
 
 The heights are a fixed sum of sines over the square [-1, 1]^2 (no
 randomness: the same file every run), at most 0.15; the camera looks down
@@ -21,12 +31,67 @@ def height(x, y):
             0.03 * math.cos(11.0 * x - 5.0 * y))
 
 
+def usage():
+    sys.exit("usage: terrain.py [--obj | --nff] N > terrain.scn")
+
+
+def vertices(n):
+    """The (n + 1)^2 vertices, row by row, as the .scn writes them."""
+    for j in range(n + 1):
+        y = -1 + 2 * j / n
+        yield from (("%.7g" % (-1 + 2 * i / n), "%.7g" % y,
+                     "%.7g" % height(-1 + 2 * i / n, y))
+                    for i in range(n + 1))
+
+
+def facets(n, j):
+    """The 2 n facets of row j, each three 1-based vertex numbers."""
+    for i in range(n):
+        v = j * (n + 1) + i + 1                 # 1-based, lower left
+        yield (v, v + 1, v + n + 2)
+        yield (v, v + n + 2, v + n + 1)
+
+
+def write_obj(out, n):
+    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
+              % (n, n))
+    out.write("".join("v %s %s %s\n" % c for c in vertices(n)))
+    for j in range(n):
+        out.write("".join("f %d %d %d\n" % f for f in facets(n, j)))
+
+
+def write_nff(out, n):
+    points = list(vertices(n))
+    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
+              % (n, n))
+    # the view of the .scn: from O towards the origin, z up, 60 degrees
+    out.write("v\nfrom -1.1 -1.5 1.0\nat 0 0 0\nup 0 0 1\nangle 60\n"
+              "hither 0.01\nresolution 400 400\n")
+    out.write("b %.9g %.9g %.9g\n" % (120 / 255, 160 / 255, 220 / 255))
+    out.write("l 0.5 -3 4\n")
+    out.write("f %.9g %.9g %.9g 1 0 0 0 0\n" % (150 / 255, 170 / 255,
+                                                 120 / 255))
+    for j in range(n):
+        out.write("".join("p 3\n%s %s %s\n%s %s %s\n%s %s %s\n"
+                          % (points[a - 1] + points[b - 1] + points[c - 1])
+                          for a, b, c in facets(n, j)))
+
+
 def main():
-    if len(sys.argv) != 2 or not sys.argv[1].isdigit() or \
-            int(sys.argv[1]) < 1:
-        sys.exit("usage: terrain.py N > terrain.scn")
-    n = int(sys.argv[1])
+    args = sys.argv[1:]
+    kind = "scn"
+    if args and args[0] in ("--obj", "--nff"):
+        kind = args.pop(0)[2:]
+    if len(args) != 1 or not args[0].isdigit() or int(args[0]) < 1:
+        usage()
+    n = int(args[0])
     out = sys.stdout
+    if kind == "obj":
+        write_obj(out, n)
+        return
+    if kind == "nff":
+        write_nff(out, n)
+        return
     out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
               % (n, n))
     out.write("-1.1,-1.5,1.0\n")                # the observer O
@@ -39,19 +104,11 @@ def main():
     b = [a[i] + right[i] / r * math.tan(math.radians(30)) for i in range(3)]
     out.write(",".join("%.9g" % c for c in a + b) + ",400,400\n")
     out.write("%d\n" % ((n + 1) * (n + 1)))
-    for j in range(n + 1):
-        y = -1 + 2 * j / n
-        out.write("".join("%.7g,%.7g,%.7g\n" % (-1 + 2 * i / n, y,
-                                                height(-1 + 2 * i / n, y))
-                          for i in range(n + 1)))
+    out.write("".join("%s,%s,%s\n" % c for c in vertices(n)))
     out.write("%d\n" % (2 * n * n))
     for j in range(n):
-        rows = []
-        for i in range(n):
-            v = j * (n + 1) + i + 1             # 1-based, lower left
-            rows.append("%d,%d,%d,0,150,170,120\n" % (v, v + 1, v + n + 2))
-            rows.append("%d,%d,%d,0,150,170,120\n" % (v, v + n + 2, v + n + 1))
-        out.write("".join(rows))
+        out.write("".join("%d,%d,%d,0,150,170,120\n" % f
+                          for f in facets(n, j)))
     out.write("120,160,220\n")                  # the background
     out.write("0.5,-3,4,255,255,255\n")         # the light
 
