@@ -199,7 +199,9 @@ typedef enum rt_scene_format {
     RT_SCENE_FORMAT_AUTO = 0,   /* from the name's extension */
     RT_SCENE_FORMAT_SCN = 1,    /* the course's .scn (docs/scene-format.md) */
     RT_SCENE_FORMAT_NFF = 2,    /* Eric Haines' Neutral File Format (.nff) */
-    RT_SCENE_FORMAT_OBJ = 3     /* Wavefront OBJ (.obj) with its .mtl */
+    RT_SCENE_FORMAT_OBJ = 3,    /* Wavefront OBJ (.obj) with its .mtl */
+    RT_SCENE_FORMAT_PLY = 4     /* Stanford polygon files (.ply), ASCII or
+                                   binary */
 } rt_scene_format;
 
 /* Largest input a loader reads, in bytes (1 GiB): line and column numbers
@@ -305,14 +307,15 @@ typedef struct rt_load_options {
 RT_API void rt_load_options_init(rt_load_options *options);
 
 /* The format a path's extension names, case-insensitively (.scn, .nff,
- * .obj); RT_ERR_FORMAT for another or none (*format untouched), with a
- * message naming the path in *error (may be NULL).  Thread-safe. */
+ * .obj, .ply); RT_ERR_FORMAT for another or none (*format untouched), with
+ * a message naming the path and listing the formats in *error (may be
+ * NULL).  Thread-safe. */
 RT_API rt_status rt_scene_format_from_path(const char *path,
                                            rt_scene_format *format,
                                            rt_error *error);
 
-/* The lower-case name of a format ("scn", "nff", "obj"; "auto"; "unknown"
- * for a value the enum does not name).  Thread-safe. */
+/* The lower-case name of a format ("scn", "nff", "obj", "ply"; "auto";
+ * "unknown" for a value the enum does not name).  Thread-safe. */
 RT_API const char *rt_scene_format_name(rt_scene_format format);
 
 /*
