@@ -575,7 +575,8 @@ START_TEST(ply_ascii_body_errors_give_their_line_and_column)
         {"0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n", RT_ERR_RANGE,
          "t.ply:13:7: expected a whole number in -2147483648..2147483647 for "
          "the property `vertex_indices` (int) of face 0, found `1.5`"},
-        {"0 0 0\n1 0 0\n0 1 0\n2 0 1\n", RT_ERR_SYNTAX,
+        /* (blanks so that the bytes left can hold the face's claim) */
+        {"0 0 0\n1 0 0\n0 1 0\n2 0 1    \n", RT_ERR_SYNTAX,
          "t.ply:13:1: expected at least 3 vertices for face 0, found `2`"},
         {"0 0 0\n1 0 1e200\n0 1 0\n3 0 1 2\n", RT_ERR_RANGE,
          "t.ply:11:5: expected a coordinate of magnitude at most 1e152 (the "
@@ -752,16 +753,25 @@ START_TEST(an_unknown_extension_is_refused_with_the_formats_listed)
     rt_error error;
     static const char scn[] = "0 0 10\n0 0 5 4 0 5 8 8\n0\n0\n0 0 0\n"
                               "0 0 4 255 255 255\n";
-    ck_assert_int_eq(parse_named(scn, strlen(scn), "scene.txt", NULL, &scene,
-                                 &error),
+    char *dir = rt_test_temp_dir();
+    rt_test_path txt = rt_test_path_at(dir, "scene.txt");
+    rt_test_path bare = rt_test_path_at(dir, "scene");
+    rt_test_write_file(txt.s, scn);
+    rt_test_write_file(bare.s, scn);
+    ck_assert_int_eq(rt_scene_load(txt.s, NULL, &scene, &error),
                      RT_ERR_FORMAT);
-    ck_assert_str_eq(error.message,
-                     "scene.txt: cannot tell the scene format: expected the "
-                     "extension .scn, .nff, .obj or .ply (or give the "
-                     "format: --input-format)");
-    /* no extension: read as .scn, as it always was */
-    ck_assert_int_eq(parse_named(scn, strlen(scn), "scene", NULL, &scene,
-                                 &error),
+    ck_assert_msg(strstr(error.message, "/scene.txt: cannot tell the scene "
+                                        "format: expected the extension "
+                                        ".scn, .nff, .obj or .ply (or give "
+                                        "the format: --input-format)") !=
+                      NULL,
+                  "%s", error.message);
+    /* a file without an extension is read as .scn, as it always was; so is
+     * text in memory whatever its name (a label there) */
+    ck_assert_int_eq(rt_scene_load(bare.s, NULL, &scene, &error), RT_OK);
+    rt_scene_destroy(scene);
+    ck_assert_int_eq(parse_named(scn, strlen(scn), "scene 1.5 (text)", NULL,
+                                 &scene, &error),
                      RT_OK);
     rt_scene_destroy(scene);
     rt_scene_format format;
@@ -769,6 +779,7 @@ START_TEST(an_unknown_extension_is_refused_with_the_formats_listed)
                      RT_OK);
     ck_assert_int_eq(format, RT_SCENE_FORMAT_PLY);
     ck_assert_str_eq(rt_scene_format_name(RT_SCENE_FORMAT_PLY), "ply");
+    rt_test_remove_dir(dir);
 }
 END_TEST
 

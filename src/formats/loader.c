@@ -4,8 +4,9 @@
  * reader shares, the list of files the load reads (resolve.h: the scene
  * file, then those it names, through the options' resolver), and the
  * dispatch to the format's own module (scn.c, nff.c, obj.c, ply.c).  A
- * name whose extension names no format is refused, listing the formats;
- * a name without an extension (standard input, memory) is read as .scn.  Each reader
+ * file whose extension names no format is refused, listing the formats; a
+ * file without one, and text from memory whose name names no format (a
+ * name there is a label), are read as .scn.  Each reader
  * is a client of the scene builder, and ends with rt__reader_finish
  * (reader.c).
  */
@@ -148,10 +149,12 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
 }
 
 /* The format `options` give, or that of `name`'s extension; .scn for a
- * name without one (or none).  RT_ERR_FORMAT for an extension that names
- * no format. */
+ * name without one (or none).  An extension that names no format is
+ * RT_ERR_FORMAT with `strict` (a file's path), .scn without (a name given
+ * to text in memory, which callers use as a label). */
 static rt_status format_of(const char *name, const rt_load_options *options,
-                           rt_scene_format *format, rt_error *error)
+                           int strict, rt_scene_format *format,
+                           rt_error *error)
 {
     *format = options->format;
     if (*format != RT_SCENE_FORMAT_AUTO)
@@ -159,6 +162,11 @@ static rt_status format_of(const char *name, const rt_load_options *options,
     *format = RT_SCENE_FORMAT_SCN;
     if (name == NULL || rt__path_extension(name) == NULL)
         return RT_OK;
+    if (!strict) {
+        /* on failure *format stays .scn */
+        (void)rt_scene_format_from_path(name, format, NULL);
+        return RT_OK;
+    }
     return rt_scene_format_from_path(name, format, error);
 }
 
@@ -176,7 +184,7 @@ static rt_status parse_taken(const char *text, size_t length,
                              name ? name : "<memory>", 0, 0,
                              "the load was cancelled");
     rt_scene_format format;
-    rt_status status = format_of(name, options, &format, error);
+    rt_status status = format_of(name, options, 0, &format, error);
     if (status != RT_OK)
         return status;
     rt_files files;
@@ -243,7 +251,7 @@ rt_status rt_scene_load(const char *path, const rt_load_options *options,
     /* The format first: an unknown extension is not read at all, and
      * a PLY's body is binary (no NUL stops its read). */
     rt_scene_format format;
-    status = format_of(path, &taken, &format, error);
+    status = format_of(path, &taken, 1, &format, error);
     if (status != RT_OK)
         return status;
     char *data;

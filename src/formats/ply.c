@@ -27,56 +27,6 @@
 #include "formats/mesh.h"
 #include "formats/ply.h"
 
-/* Where a remark about faces is first made, and how many there were. */
-typedef struct counted {
-    int count;
-    int line;           /* ASCII: the face's line; binary: 0 */
-    long long face;     /* the face's index */
-} counted;
-
-typedef struct reader {
-    const char *name;
-    rt_error *error;
-    const rt_load_options *options;
-    const char *text;
-    size_t length;
-    ply_header h;
-    rt_notes notes;
-    rt_triangulator triangulator;
-    long long items;            /* read so far, for the cancel poll */
-    /* the model */
-    rt_vec3 *vertices;
-    int vertex_count;
-    unsigned char *colours;     /* 3 a vertex, when the vertices have them */
-    rt_vec3 *normals;           /* when kept (keep_normals): none yet */
-    int keep_normals;           /* issue 30 shades with them; 0 until then */
-    rt_facet_desc *facets;
-    int *facet_lines;           /* ASCII only: each facet's line */
-    int facet_count, facet_capacity;
-    int *polygon;               /* the corners of the face being read */
-    int polygon_capacity;
-    rt_rgb8 face_colour;        /* of the face being read, when faces have
-                                   colours */
-    int line;                   /* ASCII: the line of the item read */
-    counted outcomes[RT_FACE_CROSSING + 1];
-    counted clamped;            /* colours outside their range */
-    /* binary */
-    const unsigned char *at, *end;
-    int swap;                   /* the body's byte order is not ours */
-    /* ASCII */
-    rt_lexer lex;
-    rt_token pending;           /* the first token of the next line */
-    int has_pending;
-    rt_token last;              /* the last value read (ASCII) */
-    size_t last_at;             /* the byte of the last value (binary) */
-} reader;
-
-/* What a value being read is, for messages. */
-typedef struct place {
-    const ply_element *element;
-    const ply_property *property;
-    long long item;
-} place;
 
 static rt_status out_of_memory(reader *r)
 {
@@ -91,206 +41,10 @@ static rt_status poll(reader *r)
     return RT_OK;
 }
 
-static size_t offset(const reader *r)
-{
-    return (size_t)((const char *)r->at - r->text);
-}
-
-static rt_status refuse_value(reader *r, rt_status status, double found,
-                              const char *fmt, ...) RT_PRINTF_LIKE(4, 5);
-
-/* Refuses the last value read: "name:line:column: expected ..., found
- * `token`" (ASCII), "name: byte N: expected ..., found VALUE" (binary). */
-static rt_status refuse_value(reader *r, rt_status status, double found,
-                              const char *fmt, ...)
-{
-    char expected[RT_ERROR_MESSAGE_SIZE];
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(expected, sizeof expected, fmt, args);
-    va_end(args);
-    if (r->h.format == PLY_ASCII)
-        return rt__token_refuse(r->error, status, r->name, &r->last, "%s",
-                                expected);
-    return rt__error_set(r->error, status, r->name, 0, 0,
-                         "byte %zu: expected %s, found %.17g", r->last_at,
-                         expected, found);
-}
-
-/* The bytes of the body left to read. */
-static size_t bytes_left(const reader *r)
-{
-    if (r->h.format != PLY_ASCII)
-        return (size_t)(r->end - r->at);
-    const char *from = r->has_pending ? r->pending.text : r->lex.at;
-    return (size_t)(r->lex.end - from);
-}
-
-/* "the property `y` of vertex 3" */
-static const char *what(const place *w, char *out, size_t size)
-{
-    char property[RT_TOKEN_SHOWN_SIZE], element[RT_TOKEN_SHOWN_SIZE];
-    snprintf(out, size, "the property `%s` (%s) of %s %lld",
-             rt__token_shown(&w->property->name, property),
-             rt__ply_type_name(w->property->count_type != PLY_NONE
-                                   ? w->property->count_type
-                                   : w->property->type),
-             rt__token_shown(&w->element->name, element), w->item);
-    return out;
-}
-
-/* ------------------------------------------------------------ binary */
-
-static uint16_t swap16(uint16_t v)
-{
-    return (uint16_t)(v << 8 | v >> 8);
-}
-
-static uint32_t swap32(uint32_t v)
-{
-    return v << 24 | (v & 0xff00u) << 8 | (v >> 8 & 0xff00u) | v >> 24;
-}
-
-static uint64_t swap64(uint64_t v)
-{
-    return (uint64_t)swap32((uint32_t)v) << 32 | swap32((uint32_t)(v >> 32));
-}
-
-/* The value of `type` at p. */
-static double load(const unsigned char *p, ply_type type, int swap)
-{
-    switch (type) {
-    case PLY_INT8:
-        return (int8_t)p[0];
-    case PLY_UINT8:
-        return p[0];
-    case PLY_INT16:
-    case PLY_UINT16: {
-        uint16_t u;
-        memcpy(&u, p, 2);
-        u = swap ? swap16(u) : u;
-        return type == PLY_INT16 ? (double)(int16_t)u : (double)u;
-    }
-    case PLY_INT32:
-    case PLY_UINT32:
-    case PLY_FLOAT32: {
-        uint32_t u;
-        memcpy(&u, p, 4);
-        u = swap ? swap32(u) : u;
-        if (type == PLY_FLOAT32) {
-            float f;
-            memcpy(&f, &u, 4);
-            return f;
-        }
-        return type == PLY_INT32 ? (double)(int32_t)u : (double)u;
-    }
-    case PLY_FLOAT64: {
-        uint64_t u;
-        memcpy(&u, p, 8);
-        u = swap ? swap64(u) : u;
-        double d;
-        memcpy(&d, &u, 8);
-        return d;
-    }
-    case PLY_NONE:
-        break;
-    }
-    return 0;
-}
-
-static rt_status binary_value(reader *r, ply_type type, const place *w,
-                              double *value)
-{
-    int size = rt__ply_type_size(type);
-    if (r->end - r->at < size) {
-        char shown[RT_ERROR_MESSAGE_SIZE];
-        return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, 0, 0,
-                             "byte %zu: expected %s, found the end of the "
-                             "file", offset(r), what(w, shown, sizeof shown));
-    }
-    *value = load(r->at, type, r->swap);
-    r->last_at = offset(r);
-    r->at += size;
-    return RT_OK;
-}
-
-/* ------------------------------------------------------------- ASCII */
-
-/* The next value of the item's line (the first opens the line). */
-static rt_status ascii_value(reader *r, ply_type type, const place *w,
-                             int first, double *value)
-{
-    rt_token t;
-    char shown[RT_ERROR_MESSAGE_SIZE];
-    int got;
-    if (first && r->has_pending) {
-        t = r->pending, got = 1, r->has_pending = 0;
-    } else {
-        got = first ? rt__lex_statement(&r->lex, &t)
-                    : rt__lex_next(&r->lex, &t);
-    }
-    if (!got) {
-        int line, column;
-        if (first) {
-            rt__lex_end(&r->lex, &line, &column);
-        } else {
-            line = r->last.line;
-            column = r->last.column + (int)r->last.length;
-        }
-        return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, line, column,
-                             "expected %s, found the end of the %s",
-                             what(w, shown, sizeof shown),
-                             first ? "file" : "line");
-    }
-    if (first)
-        r->line = t.line;
-    r->last = t;
-    rt_status status = rt__lex_number(&r->lex, &t, value);
-    if (status != RT_OK)
-        return rt__token_refuse(r->error, status, r->name, &t, "%s for %s",
-                                rt__number_expected(status),
-                                what(w, shown, sizeof shown));
-    if (type != PLY_FLOAT32 && type != PLY_FLOAT64) {
-        static const double low[] = {0, -128, 0, -32768, 0, -2147483648.0,
-                                     0};
-        static const double high[] = {0, 127, 255, 32767, 65535,
-                                      2147483647.0, 4294967295.0};
-        if (*value != floor(*value) || *value < low[type] ||
-            *value > high[type])
-            return refuse_value(r, RT_ERR_RANGE, *value,
-                                "a whole number in %.0f..%.0f for %s",
-                                low[type], high[type],
-                                what(w, shown, sizeof shown));
-    }
-    return RT_OK;
-}
-
-/* The end of an ASCII item's line. */
-static rt_status ascii_line_end(reader *r, const ply_element *e,
-                                long long item)
-{
-    rt_token t;
-    char shown[RT_TOKEN_SHOWN_SIZE];
-    if (rt__lex_next(&r->lex, &t))
-        return rt__token_refuse(r->error, RT_ERR_SYNTAX, r->name, &t,
-                                "the end of the line of %s %lld",
-                                rt__token_shown(&e->name, shown), item);
-    return RT_OK;
-}
-
-/* ---------------------------------------------------------------- items */
-
-static rt_status value(reader *r, ply_type type, const place *w, int first,
-                       double *v)
-{
-    return r->h.format == PLY_ASCII ? ascii_value(r, type, w, first, v)
-                                    : binary_value(r, type, w, v);
-}
-
 /* How many items of element e the bytes left can hold at most. */
 static long long room_for(const reader *r, const ply_element *e)
 {
-    size_t left = bytes_left(r) + 1;
+    size_t left = rt__ply_bytes_left(r) + 1;
     long long least;
     if (r->h.format == PLY_ASCII) {
         least = (long long)(e->properties +
@@ -315,7 +69,7 @@ static rt_status claim(reader *r, const ply_element *e)
                          "expected a count the file can hold, found %lld "
                          "items of `%s` in %zu bytes left of the file",
                          e->count, rt__token_shown(&e->name, shown),
-                         bytes_left(r));
+                         rt__ply_bytes_left(r));
 }
 
 /* A colour value as a byte: integers are 0..255, floating values 0..1. */
@@ -338,19 +92,21 @@ static rt_status skip_list(reader *r, const ply_property *prop,
 {
     char shown[RT_ERROR_MESSAGE_SIZE];
     if (n < 0)
-        return refuse_value(r, RT_ERR_SYNTAX, n, "a count of 0 or more for %s",
-                            what(w, shown, sizeof shown));
+        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n, "a count of 0 or more for %s",
+                            rt__ply_what(w, shown, sizeof shown));
     if (r->h.format != PLY_ASCII) {
         if (n > (double)(r->end - r->at) / rt__ply_type_size(prop->type))
-            return refuse_value(r, RT_ERR_SYNTAX, n,
+            return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
                                 "a count of items the rest of the file holds "
-                                "for %s", what(w, shown, sizeof shown));
+                                "for %s", rt__ply_what(w, shown, sizeof shown));
         r->at += (size_t)n * (size_t)rt__ply_type_size(prop->type);
         return RT_OK;
     }
+    place item = *w;
+    item.in_list = 1;
     for (double i = 0; i < n; i++) {
         double ignored;
-        rt_status status = ascii_value(r, prop->type, w, 0, &ignored);
+        rt_status status = rt__ply_value(r, prop->type, &item, 0, &ignored);
         if (status != RT_OK)
             return status;
     }
@@ -364,7 +120,7 @@ static rt_status vertex(reader *r, const ply_element *e, long long item)
         const ply_property *prop = &r->h.property[e->first + i];
         place w = {e, prop, item};
         double v;
-        rt_status status = value(r, prop->count_type != PLY_NONE
+        rt_status status = rt__ply_value(r, prop->count_type != PLY_NONE
                                         ? prop->count_type
                                         : prop->type,
                                  &w, i == 0, &v);
@@ -378,9 +134,9 @@ static rt_status vertex(reader *r, const ply_element *e, long long item)
              * build */
             if (!(fabs(v) <= RT_MAX_COORDINATE)) {
                 char shown[RT_ERROR_MESSAGE_SIZE];
-                return refuse_value(r, RT_ERR_RANGE, v, "%s for %s",
+                return rt__ply_refuse_value(r, RT_ERR_RANGE, v, "%s for %s",
                                     RT_RULE_COORDINATE,
-                                    what(&w, shown, sizeof shown));
+                                    rt__ply_what(&w, shown, sizeof shown));
             }
             (&p->x)[prop->role - ROLE_X] = v;
             break;
@@ -456,14 +212,14 @@ static rt_status add_facet(void *user, int a, int b, int c)
 static rt_status corners(reader *r, const place *w, double n, int *count)
 {
     ply_type type = w->property->type;
-    double most = (double)bytes_left(r) /
+    double most = (double)rt__ply_bytes_left(r) /
                   (r->h.format == PLY_ASCII ? RT_PLY_ASCII_VALUE_BYTES
                                             : rt__ply_type_size(type));
     if (n < 3)
-        return refuse_value(r, RT_ERR_SYNTAX, n,
+        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
                             "at least 3 vertices for face %lld", w->item);
     if (n > most + 1 || n > INT_MAX / 2)
-        return refuse_value(r, RT_ERR_SYNTAX, n,
+        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
                             "the count of the vertices of face %lld, which "
                             "the rest of the file can hold", w->item);
     if ((int)n > r->polygon_capacity) {
@@ -473,13 +229,15 @@ static rt_status corners(reader *r, const place *w, double n, int *count)
         r->polygon = grown;
         r->polygon_capacity = (int)n;
     }
+    place item = *w;
+    item.in_list = 1;
     for (int i = 0; i < (int)n; i++) {
         double index;
-        rt_status status = value(r, type, w, 0, &index);
+        rt_status status = rt__ply_value(r, type, &item, 0, &index);
         if (status != RT_OK)
             return status;
         if (index < 0 || index >= r->vertex_count)
-            return refuse_value(r, RT_ERR_RANGE, index,
+            return rt__ply_refuse_value(r, RT_ERR_RANGE, index,
                                 "a vertex index in 0..%d for face %lld",
                                 r->vertex_count - 1, w->item);
         r->polygon[i] = (int)index;
@@ -497,7 +255,7 @@ static rt_status face(reader *r, const ply_element *e, long long item)
         place w = {e, prop, item};
         double v;
         int list = prop->count_type != PLY_NONE;
-        rt_status status = value(r, list ? prop->count_type : prop->type, &w,
+        rt_status status = rt__ply_value(r, list ? prop->count_type : prop->type, &w,
                                  i == 0, &v);
         if (status != RT_OK)
             return status;
@@ -511,7 +269,7 @@ static rt_status face(reader *r, const ply_element *e, long long item)
             return status;
     }
     if (r->h.format == PLY_ASCII) {
-        rt_status status = ascii_line_end(r, e, item);
+        rt_status status = rt__ply_line_end(r, e, item);
         if (status != RT_OK)
             return status;
     }
@@ -576,14 +334,14 @@ static rt_status element(reader *r, const ply_element *e)
                 place w = {e, prop, item};
                 double v;
                 int list = prop->count_type != PLY_NONE;
-                status = value(r, list ? prop->count_type : prop->type, &w,
+                status = rt__ply_value(r, list ? prop->count_type : prop->type, &w,
                                i == 0, &v);
                 if (status == RT_OK && list)
                     status = skip_list(r, prop, &w, v);
             }
         if (status == RT_OK && e->kind != KIND_FACE &&
             r->h.format == PLY_ASCII)
-            status = ascii_line_end(r, e, item);
+            status = rt__ply_line_end(r, e, item);
         if (status != RT_OK)
             return status;
     }
@@ -666,7 +424,7 @@ static rt_status read_ply(reader *r, rt_scene **scene)
                           "the lines after the last element are ignored");
     } else if (r->at < r->end) {
         rt__notes_add(&r->notes, r->name, 0, 0, "byte %zu: the %zu bytes "
-                      "after the last element are ignored", offset(r),
+                      "after the last element are ignored", rt__ply_offset(r),
                       (size_t)(r->end - r->at));
     }
     say(r);

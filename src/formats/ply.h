@@ -1,8 +1,8 @@
 /*
  * ply.h - what the PLY reader's files share (internal): the header as
  * read (ply_header.c: the format, the elements and their properties, each
- * property's part in the model) and the reader's state (ply.c: the body,
- * ASCII or binary, into the mesh).  What is read and why: docs/formats.md,
+ * property's part in the model), the reader's state (ply.c: the body,
+ * ASCII or binary, into the mesh) and its values (ply_values.c).  What is read and why: docs/formats.md,
  * section PLY; the budgets: docs/robustness-input.md.
  */
 #ifndef RAYTRACE_PLY_H
@@ -12,6 +12,7 @@
 
 #include "base/error.h"
 #include "formats/lexer.h"
+#include "formats/mesh.h"
 #include "formats/reader.h"
 #include "formats/triangulate.h"
 #include "raytrace/scene.h"
@@ -114,5 +115,82 @@ rt_status rt__ply_header_read(const char *text, size_t length,
                               const char *name, ply_header *h,
                               rt_notes *notes, rt_error *error);
 void rt__ply_header_free(ply_header *h);
+
+/* ---------------------------------------------------------------- reader
+ * ply.c's state, which ply_values.c reads values for. */
+
+/* Where a remark about faces is first made, and how many there were. */
+typedef struct counted {
+    int count;
+    int line;           /* ASCII: the face's line; binary: 0 */
+    long long face;     /* the face's index */
+} counted;
+
+typedef struct reader {
+    const char *name;
+    rt_error *error;
+    const rt_load_options *options;
+    const char *text;
+    size_t length;
+    ply_header h;
+    rt_notes notes;
+    rt_triangulator triangulator;
+    long long items;            /* read so far, for the cancel poll */
+    /* the model */
+    rt_vec3 *vertices;
+    int vertex_count;
+    unsigned char *colours;     /* 3 a vertex, when the vertices have them */
+    rt_vec3 *normals;           /* when kept (keep_normals): none yet */
+    int keep_normals;           /* issue 30 shades with them; 0 until then */
+    rt_facet_desc *facets;
+    int *facet_lines;           /* ASCII only: each facet's line */
+    int facet_count, facet_capacity;
+    int *polygon;               /* the corners of the face being read */
+    int polygon_capacity;
+    rt_rgb8 face_colour;        /* of the face being read, when faces have
+                                   colours */
+    int line;                   /* ASCII: the line of the item read */
+    counted outcomes[RT_FACE_CROSSING + 1];
+    counted clamped;            /* colours outside their range */
+    /* binary */
+    const unsigned char *at, *end;
+    int swap;                   /* the body's byte order is not ours */
+    /* ASCII */
+    rt_lexer lex;
+    rt_token pending;           /* the first token of the next line */
+    int has_pending;
+    rt_token last;              /* the last value read (ASCII) */
+    size_t last_at;             /* the byte of the last value (binary) */
+} reader;
+
+/* What a value being read is, for messages. */
+typedef struct place {
+    const ply_element *element;
+    const ply_property *property;
+    long long item;
+    int in_list;        /* the value is one of a list's items */
+} place;
+
+/* The next value, of `type`, at the place `w` names: binary, the next
+ * bytes; ASCII, the next token of the item's line (`first`: the first of a
+ * new line).  RT_OK, or the refusal: the end of the file (or line), no
+ * number, not a whole number in the type's range. */
+rt_status rt__ply_value(reader *r, ply_type type, const place *w, int first,
+                        double *value);
+
+/* ASCII: refuses a token left on the line of item `item` of `e`. */
+rt_status rt__ply_line_end(reader *r, const ply_element *e, long long item);
+
+/* Refuses the last value read: "name:line:column: expected ..., found
+ * `token`" (ASCII), "name: byte N: expected ..., found VALUE" (binary). */
+rt_status rt__ply_refuse_value(reader *r, rt_status status, double found,
+                               const char *fmt, ...) RT_PRINTF_LIKE(4, 5);
+
+/* The bytes of the body left to read; the byte the cursor is at. */
+size_t rt__ply_bytes_left(const reader *r);
+size_t rt__ply_offset(const reader *r);
+
+/* "the property `y` (float) of vertex 3", into out[size]. */
+const char *rt__ply_what(const place *w, char *out, size_t size);
 
 #endif /* RAYTRACE_PLY_H */
