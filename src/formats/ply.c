@@ -164,6 +164,47 @@ static rt_status vertex(reader *r, const ply_element *e, long long item)
     return RT_OK;
 }
 
+/*
+ * Binary vertices without lists, the common case at speed: each a record
+ * of e->record bytes (the claim, checked, holds them all), the values of
+ * the roles at fixed offsets in it.  An item with a coordinate out of range
+ * is read again by vertex(), which names it.
+ */
+static rt_status binary_vertices(reader *r, const ply_element *e)
+{
+    int at[ROLE_CORNERS + 1] = {0}, size = 0;
+    ply_type type[ROLE_CORNERS + 1] = {PLY_NONE};
+    for (int i = 0; i < e->properties; i++) {
+        const ply_property *prop = &r->h.property[e->first + i];
+        at[prop->role] = size;
+        type[prop->role] = prop->type;
+        size += rt__ply_type_size(prop->type);
+    }
+    int colours = r->colours != NULL, normals = r->normals != NULL;
+    for (long long i = 0; i < e->count; i++, r->at += size) {
+        rt_status status = poll(r);
+        if (status != RT_OK)
+            return status;
+        const unsigned char *p = r->at;
+        double x = ply_load(p + at[ROLE_X], type[ROLE_X], r->swap);
+        double y = ply_load(p + at[ROLE_Y], type[ROLE_Y], r->swap);
+        double z = ply_load(p + at[ROLE_Z], type[ROLE_Z], r->swap);
+        if (!(fabs(x) <= RT_MAX_COORDINATE) ||
+            !(fabs(y) <= RT_MAX_COORDINATE) ||
+            !(fabs(z) <= RT_MAX_COORDINATE))
+            return vertex(r, e, i);
+        r->vertices[i] = (rt_vec3){x, y, z};
+        for (int c = 0; c < 3 && colours; c++)
+            r->colours[3 * i + c] = colour_byte(
+                r, type[ROLE_RED + c],
+                ply_load(p + at[ROLE_RED + c], type[ROLE_RED + c], r->swap));
+        for (int c = 0; c < 3 && normals; c++)
+            (&r->normals[i].x)[c] =
+                ply_load(p + at[ROLE_NX + c], type[ROLE_NX + c], r->swap);
+    }
+    return RT_OK;
+}
+
 /* Adds the facet (a, b, c) of the face being read. */
 static rt_status add_facet(void *user, int a, int b, int c)
 {
@@ -188,7 +229,7 @@ static rt_status add_facet(void *user, int a, int b, int c)
         r->facet_capacity = bigger;
     }
     rt_facet_desc *f = &r->facets[r->facet_count];
-    rt__mesh_default_look(f);
+    *f = r->look;
     if (r->h.face_colours) {
         f->color = r->face_colour;
     } else if (r->colours != NULL) {
@@ -217,11 +258,15 @@ static rt_status corners(reader *r, const place *w, double n, int *count)
                                             : rt__ply_type_size(type));
     if (n < 3)
         return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
-                            "at least 3 vertices for face %lld", w->item);
-    if (n > most + 1 || n > INT_MAX / 2)
+                                    "at least 3 vertices for face %lld",
+                                    w->item);
+    /* binary: the bytes must hold every index (they are then read
+     * unchecked); ASCII: the last value may end the file */
+    if (n > (r->h.format == PLY_ASCII ? most + 1 : most) || n > INT_MAX / 2)
         return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
-                            "the count of the vertices of face %lld, which "
-                            "the rest of the file can hold", w->item);
+                                    "the count of the vertices of face "
+                                    "%lld, which the rest of the file can "
+                                    "hold", w->item);
     if ((int)n > r->polygon_capacity) {
         int *grown = realloc(r->polygon, (size_t)n * sizeof *grown);
         if (grown == NULL)
@@ -231,15 +276,24 @@ static rt_status corners(reader *r, const place *w, double n, int *count)
     }
     place item = *w;
     item.in_list = 1;
+    int size = rt__ply_type_size(type);
     for (int i = 0; i < (int)n; i++) {
         double index;
-        rt_status status = rt__ply_value(r, type, &item, 0, &index);
-        if (status != RT_OK)
-            return status;
+        if (r->h.format != PLY_ASCII) {
+            /* the bytes are there: n is within what is left */
+            index = ply_load(r->at, type, r->swap);
+            r->last_at = rt__ply_offset(r);
+            r->at += size;
+        } else {
+            rt_status status = rt__ply_value(r, type, &item, 0, &index);
+            if (status != RT_OK)
+                return status;
+        }
         if (index < 0 || index >= r->vertex_count)
             return rt__ply_refuse_value(r, RT_ERR_RANGE, index,
-                                "a vertex index in 0..%d for face %lld",
-                                r->vertex_count - 1, w->item);
+                                        "a vertex index in 0..%d for face "
+                                        "%lld", r->vertex_count - 1,
+                                        w->item);
         r->polygon[i] = (int)index;
     }
     *count = (int)n;
@@ -322,6 +376,8 @@ static rt_status element(reader *r, const ply_element *e)
     }
     if (e->properties == 0)
         return RT_OK;       /* an item of nothing takes no byte */
+    if (e->kind == KIND_VERTEX && e->lists == 0 && r->h.format != PLY_ASCII)
+        return binary_vertices(r, e);
     for (long long item = 0; item < e->count; item++) {
         status = poll(r);
         if (status == RT_OK && e->kind == KIND_VERTEX)
@@ -463,6 +519,7 @@ rt_status rt__ply_parse(const char *text, size_t length, const char *name,
     r.options = options;
     r.text = text;
     r.length = length;
+    rt__mesh_default_look(&r.look);
     double budget = RT_TRI_WORK_FLOOR + (double)RT_TRI_WORK_PER_BYTE * length;
     rt__tri_init(&r.triangulator, budget, options->cancel);
     rt_status status = read_ply(&r, scene);

@@ -9,6 +9,8 @@
 #define RAYTRACE_PLY_H
 
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "base/error.h"
 #include "formats/lexer.h"
@@ -98,6 +100,66 @@ typedef struct ply_header {
     int face_colours;           /* the faces have red, green, blue */
 } ply_header;
 
+static inline uint16_t ply_swap16(uint16_t v)
+{
+    return (uint16_t)(v << 8 | v >> 8);
+}
+
+static inline uint32_t ply_swap32(uint32_t v)
+{
+    return v << 24 | (v & 0xff00u) << 8 | (v >> 8 & 0xff00u) | v >> 24;
+}
+
+static inline uint64_t ply_swap64(uint64_t v)
+{
+    return (uint64_t)ply_swap32((uint32_t)v) << 32 |
+           ply_swap32((uint32_t)(v >> 32));
+}
+
+/* The value of `type` at p, its bytes swapped when `swap` (the body's
+ * byte order is not the machine's): one memcpy, no alignment needed. */
+static inline double ply_load(const unsigned char *p, ply_type type,
+                              int swap)
+{
+    switch (type) {
+    case PLY_INT8:
+        return (int8_t)p[0];
+    case PLY_UINT8:
+        return p[0];
+    case PLY_INT16:
+    case PLY_UINT16: {
+        uint16_t u;
+        memcpy(&u, p, 2);
+        u = swap ? ply_swap16(u) : u;
+        return type == PLY_INT16 ? (double)(int16_t)u : (double)u;
+    }
+    case PLY_INT32:
+    case PLY_UINT32:
+    case PLY_FLOAT32: {
+        uint32_t u;
+        memcpy(&u, p, 4);
+        u = swap ? ply_swap32(u) : u;
+        if (type == PLY_FLOAT32) {
+            float f;
+            memcpy(&f, &u, 4);
+            return f;
+        }
+        return type == PLY_INT32 ? (double)(int32_t)u : (double)u;
+    }
+    case PLY_FLOAT64: {
+        uint64_t u;
+        memcpy(&u, p, 8);
+        u = swap ? ply_swap64(u) : u;
+        double d;
+        memcpy(&d, &u, 8);
+        return d;
+    }
+    case PLY_NONE:
+        break;
+    }
+    return 0;
+}
+
 /* The size in bytes of a value of `type`. */
 int rt__ply_type_size(ply_type type);
 
@@ -147,6 +209,7 @@ typedef struct reader {
     int facet_count, facet_capacity;
     int *polygon;               /* the corners of the face being read */
     int polygon_capacity;
+    rt_facet_desc look;         /* the default material */
     rt_rgb8 face_colour;        /* of the face being read, when faces have
                                    colours */
     int line;                   /* ASCII: the line of the item read */

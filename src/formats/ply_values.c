@@ -62,63 +62,6 @@ const char *rt__ply_what(const place *w, char *out, size_t size)
 
 /* ------------------------------------------------------------ binary */
 
-static uint16_t swap16(uint16_t v)
-{
-    return (uint16_t)(v << 8 | v >> 8);
-}
-
-static uint32_t swap32(uint32_t v)
-{
-    return v << 24 | (v & 0xff00u) << 8 | (v >> 8 & 0xff00u) | v >> 24;
-}
-
-static uint64_t swap64(uint64_t v)
-{
-    return (uint64_t)swap32((uint32_t)v) << 32 | swap32((uint32_t)(v >> 32));
-}
-
-/* The value of `type` at p. */
-static double load(const unsigned char *p, ply_type type, int swap)
-{
-    switch (type) {
-    case PLY_INT8:
-        return (int8_t)p[0];
-    case PLY_UINT8:
-        return p[0];
-    case PLY_INT16:
-    case PLY_UINT16: {
-        uint16_t u;
-        memcpy(&u, p, 2);
-        u = swap ? swap16(u) : u;
-        return type == PLY_INT16 ? (double)(int16_t)u : (double)u;
-    }
-    case PLY_INT32:
-    case PLY_UINT32:
-    case PLY_FLOAT32: {
-        uint32_t u;
-        memcpy(&u, p, 4);
-        u = swap ? swap32(u) : u;
-        if (type == PLY_FLOAT32) {
-            float f;
-            memcpy(&f, &u, 4);
-            return f;
-        }
-        return type == PLY_INT32 ? (double)(int32_t)u : (double)u;
-    }
-    case PLY_FLOAT64: {
-        uint64_t u;
-        memcpy(&u, p, 8);
-        u = swap ? swap64(u) : u;
-        double d;
-        memcpy(&d, &u, 8);
-        return d;
-    }
-    case PLY_NONE:
-        break;
-    }
-    return 0;
-}
-
 static rt_status binary_value(reader *r, ply_type type, const place *w,
                               double *value)
 {
@@ -129,7 +72,7 @@ static rt_status binary_value(reader *r, ply_type type, const place *w,
                              "byte %zu: expected %s, found the end of the "
                              "file", rt__ply_offset(r), rt__ply_what(w, shown, sizeof shown));
     }
-    *value = load(r->at, type, r->swap);
+    *value = ply_load(r->at, type, r->swap);
     r->last_at = rt__ply_offset(r);
     r->at += size;
     return RT_OK;
