@@ -27,7 +27,6 @@
 #include "formats/mesh.h"
 #include "formats/ply.h"
 
-
 static rt_status out_of_memory(reader *r)
 {
     return rt__error_set(r->error, RT_ERR_NOMEM, r->name, 0, 0,
@@ -44,11 +43,11 @@ static rt_status poll(reader *r)
 /* How many items of element e the bytes left can hold at most. */
 static long long room_for(const reader *r, const ply_element *e)
 {
-    size_t left = rt__ply_bytes_left(r) + 1;
+    /* ASCII: the last value needs no separator after it */
+    size_t left = rt__ply_bytes_left(r) + (r->h.format == PLY_ASCII);
     long long least;
     if (r->h.format == PLY_ASCII) {
-        least = (long long)(e->properties +
-                            (e->kind == KIND_FACE ? 3 : 0)) *
+        least = (long long)(e->properties + (e->kind == KIND_FACE ? 3 : 0)) *
                 RT_PLY_ASCII_VALUE_BYTES;
     } else {
         least = e->record;
@@ -64,12 +63,11 @@ static rt_status claim(reader *r, const ply_element *e)
     if (e->count <= room_for(r, e))
         return RT_OK;
     char shown[RT_TOKEN_SHOWN_SIZE];
-    return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, e->name.line,
-                         e->name.column,
-                         "expected a count the file can hold, found %lld "
-                         "items of `%s` in %zu bytes left of the file",
-                         e->count, rt__token_shown(&e->name, shown),
-                         rt__ply_bytes_left(r));
+    return rt__error_set(
+        r->error, RT_ERR_SYNTAX, r->name, e->name.line, e->name.column,
+        "expected a count the file can hold, found %lld "
+        "items of `%s` in %zu bytes left of the file",
+        e->count, rt__token_shown(&e->name, shown), rt__ply_bytes_left(r));
 }
 
 /* A colour value as a byte: integers are 0..255, floating values 0..1. */
@@ -87,18 +85,21 @@ static unsigned char colour_byte(reader *r, ply_type type, double v)
 }
 
 /* Skips a list (its count read as `n`) of `type` items. */
-static rt_status skip_list(reader *r, const ply_property *prop,
-                           const place *w, double n)
+static rt_status skip_list(reader *r, const ply_property *prop, const place *w,
+                           double n)
 {
     char shown[RT_ERROR_MESSAGE_SIZE];
     if (n < 0)
-        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n, "a count of 0 or more for %s",
-                            rt__ply_what(w, shown, sizeof shown));
+        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
+                                    "a count of 0 or more for %s",
+                                    rt__ply_what(w, shown, sizeof shown));
     if (r->h.format != PLY_ASCII) {
         if (n > (double)(r->end - r->at) / rt__ply_type_size(prop->type))
-            return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
-                                "a count of items the rest of the file holds "
-                                "for %s", rt__ply_what(w, shown, sizeof shown));
+            return rt__ply_refuse_value(
+                r, RT_ERR_SYNTAX, n,
+                "a count of items the rest of the file holds "
+                "for %s",
+                rt__ply_what(w, shown, sizeof shown));
         r->at += (size_t)n * (size_t)rt__ply_type_size(prop->type);
         return RT_OK;
     }
@@ -120,10 +121,9 @@ static rt_status vertex(reader *r, const ply_element *e, long long item)
         const ply_property *prop = &r->h.property[e->first + i];
         place w = {e, prop, item};
         double v;
-        rt_status status = rt__ply_value(r, prop->count_type != PLY_NONE
-                                        ? prop->count_type
-                                        : prop->type,
-                                 &w, i == 0, &v);
+        rt_status status = rt__ply_value(
+            r, prop->count_type != PLY_NONE ? prop->count_type : prop->type,
+            &w, i == 0, &v);
         if (status != RT_OK)
             return status;
         switch (prop->role) {
@@ -134,9 +134,9 @@ static rt_status vertex(reader *r, const ply_element *e, long long item)
              * build */
             if (!(fabs(v) <= RT_MAX_COORDINATE)) {
                 char shown[RT_ERROR_MESSAGE_SIZE];
-                return rt__ply_refuse_value(r, RT_ERR_RANGE, v, "%s for %s",
-                                    RT_RULE_COORDINATE,
-                                    rt__ply_what(&w, shown, sizeof shown));
+                return rt__ply_refuse_value(
+                    r, RT_ERR_RANGE, v, "%s for %s", RT_RULE_COORDINATE,
+                    rt__ply_what(&w, shown, sizeof shown));
             }
             (&p->x)[prop->role - ROLE_X] = v;
             break;
@@ -190,8 +190,7 @@ static rt_status binary_vertices(reader *r, const ply_element *e)
         double y = ply_load(p + at[ROLE_Y], type[ROLE_Y], r->swap);
         double z = ply_load(p + at[ROLE_Z], type[ROLE_Z], r->swap);
         if (!(fabs(x) <= RT_MAX_COORDINATE) ||
-            !(fabs(y) <= RT_MAX_COORDINATE) ||
-            !(fabs(z) <= RT_MAX_COORDINATE))
+            !(fabs(y) <= RT_MAX_COORDINATE) || !(fabs(z) <= RT_MAX_COORDINATE))
             return vertex(r, e, i);
         r->vertices[i] = (rt_vec3){x, y, z};
         for (int c = 0; c < 3 && colours; c++)
@@ -214,14 +213,14 @@ static rt_status add_facet(void *user, int a, int b, int c)
             return rt__error_set(r->error, RT_ERR_LIMIT, r->name, 0, 0,
                                  "expected at most %d facets", INT_MAX / 2);
         int bigger = r->facet_capacity ? 2 * r->facet_capacity : 64;
-        rt_facet_desc *grown = realloc(r->facets,
-                                       (size_t)bigger * sizeof *grown);
+        rt_facet_desc *grown =
+            realloc(r->facets, (size_t)bigger * sizeof *grown);
         if (grown == NULL)
             return out_of_memory(r);
         r->facets = grown;
         if (r->h.format == PLY_ASCII) {
-            int *lines = realloc(r->facet_lines,
-                                 (size_t)bigger * sizeof *lines);
+            int *lines =
+                realloc(r->facet_lines, (size_t)bigger * sizeof *lines);
             if (lines == NULL)
                 return out_of_memory(r);
             r->facet_lines = lines;
@@ -257,16 +256,16 @@ static rt_status corners(reader *r, const place *w, double n, int *count)
                   (r->h.format == PLY_ASCII ? RT_PLY_ASCII_VALUE_BYTES
                                             : rt__ply_type_size(type));
     if (n < 3)
-        return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
-                                    "at least 3 vertices for face %lld",
-                                    w->item);
+        return rt__ply_refuse_value(
+            r, RT_ERR_SYNTAX, n, "at least 3 vertices for face %lld", w->item);
     /* binary: the bytes must hold every index (they are then read
      * unchecked); ASCII: the last value may end the file */
     if (n > (r->h.format == PLY_ASCII ? most + 1 : most) || n > INT_MAX / 2)
         return rt__ply_refuse_value(r, RT_ERR_SYNTAX, n,
                                     "the count of the vertices of face "
                                     "%lld, which the rest of the file can "
-                                    "hold", w->item);
+                                    "hold",
+                                    w->item);
     if ((int)n > r->polygon_capacity) {
         int *grown = realloc(r->polygon, (size_t)n * sizeof *grown);
         if (grown == NULL)
@@ -292,8 +291,8 @@ static rt_status corners(reader *r, const place *w, double n, int *count)
         if (index < 0 || index >= r->vertex_count)
             return rt__ply_refuse_value(r, RT_ERR_RANGE, index,
                                         "a vertex index in 0..%d for face "
-                                        "%lld", r->vertex_count - 1,
-                                        w->item);
+                                        "%lld",
+                                        r->vertex_count - 1, w->item);
         r->polygon[i] = (int)index;
     }
     *count = (int)n;
@@ -309,8 +308,8 @@ static rt_status face(reader *r, const ply_element *e, long long item)
         place w = {e, prop, item};
         double v;
         int list = prop->count_type != PLY_NONE;
-        rt_status status = rt__ply_value(r, list ? prop->count_type : prop->type, &w,
-                                 i == 0, &v);
+        rt_status status = rt__ply_value(
+            r, list ? prop->count_type : prop->type, &w, i == 0, &v);
         if (status != RT_OK)
             return status;
         if (prop->role == ROLE_CORNERS)
@@ -329,8 +328,8 @@ static rt_status face(reader *r, const ply_element *e, long long item)
     }
     r->face_colour = (rt_rgb8){rgb[0], rgb[1], rgb[2]};
     rt_face_outcome outcome;
-    rt_status status = rt__mesh_face(&r->triangulator, r->vertices,
-                                     r->polygon, n, add_facet, r, &outcome);
+    rt_status status = rt__mesh_face(&r->triangulator, r->vertices, r->polygon,
+                                     n, add_facet, r, &outcome);
     if (status == RT_ERR_NOMEM)
         return out_of_memory(r);
     if (status == RT_ERR_CANCELLED)
@@ -364,8 +363,7 @@ static rt_status element(reader *r, const ply_element *e)
         r->facet_capacity = (int)e->count;
         r->facets = malloc((size_t)e->count * sizeof *r->facets);
         if (r->h.format == PLY_ASCII)
-            r->facet_lines = malloc((size_t)e->count *
-                                    sizeof *r->facet_lines);
+            r->facet_lines = malloc((size_t)e->count * sizeof *r->facet_lines);
         if (r->facets == NULL ||
             (r->h.format == PLY_ASCII && r->facet_lines == NULL))
             return out_of_memory(r);
@@ -375,7 +373,7 @@ static rt_status element(reader *r, const ply_element *e)
         return RT_OK;
     }
     if (e->properties == 0)
-        return RT_OK;       /* an item of nothing takes no byte */
+        return RT_OK; /* an item of nothing takes no byte */
     if (e->kind == KIND_VERTEX && e->lists == 0 && r->h.format != PLY_ASCII)
         return binary_vertices(r, e);
     for (long long item = 0; item < e->count; item++) {
@@ -390,8 +388,8 @@ static rt_status element(reader *r, const ply_element *e)
                 place w = {e, prop, item};
                 double v;
                 int list = prop->count_type != PLY_NONE;
-                status = rt__ply_value(r, list ? prop->count_type : prop->type, &w,
-                               i == 0, &v);
+                status = rt__ply_value(r, list ? prop->count_type : prop->type,
+                                       &w, i == 0, &v);
                 if (status == RT_OK && list)
                     status = skip_list(r, prop, &w, v);
             }
@@ -439,8 +437,8 @@ static void say(reader *r)
         const counted *c = &r->outcomes[i];
         if (c->count == 0)
             continue;
-        const char *text = rt__mesh_face_remark((rt_face_outcome)i, words,
-                                                sizeof words);
+        const char *text =
+            rt__mesh_face_remark((rt_face_outcome)i, words, sizeof words);
         char more[64] = "";
         if (c->count > 1)
             snprintf(more, sizeof more, " (and %d more like it)",
@@ -461,8 +459,8 @@ static void say(reader *r)
 
 static rt_status read_ply(reader *r, rt_scene **scene)
 {
-    rt_status status = rt__ply_header_read(r->text, r->length, r->name,
-                                           &r->h, &r->notes, r->error);
+    rt_status status = rt__ply_header_read(r->text, r->length, r->name, &r->h,
+                                           &r->notes, r->error);
     if (status == RT_OK)
         status = open_body(r);
     for (int i = 0; status == RT_OK && i < r->h.element_count; i++)
@@ -470,8 +468,8 @@ static rt_status read_ply(reader *r, rt_scene **scene)
     if (status != RT_OK)
         return status;
     if (r->h.format == PLY_ASCII && r->has_pending) {
-        rt__notes_add(&r->notes, r->name, r->pending.line,
-                      r->pending.column, "the lines after the last element "
+        rt__notes_add(&r->notes, r->name, r->pending.line, r->pending.column,
+                      "the lines after the last element "
                       "are ignored");
     } else if (r->h.format == PLY_ASCII) {
         rt_token t;
@@ -479,9 +477,10 @@ static rt_status read_ply(reader *r, rt_scene **scene)
             rt__notes_add(&r->notes, r->name, t.line, t.column,
                           "the lines after the last element are ignored");
     } else if (r->at < r->end) {
-        rt__notes_add(&r->notes, r->name, 0, 0, "byte %zu: the %zu bytes "
-                      "after the last element are ignored", rt__ply_offset(r),
-                      (size_t)(r->end - r->at));
+        rt__notes_add(&r->notes, r->name, 0, 0,
+                      "byte %zu: the %zu bytes "
+                      "after the last element are ignored",
+                      rt__ply_offset(r), (size_t)(r->end - r->at));
     }
     say(r);
     if (r->notes.failed)
@@ -489,17 +488,17 @@ static rt_status read_ply(reader *r, rt_scene **scene)
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     rt_light light;
-    status = rt__mesh_auto_view(r->name, r->vertices, r->vertex_count,
-                                r->facets, r->facet_count, r->options, &d,
-                                &light, r->error);
+    status =
+        rt__mesh_auto_view(r->name, r->vertices, r->vertex_count, r->facets,
+                           r->facet_count, r->options, &d, &light, r->error);
     if (status != RT_OK)
         return status;
     d.vertices = r->vertices;
     d.vertex_count = r->vertex_count;
     d.facets = r->facets;
     d.facet_count = r->facet_count;
-    rt_reading reading = {r->name, r->facet_lines, &r->notes, r->options,
-                          NULL, NULL};
+    rt_reading reading = {r->name,    r->facet_lines, &r->notes,
+                          r->options, NULL,           NULL};
     return rt__reader_finish(&d, &reading, scene, r->error);
 }
 

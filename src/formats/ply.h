@@ -2,8 +2,9 @@
  * ply.h - what the PLY reader's files share (internal): the header as
  * read (ply_header.c: the format, the elements and their properties, each
  * property's part in the model), the reader's state (ply.c: the body,
- * ASCII or binary, into the mesh) and its values (ply_values.c).  What is read and why: docs/formats.md,
- * section PLY; the budgets: docs/robustness-input.md.
+ * ASCII or binary, into the mesh) and its values (ply_values.c).  What is
+ * read and why: docs/formats.md, section PLY; the budgets:
+ * docs/robustness-input.md.
  */
 #ifndef RAYTRACE_PLY_H
 #define RAYTRACE_PLY_H

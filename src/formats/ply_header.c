@@ -24,15 +24,15 @@ static const struct {
     const char *name;
     ply_type type;
 } type_names[] = {
-    {"char", PLY_INT8},     {"uchar", PLY_UINT8},   {"short", PLY_INT16},
-    {"ushort", PLY_UINT16}, {"int", PLY_INT32},     {"uint", PLY_UINT32},
-    {"float", PLY_FLOAT32}, {"double", PLY_FLOAT64}, {"int8", PLY_INT8},
-    {"uint8", PLY_UINT8},   {"int16", PLY_INT16},   {"uint16", PLY_UINT16},
-    {"int32", PLY_INT32},   {"uint32", PLY_UINT32}, {"float32", PLY_FLOAT32},
+    {"char", PLY_INT8},      {"uchar", PLY_UINT8},    {"short", PLY_INT16},
+    {"ushort", PLY_UINT16},  {"int", PLY_INT32},      {"uint", PLY_UINT32},
+    {"float", PLY_FLOAT32},  {"double", PLY_FLOAT64}, {"int8", PLY_INT8},
+    {"uint8", PLY_UINT8},    {"int16", PLY_INT16},    {"uint16", PLY_UINT16},
+    {"int32", PLY_INT32},    {"uint32", PLY_UINT32},  {"float32", PLY_FLOAT32},
     {"float64", PLY_FLOAT64}};
 
-#define TYPE_LIST                                                            \
-    "char, uchar, short, ushort, int, uint, float, double, int8, uint8, "   \
+#define TYPE_LIST                                                             \
+    "char, uchar, short, ushort, int, uint, float, double, int8, uint8, "     \
     "int16, uint16, int32, uint32, float32 or float64"
 
 int rt__ply_type_size(ply_type type)
@@ -43,9 +43,9 @@ int rt__ply_type_size(ply_type type)
 
 const char *rt__ply_type_name(ply_type type)
 {
-    static const char *const names[] = {"none",   "char",  "uchar",
-                                        "short",  "ushort", "int",
-                                        "uint",   "float", "double"};
+    static const char *const names[] = {"none",  "char",   "uchar",
+                                        "short", "ushort", "int",
+                                        "uint",  "float",  "double"};
     return names[type];
 }
 
@@ -90,8 +90,10 @@ static void read_words(parser *p, const rt_token *first, words *out)
 static rt_status line_ends(parser *p, const words *w, const char *what)
 {
     return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, w->end_line,
-                         w->end_column, "expected %s, found the end of the "
-                         "line", what);
+                         w->end_column,
+                         "expected %s, found the end of the "
+                         "line",
+                         what);
 }
 
 static rt_status refuse(parser *p, rt_status status, const rt_token *t,
@@ -101,8 +103,7 @@ static rt_status refuse(parser *p, rt_status status, const rt_token *t,
 }
 
 /* Refuses tokens past the first `most` of the line. */
-static rt_status no_more(parser *p, const words *w, int most,
-                         const char *what)
+static rt_status no_more(parser *p, const words *w, int most, const char *what)
 {
     return w->count > most ? refuse(p, RT_ERR_SYNTAX, &w->w[most], what)
                            : RT_OK;
@@ -131,8 +132,9 @@ static rt_status format_line(parser *p, const words *w)
         return refuse(p, RT_ERR_SYNTAX, &w->w[0],
                       "one `format` line, and this is a second");
     if (w->count < 2)
-        return line_ends(p, w, "`ascii`, `binary_little_endian` or "
-                               "`binary_big_endian`");
+        return line_ends(p, w,
+                         "`ascii`, `binary_little_endian` or "
+                         "`binary_big_endian`");
     int found = -1;
     for (int i = 0; i < 3; i++)
         if (rt__token_is(&w->w[1], formats[i]))
@@ -144,8 +146,7 @@ static rt_status format_line(parser *p, const words *w)
     double version;
     if (w->count < 3)
         return line_ends(p, w, "the version `1.0`");
-    if (rt__lex_number(&p->lex, &w->w[2], &version) != RT_OK ||
-        version != 1.0)
+    if (rt__lex_number(&p->lex, &w->w[2], &version) != RT_OK || version != 1.0)
         return refuse(p, RT_ERR_FORMAT, &w->w[2], "the version `1.0`");
     p->format_seen = 1;
     p->h->format = (ply_format)found;
@@ -164,8 +165,8 @@ static rt_status element_line(parser *p, const words *w)
 {
     ply_header *h = p->h;
     if (w->count < 3)
-        return line_ends(p, w, w->count < 2 ? "the element's name"
-                                            : "the element's count");
+        return line_ends(
+            p, w, w->count < 2 ? "the element's name" : "the element's count");
     if (h->element_count == RT_PLY_MAX_ELEMENTS)
         return refuse(p, RT_ERR_LIMIT, &w->w[1],
                       "at most 64 elements (RT_PLY_MAX_ELEMENTS)");
@@ -182,8 +183,7 @@ static rt_status element_line(parser *p, const words *w)
         return refuse(p, RT_ERR_SYNTAX, count,
                       "the element's count (a whole number)");
     if (value > INT_MAX / 2)
-        return refuse(p, RT_ERR_LIMIT, count,
-                      "a count of at most 1073741823");
+        return refuse(p, RT_ERR_LIMIT, count, "a count of at most 1073741823");
     for (int i = 0; i < h->element_count; i++)
         if (same_token(&h->element[i].name, &w->w[1]))
             return refuse(p, RT_ERR_SYNTAX, &w->w[1],
@@ -207,26 +207,30 @@ static rt_status element_line(parser *p, const words *w)
 }
 
 /* The part of property `prop` of element `e` in the model. */
-static rt_status give_role(parser *p, const ply_element *e,
-                           ply_property *prop)
+static rt_status give_role(parser *p, const ply_element *e, ply_property *prop)
 {
     static const struct {
         const char *name;
         ply_kind kind;
         ply_role role;
-    } roles[] = {
-        {"x", KIND_VERTEX, ROLE_X},        {"y", KIND_VERTEX, ROLE_Y},
-        {"z", KIND_VERTEX, ROLE_Z},        {"nx", KIND_VERTEX, ROLE_NX},
-        {"ny", KIND_VERTEX, ROLE_NY},      {"nz", KIND_VERTEX, ROLE_NZ},
-        {"red", KIND_VERTEX, ROLE_RED},    {"green", KIND_VERTEX, ROLE_GREEN},
-        {"blue", KIND_VERTEX, ROLE_BLUE},  {"red", KIND_FACE, ROLE_RED},
-        {"green", KIND_FACE, ROLE_GREEN},  {"blue", KIND_FACE, ROLE_BLUE},
-        {"vertex_indices", KIND_FACE, ROLE_CORNERS},
-        {"vertex_index", KIND_FACE, ROLE_CORNERS}};
+    } roles[] = {{"x", KIND_VERTEX, ROLE_X},
+                 {"y", KIND_VERTEX, ROLE_Y},
+                 {"z", KIND_VERTEX, ROLE_Z},
+                 {"nx", KIND_VERTEX, ROLE_NX},
+                 {"ny", KIND_VERTEX, ROLE_NY},
+                 {"nz", KIND_VERTEX, ROLE_NZ},
+                 {"red", KIND_VERTEX, ROLE_RED},
+                 {"green", KIND_VERTEX, ROLE_GREEN},
+                 {"blue", KIND_VERTEX, ROLE_BLUE},
+                 {"red", KIND_FACE, ROLE_RED},
+                 {"green", KIND_FACE, ROLE_GREEN},
+                 {"blue", KIND_FACE, ROLE_BLUE},
+                 {"vertex_indices", KIND_FACE, ROLE_CORNERS},
+                 {"vertex_index", KIND_FACE, ROLE_CORNERS}};
     prop->role = ROLE_NONE;
     for (size_t i = 0; i < sizeof roles / sizeof roles[0]; i++)
-        if (roles[i].kind == e->kind && rt__token_is(&prop->name,
-                                                     roles[i].name))
+        if (roles[i].kind == e->kind &&
+            rt__token_is(&prop->name, roles[i].name))
             prop->role = roles[i].role;
     int list = prop->count_type != PLY_NONE;
     if (prop->role == ROLE_CORNERS) {
@@ -290,8 +294,9 @@ static rt_status property_line(parser *p, const words *w)
             return refuse(p, RT_ERR_SYNTAX, &prop.name,
                           "a property name not declared before in its "
                           "element");
-    rt_status status = no_more(p, w, at + 2, "the end of the `property` "
-                                             "line");
+    rt_status status = no_more(p, w, at + 2,
+                               "the end of the `property` "
+                               "line");
     if (status == RT_OK)
         status = give_role(p, e, &prop);
     if (status != RT_OK)
@@ -301,8 +306,8 @@ static rt_status property_line(parser *p, const words *w)
                       "at most 1024 properties (RT_PLY_MAX_PROPERTIES)");
     if (h->property_count == p->property_capacity) {
         int bigger = p->property_capacity ? 2 * p->property_capacity : 16;
-        ply_property *grown = realloc(h->property,
-                                      (size_t)bigger * sizeof *grown);
+        ply_property *grown =
+            realloc(h->property, (size_t)bigger * sizeof *grown);
         if (grown == NULL)
             return rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
                                  "out of memory");
@@ -324,8 +329,8 @@ static rt_status property_line(parser *p, const words *w)
 
 /* Whether element e has the three properties of roles first..first+2;
  * *missing names the first it lacks. */
-static int has_three(const ply_header *h, const ply_element *e,
-                     ply_role first, int *missing)
+static int has_three(const ply_header *h, const ply_element *e, ply_role first,
+                     int *missing)
 {
     int seen[3] = {0, 0, 0};
     for (int i = e->first; i < e->first + e->properties; i++) {
@@ -368,12 +373,11 @@ static void say_skipped(parser *p, const ply_element *e)
                                      rt__token_shown(&prop->name, shown));
     }
     if (skipped > 0)
-        rt__notes_add(p->notes, p->name, e->name.line, e->name.column,
-                      "%d propert%s of the element `%s` %s not read: %s%s",
-                      skipped, skipped > 1 ? "ies" : "y",
-                      rt__token_shown(&e->name, shown),
-                      skipped > 1 ? "are" : "is", names,
-                      skipped > 4 ? ", ..." : "");
+        rt__notes_add(
+            p->notes, p->name, e->name.line, e->name.column,
+            "%d propert%s of the element `%s` %s not read: %s%s", skipped,
+            skipped > 1 ? "ies" : "y", rt__token_shown(&e->name, shown),
+            skipped > 1 ? "are" : "is", names, skipped > 4 ? ", ..." : "");
 }
 
 static rt_status end_header(parser *p, const words *w)
@@ -397,7 +401,8 @@ static rt_status end_header(parser *p, const words *w)
                                      e->name.line, e->name.column,
                                      "expected the properties `x`, `y` "
                                      "and `z` of the element `vertex`, "
-                                     "found no `%s`", axes[missing]);
+                                     "found no `%s`",
+                                     axes[missing]);
             h->has_normals = has_three(h, e, ROLE_NX, &missing);
             if (!h->has_normals)
                 drop_roles(h, e, ROLE_NX);
@@ -438,8 +443,8 @@ static rt_status end_header(parser *p, const words *w)
  * set), else up to the first NUL byte or the budget. */
 static size_t header_extent(const char *text, size_t length, int *found)
 {
-    size_t limit = length < RT_PLY_MAX_HEADER_BYTES ? length
-                                                    : RT_PLY_MAX_HEADER_BYTES;
+    size_t limit =
+        length < RT_PLY_MAX_HEADER_BYTES ? length : RT_PLY_MAX_HEADER_BYTES;
     size_t line = 0;
     *found = 0;
     while (line < limit) {
@@ -507,16 +512,18 @@ static rt_status header_lines(parser *p, size_t extent, int found,
                                    "(RT_PLY_MAX_HEADER_BYTES)"
                                  : "a NUL byte (binary data)";
     return rt__error_set(p->error, line == 0 ? RT_ERR_FORMAT : RT_ERR_SYNTAX,
-                         p->name, end_line, end_column, "expected %s, found "
-                         "%s", line == 0 ? "`ply` (the first line of a PLY "
-                                           "file)"
-                                         : "`end_header`",
+                         p->name, end_line, end_column,
+                         "expected %s, found "
+                         "%s",
+                         line == 0 ? "`ply` (the first line of a PLY "
+                                     "file)"
+                                   : "`end_header`",
                          found_what);
 }
 
 rt_status rt__ply_header_read(const char *text, size_t length,
-                              const char *name, ply_header *h,
-                              rt_notes *notes, rt_error *error)
+                              const char *name, ply_header *h, rt_notes *notes,
+                              rt_error *error)
 {
     memset(h, 0, sizeof *h);
     int found;
@@ -527,8 +534,8 @@ rt_status rt__ply_header_read(const char *text, size_t length,
     p.h = h;
     p.notes = notes;
     p.error = error;
-    rt_status status = rt__lex_open(&p.lex, text, extent, name, RT_LEX_LINES,
-                                    error);
+    rt_status status =
+        rt__lex_open(&p.lex, text, extent, name, RT_LEX_LINES, error);
     if (status != RT_OK)
         return status;
     status = header_lines(&p, extent, found, length);

@@ -50,13 +50,13 @@ size_t rt__ply_bytes_left(const reader *r)
 const char *rt__ply_what(const place *w, char *out, size_t size)
 {
     char property[RT_TOKEN_SHOWN_SIZE], element[RT_TOKEN_SHOWN_SIZE];
-    snprintf(out, size, "the property `%s` (%s) of %s %lld",
-             rt__token_shown(&w->property->name, property),
-             rt__ply_type_name(w->property->count_type != PLY_NONE &&
-                                       !w->in_list
-                                   ? w->property->count_type
-                                   : w->property->type),
-             rt__token_shown(&w->element->name, element), w->item);
+    snprintf(
+        out, size, "the property `%s` (%s) of %s %lld",
+        rt__token_shown(&w->property->name, property),
+        rt__ply_type_name(w->property->count_type != PLY_NONE && !w->in_list
+                              ? w->property->count_type
+                              : w->property->type),
+        rt__token_shown(&w->element->name, element), w->item);
     return out;
 }
 
@@ -70,7 +70,9 @@ static rt_status binary_value(reader *r, ply_type type, const place *w,
         char shown[RT_ERROR_MESSAGE_SIZE];
         return rt__error_set(r->error, RT_ERR_SYNTAX, r->name, 0, 0,
                              "byte %zu: expected %s, found the end of the "
-                             "file", rt__ply_offset(r), rt__ply_what(w, shown, sizeof shown));
+                             "file",
+                             rt__ply_offset(r),
+                             rt__ply_what(w, shown, sizeof shown));
     }
     *value = ply_load(r->at, type, r->swap);
     r->last_at = rt__ply_offset(r);
@@ -90,8 +92,8 @@ static rt_status ascii_value(reader *r, ply_type type, const place *w,
     if (first && r->has_pending) {
         t = r->pending, got = 1, r->has_pending = 0;
     } else {
-        got = first ? rt__lex_statement(&r->lex, &t)
-                    : rt__lex_next(&r->lex, &t);
+        got =
+            first ? rt__lex_statement(&r->lex, &t) : rt__lex_next(&r->lex, &t);
     }
     if (!got) {
         int line, column;
@@ -115,23 +117,20 @@ static rt_status ascii_value(reader *r, ply_type type, const place *w,
                                 rt__number_expected(status),
                                 rt__ply_what(w, shown, sizeof shown));
     if (type != PLY_FLOAT32 && type != PLY_FLOAT64) {
-        static const double low[] = {0, -128, 0, -32768, 0, -2147483648.0,
-                                     0};
-        static const double high[] = {0, 127, 255, 32767, 65535,
-                                      2147483647.0, 4294967295.0};
+        static const double low[] = {0, -128, 0, -32768, 0, -2147483648.0, 0};
+        static const double high[] = {0,     127,          255,         32767,
+                                      65535, 2147483647.0, 4294967295.0};
         if (*value != floor(*value) || *value < low[type] ||
             *value > high[type])
-            return rt__ply_refuse_value(r, RT_ERR_RANGE, *value,
-                                "a whole number in %.0f..%.0f for %s",
-                                low[type], high[type],
-                                rt__ply_what(w, shown, sizeof shown));
+            return rt__ply_refuse_value(
+                r, RT_ERR_RANGE, *value, "a whole number in %.0f..%.0f for %s",
+                low[type], high[type], rt__ply_what(w, shown, sizeof shown));
     }
     return RT_OK;
 }
 
 /* The end of an ASCII item's line. */
-rt_status rt__ply_line_end(reader *r, const ply_element *e,
-                                long long item)
+rt_status rt__ply_line_end(reader *r, const ply_element *e, long long item)
 {
     rt_token t;
     char shown[RT_TOKEN_SHOWN_SIZE];

@@ -52,8 +52,8 @@ static void inspect(const rt_scene *scene)
     int xs[3] = {0, c->width / 2, c->width - 1};
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
-            rt_color color = rt_trace(scene, rt_camera_ray(c, xs[a], xs[b]),
-                                      2);
+            rt_color color =
+                rt_trace(scene, rt_camera_ray(c, xs[a], xs[b]), 2);
             (void)rt_channel_to_byte(color.r);
         }
 }
