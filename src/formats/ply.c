@@ -97,8 +97,7 @@ static rt_status skip_list(reader *r, const ply_property *prop, const place *w,
         if (n > (double)(r->end - r->at) / rt__ply_type_size(prop->type))
             return rt__ply_refuse_value(
                 r, RT_ERR_SYNTAX, n,
-                "a count of items the rest of the file holds "
-                "for %s",
+                "a count of items the rest of the file holds for %s",
                 rt__ply_what(w, shown, sizeof shown));
         r->at += (size_t)n * (size_t)rt__ply_type_size(prop->type);
         return RT_OK;
@@ -469,8 +468,7 @@ static rt_status read_ply(reader *r, rt_scene **scene)
         return status;
     if (r->h.format == PLY_ASCII && r->has_pending) {
         rt__notes_add(&r->notes, r->name, r->pending.line, r->pending.column,
-                      "the lines after the last element "
-                      "are ignored");
+                      "the lines after the last element are ignored");
     } else if (r->h.format == PLY_ASCII) {
         rt_token t;
         if (rt__lex_statement(&r->lex, &t))

@@ -91,8 +91,7 @@ static rt_status line_ends(parser *p, const words *w, const char *what)
 {
     return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, w->end_line,
                          w->end_column,
-                         "expected %s, found the end of the "
-                         "line",
+                         "expected %s, found the end of the line",
                          what);
 }
 
@@ -295,8 +294,7 @@ static rt_status property_line(parser *p, const words *w)
                           "a property name not declared before in its "
                           "element");
     rt_status status = no_more(p, w, at + 2,
-                               "the end of the `property` "
-                               "line");
+                               "the end of the `property` line");
     if (status == RT_OK)
         status = give_role(p, e, &prop);
     if (status != RT_OK)
@@ -513,10 +511,8 @@ static rt_status header_lines(parser *p, size_t extent, int found,
                                  : "a NUL byte (binary data)";
     return rt__error_set(p->error, line == 0 ? RT_ERR_FORMAT : RT_ERR_SYNTAX,
                          p->name, end_line, end_column,
-                         "expected %s, found "
-                         "%s",
-                         line == 0 ? "`ply` (the first line of a PLY "
-                                     "file)"
+                         "expected %s, found %s",
+                         line == 0 ? "`ply` (the first line of a PLY file)"
                                    : "`end_header`",
                          found_what);
 }
