@@ -111,7 +111,7 @@ START_TEST(ply_skips_the_elements_and_properties_it_does_not_read)
         ck_assert_int_eq(rt_test_count_warnings(scene, "`material` (2 "
                                                        "items) is not read"),
                          1);
-        ck_assert_int_eq(rt_test_count_warnings(scene, "`edge` (1 items) "
+        ck_assert_int_eq(rt_test_count_warnings(scene, "`edge` (1 item) "
                                                        "is not read"),
                          1);
         ck_assert_int_eq(rt_test_count_warnings(
@@ -389,7 +389,7 @@ START_TEST(ply_ascii_body_errors_give_their_line_and_column)
          "t.ply:10:5: expected a number for the property `z` (float) of "
          "vertex 0, found `x`"},
         {"0 0 0\n1 0 0\n0 1 0\n", RT_ERR_SYNTAX,
-         "t.ply:7:9: expected a count the file can hold, found 1 items of "
+         "t.ply:7:9: expected a count the file can hold, found 1 item of "
          "`face` in 0 bytes left of the file"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

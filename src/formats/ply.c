@@ -65,9 +65,10 @@ static rt_status claim(reader *r, const ply_element *e)
     char shown[RT_TOKEN_SHOWN_SIZE];
     return rt__error_set(
         r->error, RT_ERR_SYNTAX, r->name, e->name.line, e->name.column,
-        "expected a count the file can hold, found %lld "
-        "items of `%s` in %zu bytes left of the file",
-        e->count, rt__token_shown(&e->name, shown), rt__ply_bytes_left(r));
+        "expected a count the file can hold, found %lld item%s of `%s` in %zu "
+        "bytes left of the file",
+        e->count, e->count == 1 ? "" : "s", rt__token_shown(&e->name, shown),
+        rt__ply_bytes_left(r));
 }
 
 /* A colour value as a byte: integers are 0..255, floating values 0..1. */

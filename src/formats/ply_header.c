@@ -421,9 +421,10 @@ static rt_status end_header(parser *p, const words *w)
                 drop_roles(h, e, ROLE_RED);
         } else {
             rt__notes_add(p->notes, p->name, e->name.line, e->name.column,
-                          "the element `%s` (%lld items) is not read: only "
+                          "the element `%s` (%lld item%s) is not read: only "
                           "`vertex` and `face` are",
-                          rt__token_shown(&e->name, shown), e->count);
+                          rt__token_shown(&e->name, shown), e->count,
+                          e->count == 1 ? "" : "s");
             continue;
         }
         say_skipped(p, e);
