@@ -332,6 +332,13 @@ static rt_status light(parser *p, const token *l)
     return RT_OK;
 }
 
+/* The description's arrays, freed once the scene's records are made
+ * (rt_reading.release). */
+static void release_mesh(void *user)
+{
+    rt__tess_mesh_free(user);
+}
+
 /* The token a refusal of the builder names (rt_locate_func): NFF's
  * lights are its own; the points it computes with (the view, polygons,
  * centres) it checks itself. */
@@ -428,8 +435,10 @@ static rt_status parse(parser *p, const rt_load_options *options,
     else if (rt__load_cancelled(options))
         status = rt__load_cancel(p->error, p->name);
     else {
-        rt_reading reading = {
-            p->name, p->mesh.facet_lines, &p->notes, options, locate, p};
+        rt_reading reading = {p->name,      p->mesh.facet_lines,
+                              &p->notes,    options,
+                              locate,       p,
+                              release_mesh, &p->mesh};
         status = rt__reader_finish(&d, &reading, scene, p->error);
     }
     free(lights);

@@ -322,6 +322,19 @@ static rt_status face(reader *r)
     return RT_OK;
 }
 
+/* The description's arrays, freed once the scene's records are made
+ * (rt_reading.release). */
+static void release_arrays(void *user)
+{
+    reader *r = user;
+    free(r->vertices);
+    free(r->facets);
+    free(r->facet_lines);
+    r->vertices = NULL;
+    r->facets = NULL;
+    r->facet_lines = NULL;
+}
+
 /* ---------------------------------------------------------------- reading */
 
 static rt_status statement(reader *r)
@@ -398,7 +411,7 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     d.facets = r->facets;
     d.facet_count = r->facet_count;
     rt_reading reading = {r->name, r->facet_lines, &r->notes, r->options,
-                          NULL, NULL};
+                          NULL,    NULL,           release_arrays, r};
     return rt__reader_finish(&d, &reading, scene, r->error);
 }
 
@@ -434,9 +447,7 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
     rt__obj_free_materials(&r);
     rt__tri_free(&r.triangulator);
     rt__obj_lexer_close(&r.lex);
-    free(r.vertices);
-    free(r.facets);
-    free(r.facet_lines);
+    release_arrays(&r);
     free(r.polygon);
     rt__notes_free(&r.notes);
     free(shown_name);

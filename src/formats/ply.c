@@ -404,6 +404,23 @@ static rt_status element(reader *r, const ply_element *e)
 
 /* ---------------------------------------------------------------- reading */
 
+/* The description's arrays (and what else the reader holds per vertex or
+ * facet), freed once the scene's records are made (rt_reading.release). */
+static void release_arrays(void *user)
+{
+    reader *r = user;
+    free(r->vertices);
+    free(r->colours);
+    free(r->normals);
+    free(r->facets);
+    free(r->facet_lines);
+    r->vertices = NULL;
+    r->colours = NULL;
+    r->normals = NULL;
+    r->facets = NULL;
+    r->facet_lines = NULL;
+}
+
 /* Opens the body: the lexer over the whole text (ASCII), its cursor past
  * the header's lines; the bytes after the header (binary). */
 static rt_status open_body(reader *r)
@@ -497,7 +514,8 @@ static rt_status read_ply(reader *r, rt_scene **scene)
     d.facets = r->facets;
     d.facet_count = r->facet_count;
     rt_reading reading = {r->name,    r->facet_lines, &r->notes,
-                          r->options, NULL,           NULL};
+                          r->options, NULL,           NULL,
+                          release_arrays, r};
     return rt__reader_finish(&d, &reading, scene, r->error);
 }
 
@@ -525,11 +543,7 @@ rt_status rt__ply_parse(const char *text, size_t length, const char *name,
         rt__lex_close(&r.lex);
     rt__tri_free(&r.triangulator);
     rt__ply_header_free(&r.h);
-    free(r.vertices);
-    free(r.colours);
-    free(r.normals);
-    free(r.facets);
-    free(r.facet_lines);
+    release_arrays(&r);
     free(r.polygon);
     rt__notes_free(&r.notes);
     return status;

@@ -82,13 +82,16 @@ static int grow_slots(rt_materials *t)
 
 int rt__materials_add(rt_materials *t, const rt_material *m)
 {
+    /* facets come in runs of one material: the last one first */
+    if (t->count > 0 && same(&t->items[t->last], m))
+        return t->last;
     if (t->slot_count > 0) {
         key k = key_of(m);
         size_t mask = t->slot_count - 1;
         for (size_t at = (size_t)hash_of(&k) & mask; t->slots[at] >= 0;
              at = (at + 1) & mask)
             if (same(&t->items[t->slots[at]], m))
-                return t->slots[at];
+                return t->last = t->slots[at];
     }
     if ((size_t)(t->count + 1) * FILL_DENOMINATOR >
             t->slot_count * FILL_NUMERATOR &&
@@ -105,6 +108,7 @@ int rt__materials_add(rt_materials *t, const rt_material *m)
     }
     t->items[t->count] = *m;
     place(t, t->count);
+    t->last = t->count;
     return t->count++;
 }
 

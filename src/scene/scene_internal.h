@@ -24,6 +24,7 @@
 typedef struct rt_materials {
     rt_material *items;
     int count, capacity;
+    int last;               /* the entry found or added last */
     int *slots;             /* the build's: entry indices, -1 empty */
     size_t slot_count;      /* a power of two, or 0 */
 } rt_materials;
