@@ -65,10 +65,11 @@ typedef struct material {
 
 /* A facet that can be hit: 48 bytes in double, 32 in float.  Its
  * corners are indices into the kernel's vertices, which a mesh shares
- * between the facets around each (about six on a terrain): holding each
- * vertex once saves 56 bytes a facet in double (104 bytes with the corners
- * copied in), 24 in float (56), less the shared array (a terrain has half
- * as many vertices as facets: 12 bytes a facet in double, 6 in float). */
+ * between the facets around each (about six on a terrain).  With the
+ * corners copied into every facet it took 104 bytes in double, 56 in
+ * float; the shared vertices add back 24 bytes (12 in float) per vertex,
+ * and a terrain has half as many vertices as facets: 44 bytes a facet
+ * saved in double, 18 in float. */
 typedef struct tri {
     vec normal;             /* unit, in the direction of (b-a) x (c-a) */
     int v[3];               /* its corners a, b, c: indices into the
@@ -102,9 +103,10 @@ typedef struct KERNEL_T {
     rt_kernel base;         /* first: the table of operations */
     tri *tris;
     int count;
-    vec *vertices;          /* the scene's vertices 0 .. vertex_count in
-                               this precision (from_rt), which tris index:
-                               those up to the last a facet of tris uses */
+    vec *vertices;          /* the scene's vertices in this precision
+                               (from_rt), which tris' v[] index: 0 ..
+                               vertex_count - 1, one past the largest
+                               index a facet of tris uses */
     int vertex_count;
     /* The same facets, eight by eight, for the brute-force AVX2 loops:
      * made with the kernel when it has fewer than RT_ACCEL_AUTO_FACETS
