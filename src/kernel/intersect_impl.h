@@ -118,10 +118,13 @@ typedef struct hit {
 #if defined(__GNUC__)
 __attribute__((noinline, cold))
 #endif
-static int crossing(const tri *f, const ray *r, REAL t_max, hit *h)
+static int crossing(const vec *vertices, const tri *f, const ray *r,
+                    REAL t_max, hit *h)
 {
-    double a[3] = {f->a.x, f->a.y, f->a.z}, b[3] = {f->b.x, f->b.y, f->b.z},
-           c[3] = {f->c.x, f->c.y, f->c.z};
+    const vec *pa = corner(vertices, f, 0), *pb = corner(vertices, f, 1),
+              *pc = corner(vertices, f, 2);
+    double a[3] = {pa->x, pa->y, pa->z}, b[3] = {pb->x, pb->y, pb->z},
+           c[3] = {pc->x, pc->y, pc->z};
     double o[3] = {r->origin.x, r->origin.y, r->origin.z},
            d[3] = {r->direction.x, r->direction.y, r->direction.z};
     /* How far the origin may lie from the point the ray really leaves:
@@ -170,6 +173,7 @@ static int crossing(const tri *f, const ray *r, REAL t_max, hit *h)
  * with u, v, w.
  */
 static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
+                                                     const vec *vertices,
                                                      const tri *f,
                                                      const ray *r,
                                                      REAL t_max, hit *h)
@@ -213,7 +217,7 @@ static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
     if (!(t > t_error)) {
         /* t cannot be told from 0: provably behind the origin (or NaN),
          * or decided by the crossing of the facet's plane */
-        if (!(t >= -t_error) || !crossing(f, r, t_max, h))
+        if (!(t >= -t_error) || !crossing(vertices, f, r, t_max, h))
             return 0;
     } else {
         h->t = t;
@@ -226,11 +230,14 @@ static inline INTERSECT_INLINE int intersect_sheared(const sheared *s,
     return 1;
 }
 
-static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
-                                             REAL t_max, hit *h)
+static inline INTERSECT_INLINE int intersect(const ray *r,
+                                             const vec *vertices,
+                                             const tri *f, REAL t_max,
+                                             hit *h)
 {
-    vec a = sub(f->a, r->origin), b = sub(f->b, r->origin),
-        c = sub(f->c, r->origin);
+    vec a = sub(*corner(vertices, f, 0), r->origin),
+        b = sub(*corner(vertices, f, 1), r->origin),
+        c = sub(*corner(vertices, f, 2), r->origin);
     sheared s;
     s.az = get(a, r->kz);
     s.bz = get(b, r->kz);
@@ -244,7 +251,7 @@ static inline INTERSECT_INLINE int intersect(const ray *r, const tri *f,
     s.u = s.cx * s.by - s.cy * s.bx;
     s.v = s.ax * s.cy - s.ay * s.cx;
     s.w = s.bx * s.ay - s.by * s.ax;
-    return intersect_sheared(&s, f, r, t_max, h);
+    return intersect_sheared(&s, vertices, f, r, t_max, h);
 }
 
 /*

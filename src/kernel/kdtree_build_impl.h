@@ -379,6 +379,7 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     s->lo = malloc((n ? n : 1) * sizeof *s->lo);
     s->hi = malloc((n ? n : 1) * sizeof *s->hi);
     s->tris = k->tris;
+    s->vertices = k->vertices;
     s->traverse = n >= KD_LARGE_FACETS ? KD_COST_TRAVERSE_LARGE
                                        : KD_COST_TRAVERSE;
     s->sliver = malloc(n ? n : 1);
@@ -387,15 +388,15 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
         box_lo[a] = INFINITY;
         box_hi[a] = -INFINITY;
     }
-    for (int i = 0; i < k->count; i++) {
-        const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
-        for (int j = 0; j < 3; j++)
+    for (int i = 0; i < k->count; i++)
+        for (int j = 0; j < 3; j++) {
+            vec p = *corner(k->vertices, &k->tris[i], j);
             for (int a = 0; a < 3; a++) {
-                double x = (double)get(*p[j], a);
+                double x = (double)get(p, a);
                 box_lo[a] = x < box_lo[a] ? x : box_lo[a];
                 box_hi[a] = x > box_hi[a] ? x : box_hi[a];
             }
-    }
+        }
     for (int a = 0; a < 3 && k->count > 0; a++)
         size = box_hi[a] - box_lo[a] > size ? box_hi[a] - box_lo[a] : size;
     t->reach_margin = size * KD_MARGIN;

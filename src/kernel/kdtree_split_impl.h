@@ -41,6 +41,7 @@ static size_t kd_block_size(kd_shape sh)
 typedef struct kd_shared {
     float (*lo)[3], (*hi)[3];   /* each facet's grown box, in float */
     const tri *tris;        /* the facets (their vertices: kd_corners) */
+    const vec *vertices;    /* the kernel's, which tris index */
     unsigned char *sliver;
     double overlap_margin;  /* the octree's margin, for the overlap test */
     double traverse;        /* the SAH's K_T for this tree's size */
@@ -127,11 +128,11 @@ static float float_above(double x)
 static void kd_corners(const kd_shared *s, int32_t i, double v[3][3])
 {
     const tri *f = &s->tris[i];
-    const vec *p[3] = {&f->a, &f->b, &f->c};
     for (int c = 0; c < 3; c++) {
-        v[c][0] = (double)p[c]->x;
-        v[c][1] = (double)p[c]->y;
-        v[c][2] = (double)p[c]->z;
+        const vec *p = corner(s->vertices, f, c);
+        v[c][0] = (double)p->x;
+        v[c][1] = (double)p->y;
+        v[c][2] = (double)p->z;
     }
 }
 

@@ -63,13 +63,27 @@ typedef struct material {
     REAL d;                 /* diffuse weight */
 } material;
 
-/* A facet that can be hit. */
+/* A facet that can be hit: 48 bytes in double, 32 in float.  Its
+ * corners are indices into the kernel's vertices, which a mesh shares
+ * between the facets around each (about six on a terrain).  With the
+ * corners copied into every facet it took 104 bytes in double, 56 in
+ * float; the shared vertices add back 24 bytes (12 in float) per vertex,
+ * and a terrain has half as many vertices as facets: 44 bytes a facet
+ * saved in double, 18 in float. */
 typedef struct tri {
-    vec a, b, c;
     vec normal;             /* unit, in the direction of (b-a) x (c-a) */
+    int v[3];               /* its corners a, b, c: indices into the
+                               kernel's vertices */
     int facet;              /* index of the facet record */
     int material;           /* index into the kernel's materials */
 } tri;
+
+/* Corner j (0, 1, 2: a, b, c) of facet f, whose kernel's vertices are
+ * `vertices`. */
+static inline const vec *corner(const vec *vertices, const tri *f, int j)
+{
+    return &vertices[f->v[j]];
+}
 
 typedef struct block block;     /* eight facets, simd_impl.h */
 typedef struct octree octree;   /* octree_impl.h */
@@ -89,6 +103,11 @@ typedef struct KERNEL_T {
     rt_kernel base;         /* first: the table of operations */
     tri *tris;
     int count;
+    vec *vertices;          /* the scene's vertices in this precision
+                               (from_rt), which tris' v[] index: 0 ..
+                               vertex_count - 1, one past the largest
+                               index a facet of tris uses */
+    int vertex_count;
     /* The same facets, eight by eight, for the brute-force AVX2 loops:
      * made with the kernel when it has fewer than RT_ACCEL_AUTO_FACETS
      * facets (where `auto` picks brute force), else by the first call of
@@ -255,9 +274,8 @@ static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
     rt_vec3 a = s->vertices[record->vertex[0]],
             b = s->vertices[record->vertex[1]],
             c = s->vertices[record->vertex[2]];
-    f->a = from_rt(a);
-    f->b = from_rt(b);
-    f->c = from_rt(c);
+    for (int j = 0; j < 3; j++)
+        f->v[j] = record->vertex[j];
     f->normal = from_rt(s->normals != NULL ? s->normals[i]
                                            : rt__facet_normal(a, b, c));
     f->facet = i;
@@ -265,11 +283,30 @@ static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
     k->transparent |= k->materials[record->material].t > 0;
 }
 
-/* The kernel's arrays, sized for source `s`; 0 when out of memory. */
+/* The number of vertices of source `s` that its facets but the
+ * degenerate ones reach: one more than the largest index they use. */
+static int vertices_used(const rt_kernel_source *s)
+{
+    int count = 0;
+    for (int i = 0; i < s->facet_count; i++)
+        for (int j = 0; j < 3 && !s->facets[i].degenerate; j++)
+            if (s->facets[i].vertex[j] >= count)
+                count = s->facets[i].vertex[j] + 1;
+    return count;
+}
+
+/* The kernel's arrays, sized for source `s`, and its vertices in this
+ * precision; 0 when out of memory. */
 static int allocate(KERNEL_T *k, const rt_kernel_source *s)
 {
     k->tris = malloc((size_t)(s->facet_count > 0 ? s->facet_count : 1) *
                      sizeof *k->tris);
+    k->vertex_count = vertices_used(s);
+    k->vertices = malloc((size_t)(k->vertex_count > 0 ? k->vertex_count
+                                                      : 1) *
+                         sizeof *k->vertices);
+    for (int v = 0; k->vertices != NULL && v < k->vertex_count; v++)
+        k->vertices[v] = from_rt(s->vertices[v]);
     int more = s->light_count - 1;
     k->light_count = s->light_count;
     k->lights = malloc((size_t)s->light_count * sizeof *k->lights);
@@ -282,8 +319,8 @@ static int allocate(KERNEL_T *k, const rt_kernel_source *s)
                            ? (size_t)more * (size_t)s->material_count * 3
                            : 1;
     k->more_diffuse = malloc(more_size * sizeof *k->more_diffuse);
-    return k->tris != NULL && k->lights != NULL && k->materials != NULL &&
-           k->more_diffuse != NULL;
+    return k->tris != NULL && k->vertices != NULL && k->lights != NULL &&
+           k->materials != NULL && k->more_diffuse != NULL;
 }
 
 /* The blocks of k's facets (from malloc, 32-byte aligned); NULL when out
@@ -295,7 +332,7 @@ static block *make_blocks(const KERNEL_T *k)
                                                    : 1) *
                                           sizeof *blocks);
     if (blocks != NULL)
-        fill_blocks(blocks, k->tris, k->count, mk(0, 0, 0));
+        fill_blocks(blocks, k->vertices, k->tris, k->count, mk(0, 0, 0));
     return blocks;
 }
 
@@ -355,6 +392,7 @@ static void kernel_destroy(rt_kernel *kernel)
     KERNEL_T *k = (KERNEL_T *)kernel;
     if (k != NULL) {
         free(k->tris);
+        free(k->vertices);
         free(atomic_load(&k->blocks));
         free(k->lights);
         free(k->materials);
@@ -485,7 +523,8 @@ static rt_kernel_eye *kernel_eye_create(const rt_kernel *kernel,
         free(eye);
         return NULL;
     }
-    fill_blocks(eye->blocks, k->tris, k->count, eye->origin);
+    fill_blocks(eye->blocks, k->vertices, k->tris, k->count,
+                eye->origin);
     eye->count = k->count;
     if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS) {
         eye->edges = malloc(edges_size(k->count) * sizeof *eye->edges);
@@ -516,7 +555,8 @@ static int kernel_nearest_hit(const rt_kernel *kernel, rt_ray query,
     vec error_bound;
     out->t = h.t;
     out->facet = f->facet;
-    out->point = to_rt(hit_point(f, &h, r.origin, direction, &error_bound));
+    out->point = to_rt(hit_point(k->vertices, f, &h, r.origin, direction,
+                                 &error_bound));
     out->normal = to_rt(dot(f->normal, direction) > 0 ? neg(f->normal)
                                                       : f->normal);
     return 1;

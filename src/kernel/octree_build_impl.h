@@ -380,11 +380,11 @@ static octree *octree_build(const KERNEL_T *k, const rt_cancel *cancel,
     for (int i = 0; i < k->count; i++) {
         if (i % OCTREE_POLL_WORK == 0 && stopped(&b, OCTREE_POLL_WORK))
             break;
-        const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
         for (int j = 0; j < 3; j++) {
-            b.v[i][j][0] = (double)p[j]->x;
-            b.v[i][j][1] = (double)p[j]->y;
-            b.v[i][j][2] = (double)p[j]->z;
+            const vec *p = corner(k->vertices, &k->tris[i], j);
+            b.v[i][j][0] = (double)p->x;
+            b.v[i][j][1] = (double)p->y;
+            b.v[i][j][2] = (double)p->z;
         }
         sliver[i] = !(condition(b.v[i]) <= OCTREE_CONDITION_MAX);
         slivers += sliver[i];

@@ -173,13 +173,14 @@ static int packet_prepare_kernel(KERNEL_T *k)
     if (k->planes == NULL || k->light_side == NULL)
         return 0;
     double extent = 0;
-    for (int i = 0; i < k->count; i++)
-        extent = fmax(extent, fmax(max3(k->tris[i].a.x, k->tris[i].a.y,
-                                        k->tris[i].a.z),
-                                   fmax(max3(k->tris[i].b.x, k->tris[i].b.y,
-                                             k->tris[i].b.z),
-                                        max3(k->tris[i].c.x, k->tris[i].c.y,
-                                             k->tris[i].c.z))));
+    for (int i = 0; i < k->count; i++) {
+        const vec *a = corner(k->vertices, &k->tris[i], 0),
+                  *b = corner(k->vertices, &k->tris[i], 1),
+                  *c = corner(k->vertices, &k->tris[i], 2);
+        extent = fmax(extent, fmax(max3(a->x, a->y, a->z),
+                                   fmax(max3(b->x, b->y, b->z),
+                                        max3(c->x, c->y, c->z))));
+    }
     for (int l = 0; l < k->light_count; l++)
         extent = fmax(extent, max3(k->lights[l].x, k->lights[l].y,
                                    k->lights[l].z));
@@ -191,12 +192,12 @@ static int packet_prepare_kernel(KERNEL_T *k)
     int tiny = extent < 1024 * sqrt((double)REAL_MIN / (double)REAL_EPS);
     for (int i = 0; i < k->count; i++) {
         const tri *f = &k->tris[i];
-        const vec *vertex[3] = {&f->a, &f->b, &f->c};
         double v[3][3];
         for (int j = 0; j < 3; j++) {
-            v[j][0] = vertex[j]->x;
-            v[j][1] = vertex[j]->y;
-            v[j][2] = vertex[j]->z;
+            const vec *p = corner(k->vertices, f, j);
+            v[j][0] = p->x;
+            v[j][1] = p->y;
+            v[j][2] = p->z;
         }
         double e1[3], e2[3];
         for (int x = 0; x < 3; x++) {
@@ -318,8 +319,8 @@ AVX2 static void packet_nearest(const KERNEL_T *k, const KERNEL_EYE_T *eye,
             int l = __builtin_ctz(m);
             hit candidate;
             sheared s = kept_lane(&keep, l);
-            if (intersect_sheared(&s, &k->tris[i], r[l], t_max[l],
-                                  &candidate))
+            if (intersect_sheared(&s, k->vertices, &k->tris[i], r[l],
+                                  t_max[l], &candidate))
                 keep_nearer(k, i, &candidate, &h[l], &t_max[l], &found[l]);
         }
     }
@@ -383,17 +384,19 @@ AVX2 static void packet_any_hit(const KERNEL_T *k, int light, const ray *r,
         if (m == 0)
             continue;
         const tri *f = &k->tris[i];
+        vec fa = *corner(k->vertices, f, 0), fb = *corner(k->vertices, f, 1),
+            fc = *corner(k->vertices, f, 2);
         vreal a[3], b[3], c[3];
         for (int j = 0; j < 3; j++) {
-            a[j] = v_sub(v_set1(get(f->a, axis[j])), o[j]);
-            b[j] = v_sub(v_set1(get(f->b, axis[j])), o[j]);
-            c[j] = v_sub(v_set1(get(f->c, axis[j])), o[j]);
+            a[j] = v_sub(v_set1(get(fa, axis[j])), o[j]);
+            b[j] = v_sub(v_set1(get(fb, axis[j])), o[j]);
+            c[j] = v_sub(v_set1(get(fc, axis[j])), o[j]);
         }
         m &= edges_filter(a, b, c, sx, sy, m, &keep, 0);
         for (; m != 0; m &= m - 1) {
             int l = __builtin_ctz(m);
             sheared s = kept_lane(&keep, l);
-            if (intersect_sheared(&s, f, &r[l], 1, &ignored) &&
+            if (intersect_sheared(&s, k->vertices, f, &r[l], 1, &ignored) &&
                 blocks(&ignored, 1)) {
                 blocker[l] = i;
                 live &= ~(1u << l);
@@ -436,7 +439,8 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
             continue;
         b->h = &h[l];
         const tri *f = &k->tris[h[l].index];
-        b->point = hit_point(f, &h[l], origin, incoming[l], &b->error_bound);
+        b->point = hit_point(k->vertices, f, &h[l], origin, incoming[l],
+                             &b->error_bound);
         b->normal = dot(f->normal, incoming[l]) > 0 ? neg(f->normal)
                                                     : f->normal;
     }

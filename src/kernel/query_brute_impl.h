@@ -13,7 +13,7 @@ static int nearest_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
     int found = 0;
     hit candidate;
     for (int i = 0; i < k->count; i++) {
-        if (i != skip && intersect(r, &k->tris[i], t_max, &candidate))
+        if (i != skip && intersect(r, k->vertices, &k->tris[i], t_max, &candidate))
             keep_nearer(k, i, &candidate, h, &t_max, &found);
     }
     *tests += (uint64_t)k->count - (skip >= 0);
@@ -34,7 +34,7 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
         if (i == skip)
             continue;
         made++;
-        found = intersect(r, &k->tris[i], t_max, &ignored) &&
+        found = intersect(r, k->vertices, &k->tris[i], t_max, &ignored) &&
                 blocks(&ignored, t_max);
         if (found)
             *blocker = i;

@@ -99,7 +99,7 @@ static int collect(collector *c, const KERNEL_T *k, const ray *r,
                    REAL t_max, int i)
 {
     c->made++;
-    if (!intersect(r, &k->tris[i], t_max, &c->found[c->n]))
+    if (!intersect(r, k->vertices, &k->tris[i], t_max, &c->found[c->n]))
         return 1;
     c->found[c->n].index = i;
     if (++c->n == NEAR_HITS)
@@ -152,7 +152,7 @@ static int blocked_batch(const KERNEL_T *k, int simd, const ray *r,
     for (int j = 0; j < n; j++) {
         (*made)++;
         if ((candidates >> j & 1) &&
-            intersect(r, &k->tris[ids[j]], t_max, &ignored) &&
+            intersect(r, k->vertices, &k->tris[ids[j]], t_max, &ignored) &&
             blocks(&ignored, t_max)) {
             *blocker = ids[j];
             return 1;
@@ -303,7 +303,7 @@ static int any_hit_octree(const KERNEL_T *k, int simd, const octree *tree,
         if (i == skip)
             continue;
         made++;
-        found = intersect(r, &k->tris[i], t_max, &ignored) &&
+        found = intersect(r, k->vertices, &k->tris[i], t_max, &ignored) &&
                 blocks(&ignored, t_max);
         if (found)
             *blocker = i;

@@ -33,8 +33,9 @@
  * keeps the point from sliding along the facet.  `direction` is the ray's,
  * in the units of t.
  */
-static inline vec hit_point(const tri *f, const hit *h, vec origin,
-                            vec direction, vec *error_bound)
+static inline vec hit_point(const vec *vertices, const tri *f,
+                            const hit *h, vec origin, vec direction,
+                            vec *error_bound)
 {
     if (h->point_error < 0) {
         /* A crossing (intersect_impl.h): t is accurate, the point the
@@ -48,7 +49,7 @@ static inline vec hit_point(const tri *f, const hit *h, vec origin,
     if (h->point_error > 0) {
         /* The plane's point first: on most facets it is the one taken,
          * and then the barycentric one need not be computed. */
-        vec to_facet = sub(f->a, origin);
+        vec to_facet = sub(*corner(vertices, f, 0), origin);
         REAL along = dot(f->normal, to_facet),
              across = dot(f->normal, direction);
         REAL t = along / across;
@@ -65,8 +66,9 @@ static inline vec hit_point(const tri *f, const hit *h, vec origin,
             return add(origin, step);
         }
     }
-    vec pa = scale(f->a, h->b0), pb = scale(f->b, h->b1),
-        pc = scale(f->c, h->b2);
+    vec pa = scale(*corner(vertices, f, 0), h->b0),
+        pb = scale(*corner(vertices, f, 1), h->b1),
+        pc = scale(*corner(vertices, f, 2), h->b2);
     *error_bound = scale(add(vabs(pa), add(vabs(pb), vabs(pc))),
                          gamma_bound(7));
     return add(pa, add(pb, pc));
@@ -127,7 +129,8 @@ HOT_INLINE int shadow_blocked(const trace_ctx *c, const ray *r, int l,
     if (cached >= 0 && cached < c->k->count && cached != skip) {
         hit ignored;
         c->counters->ray_facet_tests++;
-        if (intersect(r, &c->k->tris[cached], 1, &ignored) &&
+        if (intersect(r, c->k->vertices, &c->k->tris[cached], 1,
+                      &ignored) &&
             blocks(&ignored, 1)) {
             if (c->kd == NULL && c->tree == NULL)   /* as brute force */
                 c->counters->early_exit_saved +=
@@ -275,7 +278,8 @@ HOT_INLINE int shade_hit(const trace_ctx *c, int found, const hit *h,
         s->error_bound = known->error_bound;
         s->normal = known->normal;
     } else {
-        s->point = hit_point(s->f, h, origin, incoming, &s->error_bound);
+        s->point = hit_point(k->vertices, s->f, h, origin, incoming,
+                             &s->error_bound);
         s->normal = dot(s->f->normal, incoming) > 0 ? neg(s->f->normal)
                                                     : s->f->normal;
     }

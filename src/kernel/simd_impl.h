@@ -33,16 +33,16 @@ typedef struct block {
 
 /* Fills blocks[0 .. ceil(count / 8)) from the facets' vertices minus
  * `origin`, rounded as intersect() rounds them (zero: the vertices). */
-static void fill_blocks(block *blocks, const tri *tris, int count, vec origin)
+static void fill_blocks(block *blocks, const vec *vertices, const tri *tris,
+                        int count, vec origin)
 {
     int block_count = (count + BLOCK_LANES - 1) / BLOCK_LANES;
     memset(blocks, 0, (size_t)block_count * sizeof *blocks);
     for (int i = 0; i < count; i++) {
         block *b = &blocks[i / BLOCK_LANES];
         int lane = i % BLOCK_LANES;
-        const vec *vertex[3] = {&tris[i].a, &tris[i].b, &tris[i].c};
         for (int j = 0; j < 3; j++) {
-            vec t = sub(*vertex[j], origin);
+            vec t = sub(*corner(vertices, &tris[i], j), origin);
             b->v[j][0][lane] = t.x;
             b->v[j][1][lane] = t.y;
             b->v[j][2][lane] = t.z;
@@ -214,7 +214,8 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
             m &= m - 1;
             sheared s = kept_lane(&keep, lane);
             if (i != skip &&
-                intersect_sheared(&s, &k->tris[i], r, t_max, &candidate))
+                intersect_sheared(&s, k->vertices, &k->tris[i], r, t_max,
+                                  &candidate))
                 keep_nearer(k, i, &candidate, h, &t_max, &found);
         }
     }
@@ -256,7 +257,8 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const block *facet_blocks,
             m &= m - 1;
             sheared s = kept_lane(&keep, lane);
             if (i != skip &&
-                intersect_sheared(&s, &k->tris[i], r, t_max, &ignored) &&
+                intersect_sheared(&s, k->vertices, &k->tris[i], r, t_max,
+                                  &ignored) &&
                 blocks(&ignored, t_max)) {
                 int made = (b + 1) * BLOCK_LANES;
                 if (made > k->count)
@@ -282,14 +284,19 @@ AVX2 static unsigned gathered_candidates(const KERNEL_T *k, const ray *r,
                                          const int *ids, int n)
 {
     _Alignas(32) block b;
-    memset(&b, 0, sizeof b);
+    /* zeros in whole vectors (memset's rep stos costs more than the
+     * gather on a leaf of a few facets) */
+    for (int j = 0; j < 3; j++)
+        for (int a = 0; a < 3; a++)
+            for (int at = 0; at < BLOCK_LANES; at += VW)
+                v_store(&b.v[j][a][at], v_zero());
     for (int lane = 0; lane < n; lane++) {
         const tri *f = &k->tris[ids[lane]];
-        const vec *vertex[3] = {&f->a, &f->b, &f->c};
         for (int j = 0; j < 3; j++) {
-            b.v[j][0][lane] = vertex[j]->x;
-            b.v[j][1][lane] = vertex[j]->y;
-            b.v[j][2][lane] = vertex[j]->z;
+            const vec *p = corner(k->vertices, f, j);
+            b.v[j][0][lane] = p->x;
+            b.v[j][1][lane] = p->y;
+            b.v[j][2][lane] = p->z;
         }
     }
     vray q;
