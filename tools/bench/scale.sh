@@ -20,7 +20,8 @@
 # build is done by the first render, inside its time) and write; "whole"
 # is the wall clock of the process, "peak" its maximum resident set
 # (/usr/bin/time's %M, else getrusage of the child), "B/facet" the peak
-# over the facets.  Any key of --stats=json whose name holds "peak" (the
+# over the facets, "read peak" that of `rt-export FILE --check` (the read
+# alone, one run).  Any key of --stats=json whose name holds "peak" (the
 # peak bytes per facet rt-export may report) is shown as it is.  A PLY
 # has no camera: its runs are given the .scn's view (terrain.VIEW:
 # --look-from, --look-at, --up, --fov, --light), so both formats cast the
@@ -82,8 +83,8 @@ echo "machine: $(nproc) cores ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo 
 echo
 
 # run FILE FORMAT -> "load build trace write whole peak_kb rays peaks", one
-# line per run in $work/runs; non-zero (the message in $work/err) when
-# rt-export fails.
+# line per run in $work/runs, then the peak of reading alone (--check) in
+# $work/readkb; non-zero (the message in $work/err) when rt-export fails.
 run() {
     local extra=()
     [ "$2" = scn ] || extra=("${view[@]}")
@@ -114,6 +115,8 @@ print(sec["load"], build, sec["render"] - build, sec["write"],
       s["rays"]["total"], ",".join(peaks) or "-")' "$t0" "$t1" "$work/peak" \
             >>"$work/runs"
     done
+    measure "$export" "$1" --check "${extra[@]}" >/dev/null 2>&1 || return 1
+    cp "$work/peak" "$work/readkb"
 }
 
 # embree FILE -> "load build trace whole peak_kb rays" (medians)
@@ -134,7 +137,7 @@ embree() {
 
 knows_ply() { "$export" --help 2>&1 | grep -qi 'ply'; }
 
-rows=()     # facets format MB load build trace write whole kb rays peaks
+rows=()     # facets format MB load build trace write whole kb readkb rays peaks
 peers=()    # facets load build trace whole kb rays
 files=()    # facets format bytes
 bpf=600     # bytes per facet expected of the next size
@@ -165,7 +168,7 @@ for s in ${sizes//,/ }; do
         mb=$(awk -v b="$bytes" 'BEGIN { printf "%.1f", b / 1e6 }')
         if run "$file" "$f"; then
             r="$(col 1) $(col 2) $(col 3) $(col 4) $(col 5) $(col 6)"
-            rows+=("$facets $f $mb $r $(head -n 1 "$work/runs" | cut -d' ' -f7-)")
+            rows+=("$facets $f $mb $r $(cat "$work/readkb") $(head -n 1 "$work/runs" | cut -d' ' -f7-)")
             bpf=$(awk -v k="$(col 6)" -v f="$facets" \
                   'BEGIN { printf "%.0f", 1.1 * k * 1024 / f }')
         elif [ "$f" = ply ] && ! knows_ply; then
@@ -190,8 +193,8 @@ function rate(x) {
     return x >= 1e6 ? sprintf("%.2f M", x / 1e6) : sprintf("%.0f k", x / 1e3);
 }
 BEGIN {
-    print "| facets | format | file MB | read s (MB/s) | build s (facets/s) | trace s (rays/s) | write s | whole s | peak MB | B/facet | target | met? | rays | --stats peak |";
-    print "|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|---|---|--:|---|";
+    print "| facets | format | file MB | read s (MB/s) | build s (facets/s) | trace s (rays/s) | write s | whole s | peak MB | B/facet | read peak MB | target | met? | rays | --stats peak |";
+    print "|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|---|--:|---|";
 }
 {
     f = $1; fmt = $2;
@@ -206,12 +209,12 @@ BEGIN {
         target = "≤ " tw " s, ≤ " (tp >= 1e9 ? tp / 1e9 " GB" : tp / 1e6 " MB");
     if ($4 !~ /^[0-9.]+$/) {        # skipped or failed
         rest = $4; for (i = 5; i <= NF; i++) rest = rest " " $i;
-        printf "| %d | %s | %s | %s | | | | | | | %s | | | |\n", f, fmt,
+        printf "| %d | %s | %s | %s | | | | | | | | %s | | | |\n", f, fmt,
             ($3 == "" || fmt == "-") ? "-" : $3, rest, target;
         next;
     }
     load = $4; build = $5; trace = $6; write = $7; whole = $8;
-    peak = $9 * 1024; rays = $10; peaks = $11;
+    peak = $9 * 1024; readpeak = $10 * 1024; rays = $11; peaks = $12;
     met = "-";
     if (tw != "-") {
         bad = "";
@@ -220,10 +223,10 @@ BEGIN {
             bad = bad (bad == "" ? "" : ", ") "memory";
         met = bad == "" ? "yes" : "no (" bad ")";
     }
-    printf "| %d | %s | %s | %s (%.0f) | %s (%s) | %s (%s) | %s | %s | %.0f | %.0f | %s | %s | %d | %s |\n",
+    printf "| %d | %s | %s | %s (%.0f) | %s (%s) | %s (%s) | %s | %s | %.0f | %.0f | %.0f | %s | %s | %d | %s |\n",
         f, fmt, $3, sec(load), $3 / load, sec(build), rate(f / build),
         sec(trace), rate(rays / trace), sec(write), sec(whole),
-        peak / 1e6, peak / f, target, met, rays, peaks;
+        peak / 1e6, peak / f, readpeak / 1e6, target, met, rays, peaks;
 }' < <(printf '%s\n' "${rows[@]}")
 
 if [ -n "$peer" ] && [ ${#peers[@]} -gt 0 ]; then
