@@ -5,7 +5,10 @@
 # facets, as a binary little-endian PLY (terrain.py --ply) and, up to
 # SCN_MAX million facets (default 5), as the .scn of the same mesh
 # (terrain.py --float32: the PLY's float32 vertices written exactly, the
-# same facets in the same order).
+# same facets in the same order); above it, whose .scn would pass the 1 GiB
+# a scene may weigh, as an OBJ of the same mesh instead (terrain.py --obj:
+# the vertices to nine digits), the text file rt-export reads without a
+# PLY reader.
 #
 #   tools/bench/scale.sh [--sizes 1,5,20] [--runs N] [BUILD_DIR]
 #
@@ -23,7 +26,7 @@
 # over the facets, "read peak" that of `rt-export FILE --check` (the read
 # alone, one run).  Any key of --stats=json whose name holds "peak" (the
 # peak bytes per facet rt-export may report) is shown as it is.  A PLY
-# has no camera: its runs are given the .scn's view (terrain.VIEW:
+# or an OBJ has no camera: their runs are given the .scn's view (terrain.VIEW:
 # --look-from, --look-at, --up, --fov, --light), so both formats cast the
 # same rays (the "rays" column).  A PLY that rt-export does not read (no
 # PLY reader in this build) gives the row "skipped: rt-export cannot read
@@ -32,8 +35,8 @@
 # MemAvailable) is skipped and says so.
 #
 # Then rt-embree-peer (tools/bench/embree-peer, built where Embree 3 is
-# found) on the .scn rows only (it takes the file's own camera, and a PLY
-# has none): its load, rtcCommitScene (2 threads), render (one thread, as
+# found) on the .scn and OBJ rows (it takes the file's own camera: on an
+# OBJ the automatic one, other rays, see its "rays"): its load, rtcCommitScene (2 threads), render (one thread, as
 # always), whole process and peak.  The files live in a temporary folder,
 # removed as soon as their size is done; the script says how big they were.
 #   tools/bench/scale.sh --sizes 1,5 --runs 3 build
@@ -87,7 +90,7 @@ echo
 # $work/readkb; non-zero (the message in $work/err) when rt-export fails.
 run() {
     local extra=()
-    [ "$2" = scn ] || extra=("${view[@]}")
+    [ "$2" = scn ] || extra=("${view[@]}")   # a PLY or an OBJ
     : >"$work/runs"
     for _ in $(seq "$runs"); do
         t0=$(now)
@@ -124,8 +127,8 @@ embree() {
     : >"$work/runs"
     for _ in $(seq "$runs"); do
         t0=$(now)
-        measure "$peer" "$1" --threads 2 --size "$size" >"$work/peer" ||
-            return 1
+        measure "$peer" "$1" --threads 2 --size "$size" >"$work/peer" \
+            2>"$work/peer.err" || return 1
         t1=$(now)
         awk -v t0="$t0" -v t1="$t1" -v kb="$(cat "$work/peak")" '
             /^embree: / { printf "%s %s %s %.6f %s %d\n", $19, $5, $8,
@@ -138,7 +141,7 @@ embree() {
 knows_ply() { "$export" --help 2>&1 | grep -qi 'ply'; }
 
 rows=()     # facets format MB load build trace write whole kb readkb rays peaks
-peers=()    # facets load build trace whole kb rays
+peers=()    # facets format load build trace whole kb rays
 files=()    # facets format bytes
 bpf=600     # bytes per facet expected of the next size
 for s in ${sizes//,/ }; do
@@ -151,13 +154,14 @@ for s in ${sizes//,/ }; do
         rows+=("$facets - - skipped: needs about $((need / 1000000000)) GB ($bpf B/facet), $((avail / 1000000000)) GB available")
         continue
     fi
-    formats=(ply)
+    formats=(obj ply)
     awk -v s="$s" -v m="$scn_max" 'BEGIN { exit !(s <= m) }' &&
         formats=(scn ply)
     for f in "${formats[@]}"; do
         file="$work/terrain-$n.$f"
         case $f in
             scn) python3 "$here/terrain.py" "$n" --float32 >"$file" ;;
+            obj) python3 "$here/terrain.py" "$n" --obj >"$file" ;;
             # When tools/bench/plygen.py lands with terrain.py's mesh, it
             # can write this file instead; its vertices must stay the
             # .scn's float32 ones for the rows to be one scene.
@@ -176,11 +180,11 @@ for s in ${sizes//,/ }; do
         else
             rows+=("$facets $f $mb failed: $(tail -n 1 "$work/err" | cut -c1-120)")
         fi
-        if [ -n "$peer" ] && [ "$f" = scn ]; then
+        if [ -n "$peer" ] && [ "$f" != ply ]; then
             if e=$(embree "$file"); then
-                peers+=("$facets $e")
+                peers+=("$facets $f $e")
             else
-                peers+=("$facets failed: $(tail -n 1 "$work/peer" | cut -c1-100)")
+                peers+=("$facets $f failed: $(tail -n 1 "$work/peer.err" | cut -c1-100)")
             fi
         fi
         rm -f "$file"
@@ -231,21 +235,21 @@ BEGIN {
 
 if [ -n "$peer" ] && [ ${#peers[@]} -gt 0 ]; then
     echo
-    echo "rt-embree-peer on the .scn rows (build 2 threads, render 1 thread):"
+    echo "rt-embree-peer on the .scn and OBJ rows (build 2 threads, render 1 thread):"
     echo
-    echo "| facets | read s | build s (facets/s) | trace s (rays/s), 1 thread | whole s | peak MB | B/facet | rays |"
-    echo "|--:|--:|--:|--:|--:|--:|--:|--:|"
+    echo "| facets | format | read s | build s (facets/s) | trace s (rays/s), 1 thread | whole s | peak MB | B/facet | rays |"
+    echo "|--:|---|--:|--:|--:|--:|--:|--:|--:|"
     printf '%s\n' "${peers[@]}" | LC_ALL=C.UTF-8 awk '
     function sec(x) { return sprintf(x < 0.01 ? "%.4f" : "%.3f", x); }
     function rate(x) {
         return x >= 1e6 ? sprintf("%.2f M", x / 1e6) : sprintf("%.0f k", x / 1e3);
     }
-    $2 == "failed:" { f = $1; $1 = ""; print "| " f " |" $0 " | | | | | | |";
-                      next }
-    { f = $1; peak = $6 * 1024;
-      printf "| %d | %s | %s (%s) | %s (%s) | %s | %.0f | %.0f | %d |\n", f,
-          sec($2), sec($3), rate(f / $3), sec($4), rate($7 / $4), sec($5),
-          peak / 1e6, peak / f, $7; }'
+    $3 == "failed:" { f = $1; fmt = $2; $1 = ""; $2 = "";
+                      print "| " f " | " fmt " |" $0 " | | | | | | |"; next }
+    { f = $1; peak = $7 * 1024;
+      printf "| %d | %s | %s | %s (%s) | %s (%s) | %s | %.0f | %.0f | %d |\n",
+          f, $2, sec($3), sec($4), rate(f / $4), sec($5), rate($8 / $5),
+          sec($6), peak / 1e6, peak / f, $8; }'
 elif [ -z "$peer" ]; then
     echo
     echo "rt-embree-peer: not built (Embree 3 not found), no peer figures"

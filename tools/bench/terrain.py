@@ -7,6 +7,7 @@ PLY of the same mesh (tools/bench/scale.sh).
     terrain.py N > terrain.scn
     terrain.py N --float32 > terrain.scn
     terrain.py N --ply > terrain.ply
+    terrain.py N --obj > terrain.obj
 
 The heights are a fixed sum of sines over the square [-1, 1]^2 (no
 randomness: the same file every run), at most 0.15; the camera looks down
@@ -24,7 +25,11 @@ vertex_indices`, 0-based); a PLY has no camera or light, so its comments
 say the ones of the .scn (as rt-export's --look-from, --look-at, --up,
 --fov and --light).  It is written a row of cells at a time, with array
 slices, not a facet at a time: N = 3163 (20,009,138 facets, 10,017,796
-vertices, 380 MB) takes about a minute here.
+vertices, 380 MB) takes seconds.  --obj writes the same float32 vertices
+to nine digits (enough to read back as the same float32, not as the same
+double) and the same facets as a Wavefront OBJ, for the sizes whose .scn
+would pass the 1 GiB a scene may weigh (20 million facets: about 1.4 GB
+as --float32, 0.95 GB as --obj).
 """
 import array
 import math
@@ -110,6 +115,23 @@ def scn_float32(n):
     write_tail(out)
 
 
+def obj(n):
+    out = sys.stdout
+    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
+              "# view (rt-export): %s\n" % (n, n, VIEW))
+    for j in range(n + 1):
+        c = float32_row(n, j).tolist()
+        out.write("".join("v %.9g %.9g %.9g\n" % (c[k], c[k + 1], c[k + 2])
+                          for k in range(0, len(c), 3)))
+    for j in range(n):
+        rows = []
+        for i in range(n):
+            v = j * (n + 1) + i + 1             # 1-based, lower left
+            rows.append("f %d %d %d\nf %d %d %d\n"
+                        % (v, v + 1, v + n + 2, v, v + n + 2, v + n + 1))
+        out.write("".join(rows))
+
+
 def little_endian(a):
     if sys.byteorder != "little":
         a.byteswap()
@@ -154,11 +176,11 @@ def ply(n):
 
 
 def main():
-    modes = {"": scn, "--float32": scn_float32, "--ply": ply}
+    modes = {"": scn, "--float32": scn_float32, "--ply": ply, "--obj": obj}
     args = sys.argv[1:]
     if not 1 <= len(args) <= 2 or not args[0].isdigit() or \
             int(args[0]) < 1 or (args + [""])[1] not in modes:
-        sys.exit("usage: terrain.py N [--float32 | --ply] > terrain.scn")
+        sys.exit("usage: terrain.py N [--float32 | --ply | --obj] > FILE")
     modes[(args + [""])[1]](int(args[0]))
 
 
