@@ -36,8 +36,9 @@
 #
 # Then rt-embree-peer (tools/bench/embree-peer, built where Embree 3 is
 # found) on the .scn and OBJ rows (it takes the file's own camera: on an
-# OBJ the automatic one, other rays, see its "rays"): its load, rtcCommitScene (2 threads), render (one thread, as
-# always), whole process and peak.  The files live in a temporary folder,
+# OBJ the automatic one, other rays, see its "rays"): its load,
+# rtcCommitScene (2 threads), render (one thread, as always), whole
+# process and peak.  The files live in a temporary folder,
 # removed as soon as their size is done; the script says how big they were.
 #   tools/bench/scale.sh --sizes 1,5 --runs 3 build
 set -euo pipefail
@@ -76,11 +77,13 @@ fi
 now() { date +%s.%N; }
 col() { cut -d' ' -f"$1" "$work/runs" | median; }
 
+cache() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" 2>/dev/null; }
+cc=$(cache CMAKE_C_COMPILER)
 echo "scale.sh: $(date -u '+%Y-%m-%d %H:%M UTC'), commit" \
      "$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo '?')," \
-     "$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null)" \
-     "$(sed -n 's/^CMAKE_C_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null)"
-echo "machine: $(nproc) cores ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1)," \
+     "$(cache CMAKE_BUILD_TYPE), $("${cc:-cc}" --version 2>/dev/null | head -n 1)"
+cpu=$(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1)
+echo "machine: $(nproc) cores ($cpu," \
      "$(awk '/MemTotal/ { printf "%.1f GB", $2 / 1048576 }' /proc/meminfo));" \
      "load at the start $(cut -d' ' -f1-3 /proc/loadavg); median of $runs runs"
 echo
