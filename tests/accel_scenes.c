@@ -365,6 +365,9 @@ void accel_check_ray(const rt_kernel *kd, const rt_kernel *kf,
                  target.z - origin.z};
     if (d.x == 0 && d.y == 0 && d.z == 0)
         return;
+    /* the brute-force AVX2 loops read the kernels' blocks */
+    ck_assert_int_eq(rt__kernel_prepare_blocks(kd), RT_OK);
+    ck_assert_int_eq(rt__kernel_prepare_blocks(kf), RT_OK);
     for (int kernel = 0; kernel < 2; kernel++) {
         rt_trace_settings brute = {5, 0, (rt_kernel_choice)kernel, NULL, 0,
                                    NULL, 0};

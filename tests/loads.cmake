@@ -5,3 +5,7 @@
 # repeated facets, names shown escaped).  Included from tests/CMakeLists.txt.
 raytrace_add_suite(test_load_budgets INTERNAL)
 raytrace_add_suite(test_load_warnings INTERNAL)
+# What a scene holds and what a load costs in memory (tests/test_memory.c:
+# the materials' table, compact records, page-mapped build arrays, the
+# peak in --stats).
+raytrace_add_suite(test_memory INTERNAL)

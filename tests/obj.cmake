@@ -17,6 +17,9 @@ raytrace_add_suite(test_obj_files)
 # The readers' polygon triangulator and NFF's calls into it
 # (tests/test_triangulate.c).
 raytrace_add_suite(test_triangulate INTERNAL)
+# The exact cross product that decides which faces have an area: its
+# scaling by a power of two is ldexp's, bit for bit (tests/test_exact.c).
+raytrace_add_suite(test_exact INTERNAL)
 # What hostile OBJ and MTL input costs: bytes in against facets, warnings
 # and memory out (tests/test_obj_costs.c).
 raytrace_add_suite(test_obj_costs)

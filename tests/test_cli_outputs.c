@@ -307,8 +307,8 @@ START_TEST(convert_takes_the_tables_forms_and_words)
     } cases[] = {
         {{"--tessellate=0", "a.scn", "b.scn", NULL},
          "--tessellate: expected a number in (0, 1), found 0"},
-        {{"--input-format=ply", "a.scn", "b.scn", NULL},
-         "--input-format: expected scn, nff or obj, found 'ply'"},
+        {{"--input-format=stl", "a.scn", "b.scn", NULL},
+         "--input-format: expected scn, nff, obj or ply, found 'stl'"},
         {{"--nope", "a.scn", "b.scn", NULL},
          "unknown or ambiguous option '--nope'"},
     };

@@ -171,6 +171,69 @@ START_TEST(counts_and_the_end_of_the_text)
 }
 END_TEST
 
+/* The count of rt__lex_count, by reading: the statements, or the tokens
+ * rt__lex_next gives, from where `from` stands. */
+static long count_by_reading(const rt_lexer *from, int statements)
+{
+    rt_lexer lx = *from;
+    rt_token t;
+    long count = 0;
+    while (statements ? rt__lex_statement(&lx, &t) : rt__lex_next(&lx, &t))
+        count++;
+    return count;
+}
+
+START_TEST(a_count_is_what_reading_one_by_one_finds)
+{
+    /* rt__lex_count finds the lines that hold a token, or the starts of
+     * tokens, without cutting them: random texts of the bytes that matter
+     * to the lexer, in every grammar, from the start and from a cursor
+     * within a statement */
+    static const char alphabet[] = " \t\r\v\f\n\n#,,ab1\\";
+    static const unsigned grammars[] = {
+        0, RT_LEX_COMMAS, RT_LEX_LINES, RT_LEX_LINES | RT_LEX_COMMAS,
+        RT_LEX_LINES | RT_LEX_CONTINUATION};
+    rt_test_rng rng = {41};
+    char text[64];
+    for (int i = 0; i < 4000; i++) {
+        int n = rt_test_rng_below(&rng, (int)sizeof text);
+        for (int k = 0; k < n; k++)
+            text[k] = alphabet[rt_test_rng_below(&rng,
+                                                 (int)sizeof alphabet - 1)];
+        text[n] = '\0';
+        if (n > 0 && text[n - 1] == '\r')
+            text[n - 1] = 'a';  /* CR alone at the end: old Mac endings */
+        for (size_t g = 0; g < sizeof grammars / sizeof grammars[0]; g++) {
+            rt_lexer lx;
+            rt_error error;
+            if (rt__lex_open(&lx, text, (size_t)n, "t", grammars[g],
+                             &error) != RT_OK)
+                continue;       /* CR without any LF: refused */
+            for (int step = 0; step < 3; step++) {
+                /* statements: of a grammar of lines only */
+                int kinds = grammars[g] & RT_LEX_LINES ? 2 : 1;
+                for (int statements = 0; statements < kinds; statements++)
+                    if (rt__lex_count(&lx, statements, NULL) !=
+                        count_by_reading(&lx, statements))
+                        ck_abort_msg("grammar %u, step %d: %ld %s counted, "
+                                     "%ld read, in `%s`", grammars[g], step,
+                                     rt__lex_count(&lx, statements, NULL),
+                                     statements ? "statements" : "tokens",
+                                     count_by_reading(&lx, statements),
+                                     text);
+                rt_token t;         /* on: into a statement, then past it */
+                if (grammars[g] & RT_LEX_LINES)
+                    step == 0 ? rt__lex_statement(&lx, &t)
+                              : rt__lex_next(&lx, &t);
+                else
+                    rt__lex_next(&lx, &t);
+            }
+            rt__lex_close(&lx);
+        }
+    }
+}
+END_TEST
+
 START_TEST(the_lexer_refuses_bytes_no_reader_can_take)
 {
     static const struct {
@@ -306,6 +369,7 @@ static Suite *lexer_suite(void)
     tcase_add_test(tc,
                    a_backslash_at_the_end_of_a_line_continues_the_statement);
     tcase_add_test(tc, counts_and_the_end_of_the_text);
+    tcase_add_test(tc, a_count_is_what_reading_one_by_one_finds);
     suite_add_tcase(s, tc);
     tc = tcase_create("bytes");
     tcase_add_test(tc, the_lexer_refuses_bytes_no_reader_can_take);

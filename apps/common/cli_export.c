@@ -41,8 +41,8 @@ void cli_export_init(cli_export *ex, const cli_program *program,
 /* ------------------------------------------------------------------ */
 /* Loading                                                             */
 
-rt_status cli_read_scene_text(FILE *in, const char *name, char **text,
-                              size_t *length, rt_error *error)
+rt_status cli_read_scene_text(FILE *in, const char *name, int binary,
+                              char **text, size_t *length, rt_error *error)
 {
     size_t capacity = FIRST_CHUNK, used = 0;
     char *bytes = malloc(capacity + 1);     /* and a NUL after the bytes */
@@ -52,7 +52,8 @@ rt_status cli_read_scene_text(FILE *in, const char *name, char **text,
         if (used < capacity)
             break;
         /* /dev/zero or a huge binary: the parser's check names it */
-        if (used > RT_MAX_SCENE_BYTES || memchr(bytes + used - got, 0, got))
+        if (used > RT_MAX_SCENE_BYTES ||
+            (!binary && memchr(bytes + used - got, 0, got)))
             break;
         char *bigger = capacity < SIZE_MAX / 2
                            ? realloc(bytes, capacity * 2 + 1)
@@ -96,8 +97,9 @@ static rt_status load_standard_input(const rt_load_options *given,
     char *text;
     size_t length;
     *scene = NULL;
-    rt_status status = cli_read_scene_text(stdin, "<stdin>", &text, &length,
-                                           error);
+    rt_status status = cli_read_scene_text(
+        stdin, "<stdin>", options.format == RT_SCENE_FORMAT_PLY, &text,
+        &length, error);
     if (status != RT_OK)
         return status;
     status = rt_scene_parse(text, length, "<stdin>", &options, scene, error);
@@ -159,7 +161,11 @@ int cli_export_load(cli_export *ex, int check_output)
     ex->report = (cli_render_report){
         .program = ex->program->name, .scene = ex->name,
         .format = ex->settings->format, .settings = ex->settings,
-        .load_seconds = cli_seconds_since(start)};
+        .load_seconds = cli_seconds_since(start),
+        .load_peak_bytes = cli_peak_bytes()};
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(ex->scene, &info);
+    ex->report.facet_count = info.facet_count;
     return CLI_CONTINUE;
 }
 
@@ -309,6 +315,7 @@ static int same_file_as(const char *path, int fd)
 static void report(cli_export *ex, const rt_render_stats *stats)
 {
     cli_stats wanted = ex->settings->stats;
+    ex->report.peak_bytes = cli_peak_bytes();
     if (wanted != CLI_STATS_NONE && ex->config.report != NULL)
         ex->config.report(ex->config.user, stderr);
     if (wanted == CLI_STATS_TEXT)

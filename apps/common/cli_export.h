@@ -127,14 +127,14 @@ void cli_export_release(cli_export *ex);
 
 /*
  * Reads the whole of `in` (a scene: at most a little more than
- * RT_MAX_SCENE_BYTES, or up to a chunk holding a NUL byte, so that the
- * parser names what is wrong) into a new buffer *text (free() it) of
- * *length bytes and a NUL after them.  Returns RT_OK, or RT_ERR_NOMEM
- * ("NAME: out of memory reading the scene") or RT_ERR_IO ("NAME: cannot
- * read: REASON") with *error filled and nothing allocated.  `name` is
- * escaped in messages.
+ * RT_MAX_SCENE_BYTES, or up to a chunk holding a NUL byte unless `binary`,
+ * a PLY's body, so that the parser names what is wrong) into a new buffer
+ * *text (free() it) of *length bytes and a NUL after them.  Returns RT_OK,
+ * or RT_ERR_NOMEM ("NAME: out of memory reading the scene") or RT_ERR_IO
+ * ("NAME: cannot read: REASON") with *error filled and nothing allocated.
+ * `name` is escaped in messages.
  */
-rt_status cli_read_scene_text(FILE *in, const char *name, char **text,
-                              size_t *length, rt_error *error);
+rt_status cli_read_scene_text(FILE *in, const char *name, int binary,
+                              char **text, size_t *length, rt_error *error);
 
 #endif /* RAYTRACE_CLI_EXPORT_H */

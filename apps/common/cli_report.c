@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "cli_text.h"
 
@@ -98,6 +99,14 @@ static const char *kernel_name(rt_kernel_choice k)
     return k == RT_KERNEL_SCALAR ? "scalar" : "auto";
 }
 
+uint64_t cli_peak_bytes(void)
+{
+    struct rusage usage;
+    if (getrusage(RUSAGE_SELF, &usage) != 0 || usage.ru_maxrss <= 0)
+        return 0;
+    return (uint64_t)usage.ru_maxrss * 1024;    /* Linux: kilobytes */
+}
+
 static const char *accel_name(rt_accel a)
 {
     return a == RT_ACCEL_NONE     ? "none"
@@ -152,6 +161,14 @@ void cli_print_stats_text(FILE *out, const rt_render_stats *s,
             s->seconds, o->threads == 0 ? "all" : "the given",
             o->kernel == RT_KERNEL_SCALAR ? "scalar" : "fast",
             precision_name(o->precision), r->write_seconds);
+    if (r->peak_bytes > 0)
+        fprintf(out,
+                "memory: peak %.1f MB (%.1f bytes per facet of %d), %.1f MB "
+                "by the end of the load\n",
+                r->peak_bytes / 1e6,
+                r->facet_count > 0 ? (double)r->peak_bytes / r->facet_count
+                                   : 0.0,
+                r->facet_count, r->load_peak_bytes / 1e6);
     if (!s->accel_used)
         return;
     uint64_t queries = s->accel_queries ? s->accel_queries : 1;
@@ -284,5 +301,13 @@ void cli_print_stats_json(FILE *out, const rt_render_stats *s,
     print_json_group(out, s, "tests");
     fputc(',', out);
     print_json_octree(out, s);
+    if (r->peak_bytes > 0)
+        fprintf(out,
+                ",\"memory\":{\"peak_bytes\":%llu,\"load_peak_bytes\":%llu,"
+                "\"facets\":%d,\"peak_bytes_per_facet\":%.6g}",
+                (unsigned long long)r->peak_bytes,
+                (unsigned long long)r->load_peak_bytes, r->facet_count,
+                r->facet_count > 0 ? (double)r->peak_bytes / r->facet_count
+                                   : 0.0);
     fputs("}\n", out);
 }

@@ -8,6 +8,7 @@
 #ifndef RAYTRACE_CLI_REPORT_H
 #define RAYTRACE_CLI_REPORT_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "cli.h"
@@ -54,7 +55,17 @@ typedef struct cli_render_report {
     int width, height;          /* the image written (the region's size) */
     const cli_settings *settings;
     double load_seconds, write_seconds;
+    /* The process's peak resident memory in bytes (getrusage's
+     * ru_maxrss) when the load ended and when the report is printed,
+     * and the scene's facets (as in the file), for bytes per facet; 0:
+     * not known (the line is left out). */
+    uint64_t load_peak_bytes, peak_bytes;
+    int facet_count;
 } cli_render_report;
+
+/* The process's peak resident memory so far, in bytes; 0 when the system
+ * does not say. */
+uint64_t cli_peak_bytes(void);
 
 /* The statistics as lines of text, on `out`. */
 void cli_print_stats_text(FILE *out, const rt_render_stats *stats,

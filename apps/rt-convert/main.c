@@ -1,5 +1,5 @@
 /*
- * rt-convert - write any scene the library reads (.scn, NFF, OBJ) as a
+ * rt-convert - write any scene the library reads (.scn, NFF, OBJ, PLY) as a
  * course .scn file, for tools that read only that format.
  *
  * What the course's records cannot hold (lights beyond the first,
@@ -41,9 +41,9 @@ static const cli_option convert_options[] = {
 
 static const cli_program program = {
     "rt-convert", "IN OUT.scn",
-    "Reads the scene IN (a .scn scene, an NFF file or a Wavefront OBJ\n"
-    "model, by its extension or --input-format) and writes it as a .scn\n"
-    "scene at OUT.scn, then prints OUT.scn.  OUT `-' writes the scene to\n"
+    "Reads the scene IN (a .scn scene, an NFF file, a Wavefront OBJ model\n"
+    "or a PLY mesh, by its extension or --input-format) and writes it as a\n"
+    ".scn scene at OUT.scn, then prints OUT.scn.  OUT `-' writes the scene to\n"
     "standard output and nothing else there.  A device or FIFO is written\n"
     "directly, a file is replaced atomically, keeping its mode, owner and\n"
     "links.  The output is never a file the scene was read from (IN, an\n"

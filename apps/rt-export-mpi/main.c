@@ -81,6 +81,15 @@ static rt_status load_on_rank_0(void *user, const cli_export *ex,
                                 rt_scene **scene, rt_error *error)
 {
     rank_state *r = user;
+    /* The format first, as rt_scene_load finds it: a file's extension that
+     * names none is refused before it is read, a PLY is read binary. */
+    rt_scene_format format = ex->settings->load.format;
+    const char *base = strrchr(ex->operand, '/');
+    base = base != NULL ? base + 1 : ex->operand;
+    if (format == RT_SCENE_FORMAT_AUTO && !ex->from_stdin &&
+        strrchr(base, '.') != NULL && strrchr(base, '.') != base &&
+        rt_scene_format_from_path(ex->operand, &format, error) != RT_OK)
+        return error->status;
     FILE *file = ex->from_stdin ? stdin : fopen(ex->operand, "rb");
     if (file == NULL) {
         char shown[RT_ERROR_MESSAGE_SIZE / 2];
@@ -92,8 +101,9 @@ static rt_status load_on_rank_0(void *user, const cli_export *ex,
                  strerror(errno));
         return RT_ERR_IO;
     }
-    rt_status status = cli_read_scene_text(file, ex->name, &r->input.text,
-                                           &r->input.length, error);
+    rt_status status =
+        cli_read_scene_text(file, ex->name, format == RT_SCENE_FORMAT_PLY,
+                            &r->input.text, &r->input.length, error);
     if (!ex->from_stdin)
         fclose(file);
     if (status != RT_OK)

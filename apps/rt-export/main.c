@@ -33,10 +33,10 @@ static const cli_option export_options[] = {
 
 static const cli_program program = {
     "rt-export", "SCENE",
-    "Renders SCENE (a .scn scene, an NFF file or a Wavefront OBJ model, by\n"
-    "its extension) to an image and prints the path it wrote.  SCENE `-'\n"
-    "reads the scene from standard input (then -o is needed).  The image\n"
-    "goes to OUT (default: the scene's name with .ppm, or .png with\n"
+    "Renders SCENE (a .scn scene, an NFF file, a Wavefront OBJ model or a\n"
+    "PLY mesh, by its extension) to an image and prints the path it wrote.\n"
+    "SCENE `-' reads the scene from standard input (then -o is needed).  The\n"
+    "image goes to OUT (default: the scene's name with .ppm, or .png with\n"
     "--format png, in the current directory; `-o -' writes it to standard\n"
     "output and nothing else there); a device, FIFO or socket is\n"
     "written directly, a file is replaced atomically, keeping its mode,\n"

@@ -199,7 +199,9 @@ typedef enum rt_scene_format {
     RT_SCENE_FORMAT_AUTO = 0,   /* from the name's extension */
     RT_SCENE_FORMAT_SCN = 1,    /* the course's .scn (docs/scene-format.md) */
     RT_SCENE_FORMAT_NFF = 2,    /* Eric Haines' Neutral File Format (.nff) */
-    RT_SCENE_FORMAT_OBJ = 3     /* Wavefront OBJ (.obj) with its .mtl */
+    RT_SCENE_FORMAT_OBJ = 3,    /* Wavefront OBJ (.obj) with its .mtl */
+    RT_SCENE_FORMAT_PLY = 4     /* Stanford polygon files (.ply), ASCII or
+                                   binary */
 } rt_scene_format;
 
 /* Largest input a loader reads, in bytes (1 GiB): line and column numbers
@@ -305,14 +307,15 @@ typedef struct rt_load_options {
 RT_API void rt_load_options_init(rt_load_options *options);
 
 /* The format a path's extension names, case-insensitively (.scn, .nff,
- * .obj); RT_ERR_FORMAT for another or none (*format untouched), with a
- * message naming the path in *error (may be NULL).  Thread-safe. */
+ * .obj, .ply); RT_ERR_FORMAT for another or none (*format untouched), with
+ * a message naming the path and listing the formats in *error (may be
+ * NULL).  Thread-safe. */
 RT_API rt_status rt_scene_format_from_path(const char *path,
                                            rt_scene_format *format,
                                            rt_error *error);
 
-/* The lower-case name of a format ("scn", "nff", "obj"; "auto"; "unknown"
- * for a value the enum does not name).  Thread-safe. */
+/* The lower-case name of a format ("scn", "nff", "obj", "ply"; "auto";
+ * "unknown" for a value the enum does not name).  Thread-safe. */
 RT_API const char *rt_scene_format_name(rt_scene_format format);
 
 /*
@@ -341,7 +344,8 @@ RT_API rt_status rt_scene_read_number(const char *text, size_t length,
  * locates the files the scene names from (an OBJ's material libraries);
  * without a resolver no file is read (a warning says so).  With
  * RT_SCENE_FORMAT_AUTO (the default) the format comes from `name`'s
- * extension (.scn when it has none or names no format).  Numbers are read
+ * extension (.scn when it has none or names no format: here the name is
+ * a label; rt_scene_load refuses a file's unknown extension).  Numbers are read
  * in the C locale whatever the process's locale.  `options` may be NULL
  * (the defaults, as rt_load_options_init sets them).  Every field of the
  * options is checked whatever the format reads, and one outside its
@@ -360,10 +364,11 @@ RT_API rt_status rt_scene_parse(const char *text, size_t length,
                                 rt_scene **scene, rt_error *error);
 
 /* Reads the file at `path` (at most RT_MAX_SCENE_BYTES, and stopping at
- * the first NUL byte, which no scene file holds; FIFOs and terminals are
- * read to their end) and parses it as rt_scene_parse does, in the format
- * its extension names by default (see rt_scene_format_from_path; .scn
- * when it names none); messages name `path`.  The files it names are read
+ * the first NUL byte, which no text scene file holds, except for PLY,
+ * whose body may be binary; FIFOs and terminals are read to their end) and
+ * parses it as rt_scene_parse does, in the format its extension names by
+ * default (see rt_scene_format_from_path; .scn when it has no extension;
+ * RT_ERR_FORMAT, before anything is read, for one that names no format); messages name `path`.  The files it names are read
  * by the options' resolver, rt_resolve_in_folder when they give none (or
  * `options` is NULL).  The scene's first source is the file at `path`.
  * A NULL `path` or `scene` is RT_ERR_ARGUMENT.  Thread-safe. */

@@ -19,6 +19,12 @@
  */
 rt_vec3 rt__exact_cross(rt_vec3 a, rt_vec3 b, rt_vec3 c);
 
+/* The unit normal of the facet (a, b, c), in the direction of
+ * (b - a) x (c - a): rt__exact_cross normalised, accurate for any shape
+ * (slivers and needles included); zero for a zero-area facet.  The one
+ * definition the scene and its kernels share.  Thread-safe. */
+rt_vec3 rt__facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c);
+
 /* Non-zero exactly when rt__exact_cross(a, b, c) is not the zero vector
  * (the triangle has an area: the scene builder keeps it), decided by a
  * floating-point cross product when it is far from zero, by the same

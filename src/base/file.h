@@ -36,6 +36,14 @@ rt_status rt__read_text_file_identified(const char *path, char **data,
                                         rt_file_identity *identity,
                                         rt_error *error);
 
+/* The same with the choice: `text` non-zero reads as
+ * rt__read_text_file_identified; zero reads binary data (NUL bytes and
+ * all) but stops as early past RT_MAX_SCENE_BYTES (a PLY's body). */
+rt_status rt__read_scene_file_identified(const char *path, int text,
+                                         char **data, size_t *length,
+                                         rt_file_identity *identity,
+                                         rt_error *error);
+
 /* The extension of the last component of `path`, its dot included
  * (".scn"), or NULL when it has none (no dot, or only a leading one, as in
  * ".profile"). */

@@ -69,46 +69,52 @@ static rt_status text_check(const char *text, size_t length, const char *name,
                              "the file is encoded in %s (it starts with that "
                              "byte-order mark): save it as ASCII or UTF-8",
                              encoding);
-    int line = 1, column = 1;
-    size_t cr_alone = 0, lf = 0;
-    for (size_t i = 0; i < length; i++) {
-        if (b[i] == 0) {
-            int utf16 = looks_utf16(b, length);
-            return rt__error_set(
-                error, RT_ERR_FORMAT, name, line, column,
-                utf16 ? "expected text, found NUL bytes between ASCII "
-                        "characters: the file looks UTF-16 encoded (without "
-                        "a byte-order mark); save it as ASCII or UTF-8"
-                      : "expected text, found a NUL byte: the file is "
-                        "binary, not a scene");
-        }
-        if (b[i] == '\n') {
-            lf++;
-            line++;
-            column = 1;
-        } else {
-            cr_alone += b[i] == '\r' && (i + 1 == length || b[i + 1] != '\n');
-            column++;
-        }
+    /* memchr finds the rare bytes at memory speed; the line and column of
+     * a NUL are counted only when there is one */
+    const unsigned char *nul = memchr(b, 0, length);
+    if (nul != NULL) {
+        int line = 1;
+        const unsigned char *line_start = b;
+        for (const unsigned char *c = b; c < nul; c++)
+            if (*c == '\n') {
+                line++;
+                line_start = c + 1;
+            }
+        int column = (int)(nul - line_start) + 1;
+        int utf16 = looks_utf16(b, length);
+        return rt__error_set(
+            error, RT_ERR_FORMAT, name, line, column,
+            utf16 ? "expected text, found NUL bytes between ASCII "
+                    "characters: the file looks UTF-16 encoded (without "
+                    "a byte-order mark); save it as ASCII or UTF-8"
+                  : "expected text, found a NUL byte: the file is "
+                    "binary, not a scene");
     }
-    if (cr_alone > 0 && lf == 0)
-        return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,
-                             "the file has old Mac line endings (CR only, "
-                             "%zu of them, no LF): convert them to LF or "
-                             "CRLF", cr_alone);
+    if (length > 0 && memchr(b, '\n', length) == NULL) {
+        /* no LF at all: every CR stands alone */
+        size_t cr_alone = 0;
+        for (size_t i = 0; i < length; i++)
+            cr_alone += b[i] == '\r';
+        if (cr_alone > 0)
+            return rt__error_set(error, RT_ERR_FORMAT, name, 0, 0,
+                                 "the file has old Mac line endings (CR "
+                                 "only, %zu of them, no LF): convert them "
+                                 "to LF or CRLF", cr_alone);
+    }
     return RT_OK;
 }
 
-static int is_blank(int c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
+/* What each byte is to the lexer, one table for every format: blanks
+ * (space, tab, CR, VT, FF), the newline, `#` and the comma (which ends a
+ * token only with RT_LEX_COMMAS: rt_lexer's `stops`). */
+enum { BLANK = 1, NEWLINE = 2, HASH = 4, COMMA = 8 };
+static const unsigned char byte_class[256] = {
+    ['\t'] = BLANK, ['\n'] = NEWLINE, ['\v'] = BLANK, ['\f'] = BLANK,
+    ['\r'] = BLANK, [' '] = BLANK,     ['#'] = HASH,    [','] = COMMA};
 
-/* Whether c ends a token (besides the end of the text or of the line). */
-static int ends_token(const rt_lexer *lx, int c)
+static int is_blank(unsigned char c)
 {
-    return is_blank(c) || c == '\n' || c == '#' ||
-           (c == ',' && (lx->flags & RT_LEX_COMMAS));
+    return byte_class[c] & BLANK;
 }
 
 /* RT_LEX_LINES: the cursor at the start of the line at `start`. */
@@ -136,6 +142,7 @@ rt_status rt__lex_open(rt_lexer *lx, const char *text, size_t length,
     lx->end = text + length;
     lx->line = 1;
     lx->flags = flags;
+    lx->stops = BLANK | NEWLINE | HASH | (flags & RT_LEX_COMMAS ? COMMA : 0);
     const char *first = text;
     if (length >= 3 && memcmp(text, utf8_bom, 3) == 0)
         first += 3;         /* a UTF-8 byte-order mark: not a column */
@@ -156,13 +163,13 @@ void rt__lex_close(rt_lexer *lx)
 /* The token that starts at lx->at (not a blank, '#' or a line's end). */
 static void take_token(rt_lexer *lx, const char *limit, rt_token *t)
 {
-    const char *s = lx->at;
-    if (*s == ',' && (lx->flags & RT_LEX_COMMAS))
-        lx->at++;
-    else
-        while (lx->at < limit && !ends_token(lx, (unsigned char)*lx->at))
-            lx->at++;
-    *t = (rt_token){s, (size_t)(lx->at - s), lx->line,
+    const char *s = lx->at, *c = s + 1;
+    unsigned stops = lx->stops;
+    if (!(byte_class[(unsigned char)*s] & stops & COMMA))
+        while (c < limit && !(byte_class[(unsigned char)*c] & stops))
+            c++;
+    lx->at = c;
+    *t = (rt_token){s, (size_t)(c - s), lx->line,
                     (int)(s - lx->line_start) + 1};
 }
 
@@ -171,7 +178,8 @@ static int stream_next(rt_lexer *lx, rt_token *t)
 {
     const char *c = lx->at;
     for (;;) {
-        while (c < lx->end && (is_blank((unsigned char)*c) || *c == '\n')) {
+        while (c < lx->end && (byte_class[(unsigned char)*c] &
+                               (BLANK | NEWLINE))) {
             if (*c == '\n') {
                 lx->line++;
                 lx->line_start = c + 1;
@@ -258,14 +266,76 @@ int rt__lex_statement(rt_lexer *lx, rt_token *first)
     return 0;
 }
 
+/* Whether the count is to poll `cancel` at `count` (lexer.h). */
+static int poll_now(long count, const rt_cancel *cancel)
+{
+    return count % (16 * RT_LOAD_POLL) == 0 && cancel != NULL &&
+           rt_cancel_requested(cancel);
+}
+
+/* The statements from the start of a line on when no line continues
+ * another: the lines that hold a token, found without cutting tokens
+ * (the first byte that is no blank is neither `#` nor the line's end). */
+static long count_lines(const rt_lexer *lx, const rt_cancel *cancel)
+{
+    const char *c = lx->at, *end = lx->end;
+    long count = 0;
+    if (poll_now(count, cancel))
+        return -1;
+    while (c < end) {
+        while (c < end && is_blank((unsigned char)*c))
+            c++;
+        if (c < end && *c != '\n' && *c != '#' && poll_now(++count, cancel))
+            return -1;
+        const char *eol = memchr(c, '\n', (size_t)(end - c));
+        if (eol == NULL)
+            break;
+        c = eol + 1;
+    }
+    return count;
+}
+
+/* The tokens of a stream from the cursor on, cut as stream_next cuts
+ * them without making them. */
+static long count_tokens(const rt_lexer *lx, const rt_cancel *cancel)
+{
+    const char *c = lx->at, *end = lx->end;
+    unsigned stops = lx->stops;
+    long count = 0;
+    if (poll_now(count, cancel))
+        return -1;
+    while (c < end) {
+        unsigned kind = byte_class[(unsigned char)*c];
+        if (kind & (BLANK | NEWLINE)) {
+            c++;
+        } else if (kind & HASH) {
+            const char *eol = memchr(c, '\n', (size_t)(end - c));
+            c = eol != NULL ? eol : end;
+        } else {
+            if (poll_now(++count, cancel))
+                return -1;
+            c++;
+            if (!(kind & stops & COMMA))
+                while (c < end && !(byte_class[(unsigned char)*c] & stops))
+                    c++;
+        }
+    }
+    return count;
+}
+
 long rt__lex_count(const rt_lexer *from, int statements,
                    const rt_cancel *cancel)
 {
+    if (!(from->flags & RT_LEX_LINES) && !statements)
+        return count_tokens(from, cancel);
+    if ((from->flags & RT_LEX_LINES) && statements &&
+        !(from->flags & RT_LEX_CONTINUATION) && !from->open &&
+        from->at == from->line_start)
+        return count_lines(from, cancel);
     rt_lexer lx = *from;
     rt_token t;
     for (long count = 0;; count++) {
-        if (count % (16 * RT_LOAD_POLL) == 0 && cancel != NULL &&
-            rt_cancel_requested(cancel))
+        if (poll_now(count, cancel))
             return -1;
         if (!(statements ? rt__lex_statement(&lx, &t) : rt__lex_next(&lx, &t)))
             return count;

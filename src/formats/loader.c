@@ -3,7 +3,10 @@
  * extension or the caller's choice, the file read with the limits every
  * reader shares, the list of files the load reads (resolve.h: the scene
  * file, then those it names, through the options' resolver), and the
- * dispatch to the format's own module (scn.c, nff.c, obj.c).  Each reader
+ * dispatch to the format's own module (scn.c, nff.c, obj.c, ply.c).  A
+ * file whose extension names no format is refused, listing the formats; a
+ * file without one, and text from memory whose name names no format (a
+ * name there is a label), are read as .scn.  Each reader
  * is a client of the scene builder, and ends with rt__reader_finish
  * (reader.c).
  */
@@ -101,6 +104,8 @@ const char *rt_scene_format_name(rt_scene_format format)
         return "nff";
     case RT_SCENE_FORMAT_OBJ:
         return "obj";
+    case RT_SCENE_FORMAT_PLY:
+        return "ply";
     case RT_SCENE_FORMAT_AUTO:
         return "auto";
     }
@@ -111,7 +116,8 @@ static rt_status refuse_scene_extension(const char *path, rt_error *error)
 {
     return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
                          "cannot tell the scene format: expected the "
-                         "extension .scn, .nff or .obj");
+                         "extension .scn, .nff, .obj or .ply (or give the "
+                         "format: --input-format)");
 }
 
 rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
@@ -132,13 +138,36 @@ rt_status rt_scene_format_from_path(const char *path, rt_scene_format *format,
         rt_scene_format format;
     } known[] = {{"scn", RT_SCENE_FORMAT_SCN},
                  {"nff", RT_SCENE_FORMAT_NFF},
-                 {"obj", RT_SCENE_FORMAT_OBJ}};
+                 {"obj", RT_SCENE_FORMAT_OBJ},
+                 {"ply", RT_SCENE_FORMAT_PLY}};
     for (size_t i = 0; i < sizeof known / sizeof known[0]; i++)
         if (strcmp(extension, known[i].extension) == 0) {
             *format = known[i].format;
             return RT_OK;
         }
     return refuse_scene_extension(path, error);
+}
+
+/* The format `options` give, or that of `name`'s extension; .scn for a
+ * name without one (or none).  An extension that names no format is
+ * RT_ERR_FORMAT with `strict` (a file's path), .scn without (a name given
+ * to text in memory, which callers use as a label). */
+static rt_status format_of(const char *name, const rt_load_options *options,
+                           int strict, rt_scene_format *format,
+                           rt_error *error)
+{
+    *format = options->format;
+    if (*format != RT_SCENE_FORMAT_AUTO)
+        return RT_OK;
+    *format = RT_SCENE_FORMAT_SCN;
+    if (name == NULL || rt__path_extension(name) == NULL)
+        return RT_OK;
+    if (!strict) {
+        /* on failure *format stays .scn */
+        (void)rt_scene_format_from_path(name, format, NULL);
+        return RT_OK;
+    }
+    return rt_scene_format_from_path(name, format, error);
 }
 
 /* The load of `text` with the options taken: `scene_file` (may be NULL)
@@ -154,11 +183,10 @@ static rt_status parse_taken(const char *text, size_t length,
         return rt__error_set(error, RT_ERR_CANCELLED,
                              name ? name : "<memory>", 0, 0,
                              "the load was cancelled");
-    rt_scene_format format = options->format;
-    if (format == RT_SCENE_FORMAT_AUTO &&
-        (name == NULL || rt_scene_format_from_path(name, &format,
-                                                   NULL) != RT_OK))
-        format = RT_SCENE_FORMAT_SCN;
+    rt_scene_format format;
+    rt_status status = format_of(name, options, 0, &format, error);
+    if (status != RT_OK)
+        return status;
     rt_files files;
     if (rt__files_init(&files,
                        options->resolve ? options->resolve : default_resolve,
@@ -166,7 +194,6 @@ static rt_status parse_taken(const char *text, size_t length,
                        scene_file) != RT_OK)
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0,
                              "out of memory");
-    rt_status status;
     switch (format) {
     case RT_SCENE_FORMAT_SCN:
         status = rt__scn_parse(text, length, name, options, scene, error);
@@ -177,6 +204,9 @@ static rt_status parse_taken(const char *text, size_t length,
         break;
     case RT_SCENE_FORMAT_NFF:
         status = rt__nff_parse(text, length, name, options, scene, error);
+        break;
+    case RT_SCENE_FORMAT_PLY:
+        status = rt__ply_parse(text, length, name, options, scene, error);
         break;
     default:
         status = rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
@@ -218,11 +248,19 @@ rt_status rt_scene_load(const char *path, const rt_load_options *options,
     rt_status status = take_options(options, &taken, path, error);
     if (status != RT_OK)
         return status;
+    /* The format first: an unknown extension is not read at all, and
+     * a PLY's body is binary (no NUL stops its read). */
+    rt_scene_format format;
+    status = format_of(path, &taken, 1, &format, error);
+    if (status != RT_OK)
+        return status;
     char *data;
     size_t length;
     rt_file_identity identity;
-    status = rt__read_text_file_identified(path, &data, &length, &identity,
-                                           error);
+    status = rt__read_scene_file_identified(path,
+                                            format != RT_SCENE_FORMAT_PLY,
+                                            &data, &length, &identity,
+                                            error);
     if (status != RT_OK)
         return status;
     rt_scene_source self = {path, identity.device, identity.inode, length};

@@ -79,33 +79,54 @@ static int is_word(const token *t, const char *word)
     return rt__token_is(t, word);
 }
 
-/* A token as a finite number; `what` names it ("the sphere's radius"). */
+/* What a number is for in a message: `what`, and with `axis` (x, y or
+ * z; 0 for none) "what (axis)".  Made only for a message: a file of
+ * millions of numbers formats none. */
+static const char *number_for(const char *what, char axis, char out[128])
+{
+    if (axis == 0)
+        return what;
+    snprintf(out, 128, "%s (%c)", what, axis);
+    return out;
+}
+
+/* A token as a finite number; `what` and `axis` name it ("the sphere's
+ * radius"). */
 static rt_status to_number(parser *p, const token *t, const char *what,
-                           double *value)
+                           char axis, double *value)
 {
     rt_status status = rt__lex_number(&p->lex, t, value);
     if (status == RT_OK || status == RT_ERR_LIMIT)
         return status == RT_OK
                    ? RT_OK
                    : rt__nff_fail(p, status, t, rt__number_expected(status));
-    char expected[160];
+    char expected[160], part[128];
     snprintf(expected, sizeof expected, "%s for %s",
-             rt__number_expected(status), what);
+             rt__number_expected(status), number_for(what, axis, part));
     return rt__nff_fail(p, status, t, expected);
+}
+
+/* The next token as a number for `what` (and `axis`), at *where when
+ * `where` is not NULL. */
+static rt_status next_number(parser *p, const char *what, char axis,
+                             double *value, token *where)
+{
+    token t;
+    if (!next_token(p, &t)) {
+        char expected[160], part[128];
+        snprintf(expected, sizeof expected, "a number for %s",
+                 number_for(what, axis, part));
+        return unexpected_end(p, expected);
+    }
+    if (where != NULL)
+        *where = t;
+    return to_number(p, &t, what, axis, value);
 }
 
 rt_status rt__nff_number(parser *p, const char *what, double *value,
                          token *where)
 {
-    token t;
-    char expected[160];
-    snprintf(expected, sizeof expected, "a number for %s", what);
-    rt_status status = expect_token(p, &t, expected);
-    if (status != RT_OK)
-        return status;
-    if (where != NULL)
-        *where = t;
-    return to_number(p, &t, what, value);
+    return next_number(p, what, 0, value, where);
 }
 
 rt_status rt__nff_integer(parser *p, const char *what, long min, long max,
@@ -136,10 +157,8 @@ rt_status rt__nff_triple(parser *p, const char *what, int bounded,
     double c[3];
     static const char axis[] = "xyz";
     for (int i = 0; i < 3; i++) {
-        char part[128];
-        snprintf(part, sizeof part, "%s (%c)", what, axis[i]);
         token t;
-        rt_status status = rt__nff_number(p, part, &c[i], &t);
+        rt_status status = next_number(p, what, axis[i], &c[i], &t);
         if (status != RT_OK)
             return status;
         if (i == 0 && where != NULL)

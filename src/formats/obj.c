@@ -25,18 +25,9 @@
 #include <string.h>
 
 #include "base/exact.h"
-#include "formats/framing.h"
+#include "formats/mesh.h"
 #include "formats/obj.h"
 #include "base/vecmath.h"
-
-/* The automatic view (docs/formats.md): from the front (+z), to the right
- * (+x) and above (+y, OBJ's usual up), the horizontal field of view. */
-#define VIEW_X 0.5
-#define VIEW_Y 0.5
-#define VIEW_Z 1.0
-#define VIEW_FOV_DEGREES 40.0
-#define VIEW_MARGIN 1.05
-#define DEFAULT_SIDE 512
 
 static rt_status refuse(reader *r, rt_status status, const token *t,
                         int column_offset, const char *fmt, ...)
@@ -254,8 +245,7 @@ static rt_status add_facet(reader *r, int a, int b, int c, int line)
     if (r->current >= 0) {
         *f = r->materials[r->current].look;
     } else {
-        memset(f, 0, sizeof *f);
-        f->color = (rt_rgb8){DEFAULT_GREY, DEFAULT_GREY, DEFAULT_GREY};
+        rt__mesh_default_look(f);
     }
     f->vertex[0] = a;
     f->vertex[1] = b;
@@ -309,33 +299,10 @@ static rt_status face(reader *r)
                              "expected at least 3 vertices for the face, "
                              "found %d", n);
     }
-    /* A corner repeated next to itself bounds nothing. */
-    int *p = r->polygon, m = 0;
-    for (int i = 0; i < n; i++)
-        if (m == 0 || p[i] != p[m - 1])
-            p[m++] = p[i];
-    while (m > 1 && p[m - 1] == p[0])
-        m--;
-    if (m < 3) {
-        rt__obj_count(&r->few_corners, r->name, keyword.line, keyword.column,
-                      "this face has fewer than 3 distinct corners and is "
-                      "left out");
-        return RT_OK;
-    }
-    if (m == 3) {
-        if (!rt__triangle_has_area(r->vertices[p[0]], r->vertices[p[1]],
-                                   r->vertices[p[2]])) {
-            rt__obj_count(&r->no_area, r->name, keyword.line, keyword.column,
-                          "this face has no area (its corners are on a "
-                          "line) and is left out");
-            return RT_OK;
-        }
-        return add_facet(r, p[0], p[1], p[2], keyword.line);
-    }
     face_sink sink = {r, keyword.line};
-    rt_tri_result result;
-    status = rt__triangulate(&r->triangulator, r->vertices, p, m, emit_facet,
-                             &sink, &result);
+    rt_face_outcome outcome;
+    status = rt__mesh_face(&r->triangulator, r->vertices, r->polygon, n,
+                           emit_facet, &sink, &outcome);
     if (status == RT_ERR_NOMEM)
         return rt__obj_out_of_memory(r);
     if (status == RT_ERR_CANCELLED)
@@ -344,113 +311,14 @@ static rt_status face(reader *r)
                              "the load was cancelled");
     if (status != RT_OK)
         return status;
-    if (result.facets == 0)
-        rt__obj_count(&r->no_area, r->name, keyword.line, keyword.column,
-                      "this face has no area (its corners are on a line, or "
-                      "coincide) and is left out");
-    else if (result.over_budget)
-        rt__obj_count(&r->over_budget, r->name, keyword.line, keyword.column,
-                      "the load's budget for cutting non-convex polygons "
-                      "(%d corner tests per byte of the file, plus %d) is "
-                      "spent: this polygon is cut without looking for ears "
-                      "(each chain of corners split at its middle), which "
-                      "may cover what it does not",
-                      RT_TRI_WORK_PER_BYTE, RT_TRI_WORK_FLOOR);
-    else if (result.crossing)
-        rt__obj_count(&r->fanned, r->name, keyword.line, keyword.column,
-                      "this polygon crosses itself or has no area: it is "
-                      "triangulated as a fan from its first corner, which "
-                      "may cover what it does not");
-    return RT_OK;
-}
-
-/* ---------------------------------------------------------------- the view */
-
-/* The i-th vertex the camera frames: those of the facets, or all vertices
- * when there is no facet. */
-static rt_vec3 framed(const reader *r, int i)
-{
-    return r->vertices[r->facet_count > 0 ? r->facets[i / 3].vertex[i % 3]
-                                          : i];
-}
-
-/*
- * The automatic camera and light (docs/formats.md): seen from the
- * direction (0.5, 0.5, 1), at the nearest distance where every vertex
- * drawn (every vertex when no face is drawn) is inside the image with a
- * 5% margin, the picture centred; a white light above and to the left of
- * the camera.
- */
-static rt_status auto_view(reader *r, const rt_load_options *o,
-                           rt_scene_desc *d, rt_light *light)
-{
-    d->width = o->width > 0 ? o->width : o->height > 0 ? o->height
-                                                       : DEFAULT_SIDE;
-    d->height = o->height > 0 ? o->height : d->width;
-    int n = r->facet_count > 0 ? 3 * r->facet_count : r->vertex_count;
-    rt_vec3 lo = n > 0 ? framed(r, 0) : v3(0, 0, 0), hi = lo;
-    for (int i = 1; i < n; i++) {
-        rt_vec3 p = framed(r, i);
-        lo = v3(fmin(lo.x, p.x), fmin(lo.y, p.y), fmin(lo.z, p.z));
-        hi = v3(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
+    counted *remarks[] = {NULL,          &r->few_corners, &r->no_area,
+                          &r->no_area,   &r->over_budget, &r->fanned};
+    if (outcome != RT_FACE_DRAWN) {
+        char buffer[RT_ERROR_MESSAGE_SIZE];
+        rt__obj_count(remarks[outcome], r->name, keyword.line,
+                      keyword.column, "%s",
+                      rt__mesh_face_remark(outcome, buffer, sizeof buffer));
     }
-    rt_vec3 center = v3_add(v3_scale(lo, 0.5), v3_scale(hi, 0.5));
-    double radius = v3_length(v3_sub(v3_scale(hi, 0.5), v3_scale(lo, 0.5)));
-    if (!(radius > 0.0))
-        radius = fmax(1.0, v3_max_abs(center) * 1e-3);
-    rt_vec3 view = v3_normalize(v3(VIEW_X, VIEW_Y, VIEW_Z));
-    rt_vec3 right = v3_normalize(v3_cross(v3(0, 1, 0), view));
-    rt_vec3 image_up = v3_cross(view, right);
-    /* A vertex at (x, y) across the view and z towards the camera is
-     * inside the image when |x| <= (D - z) tan_x and |y| <= (D - z) tan_y,
-     * D the camera's distance from the point it looks at.  The first fit
-     * looks at the box's centre; the second at the point that centres the
-     * first picture, and its fit is again exact. */
-    double tan_x = rt__frame_tan_half(VIEW_FOV_DEGREES);
-    double tan_y = tan_x * d->height / d->width;
-    double distance = 0.0;
-    for (int pass = 0; pass < 2; pass++) {
-        double low_x = 0, high_x = 0, low_y = 0, high_y = 0;
-        distance = 0.05 * radius;
-        for (int i = 0; i < n; i++) {
-            rt_vec3 q = v3_sub(framed(r, i), center);
-            double x = v3_dot(q, right), y = v3_dot(q, image_up);
-            double z = v3_dot(q, view);
-            distance = fmax(distance, z + 0.05 * radius);
-            distance = fmax(distance, z + VIEW_MARGIN *
-                                              fmax(fabs(x) / tan_x,
-                                                   fabs(y) / tan_y));
-        }
-        for (int i = 0; i < n && pass == 0; i++) {
-            rt_vec3 q = v3_sub(framed(r, i), center);
-            double depth = distance - v3_dot(q, view);
-            double x = v3_dot(q, right) / depth, y = v3_dot(q, image_up) / depth;
-            low_x = fmin(low_x, x), high_x = fmax(high_x, x);
-            low_y = fmin(low_y, y), high_y = fmax(high_y, y);
-        }
-        center = v3_add(center, v3_add(
-            v3_scale(right, distance * (low_x + high_x) / 2),
-            v3_scale(image_up, distance * (low_y + high_y) / 2)));
-    }
-    d->observer = v3_add(center, v3_scale(view, distance));
-    d->screen_center = center;
-    d->screen_right = rt__frame_right(center, v3_neg(view), v3(0, 1, 0),
-                                      distance * tan_x);
-    if (!(v3_max_abs(d->observer) <= RT_MAX_COORDINATE) ||
-        !(v3_max_abs(d->screen_right) <= RT_MAX_COORDINATE))
-        return rt__error_set(r->error, RT_ERR_RANGE, r->name, 0, 0,
-                             "expected a model the automatic camera can "
-                             "frame, found one of radius %g centred at "
-                             "(%g, %g, %g): the camera would stand beyond "
-                             "coordinates of 1e152 (give --look-from)",
-                             radius, center.x, center.y, center.z);
-    rt_vec3 toward_light = v3_normalize(v3_add(
-        view, v3_add(v3_scale(right, -0.5), v3_scale(image_up, 1.0))));
-    light->position = v3_add(center, v3_scale(toward_light, 2.0 * distance));
-    light->color = (rt_rgb8){255, 255, 255};
-    d->lights = light;
-    d->light_count = 1;
-    d->background = (rt_rgb8){32, 32, 32};
     return RT_OK;
 }
 
@@ -520,7 +388,9 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     rt_light light;
-    status = auto_view(r, r->options, &d, &light);
+    status = rt__mesh_auto_view(r->name, r->vertices, r->vertex_count,
+                                r->facets, r->facet_count, r->options, &d,
+                                &light, r->error);
     if (status != RT_OK)
         return status;
     d.vertices = r->vertices;

@@ -11,13 +11,14 @@
 
 #include "base/error.h"
 #include "formats/lexer.h"
+#include "formats/mesh.h"
 #include "formats/names.h"
 #include "formats/reader.h"
 #include "formats/resolve.h"
 #include "formats/triangulate.h"
 #include "raytrace/scene.h"
 
-#define DEFAULT_GREY 204        /* 0.8 * 255: Kd of the default material */
+#define DEFAULT_GREY RT_MESH_GREY /* Kd of the default material */
 #define MAX_KEYWORDS_NOTED 32   /* keywords warned about once each */
 #define MAX_NAMES_SHOWN 3       /* names quoted in a summary */
 #define MAX_LIBRARY_WARNINGS 4  /* libraries not read, each with its own

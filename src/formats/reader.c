@@ -155,10 +155,11 @@ rt_status rt__reader_finish(rt_scene_desc *desc, const rt_reading *reading,
         desc->lights = options->lights;
         desc->light_count = options->light_count;
     }
-    status = rt__scene_build(desc, name, reading->facet_lines,
-                             reading->notes,
-                             options != NULL ? options->cancel : NULL, scene,
-                             error, &refusal);
+    rt_scene_release release = {reading->release, reading->release_user};
+    status = rt__scene_build_releasing(
+        desc, name, reading->facet_lines, reading->notes,
+        options != NULL ? options->cancel : NULL, &release, scene, error,
+        &refusal);
     if (status == RT_OK || from_options(&refusal, options))
         return status;
     return report(reading, status, &refusal, error);

@@ -1,6 +1,6 @@
 /*
  * reader.h - what every scene reader shares (internal): the readers' entry
- * points (scn.c, nff.c, obj.c), the end of every read (rt__reader_finish:
+ * points (scn.c, nff.c, obj.c, ply.c), the end of every read (rt__reader_finish:
  * the options' view and lights, the build, a refusal mapped to the token
  * the reader kept), and the poll of a load's cancellation flag.  The bytes
  * are read through the lexer (lexer.h); the scene is reached through the
@@ -33,6 +33,12 @@ typedef struct rt_reading {
     const rt_load_options *options; /* may be NULL */
     rt_locate_func locate;          /* may be NULL */
     void *user;                     /* for locate */
+    /* May be NULL: frees the description's arrays (and sets the reader's
+     * pointers to them to NULL), called with release_user once the
+     * scene's records are made and before its kernel is built, so that
+     * a big load never holds the description and the kernel at once. */
+    void (*release)(void *release_user);
+    void *release_user;
 } rt_reading;
 
 /*
@@ -54,6 +60,11 @@ rt_status rt__scn_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error);
 rt_status rt__nff_parse(const char *text, size_t length, const char *name,
+                        const rt_load_options *options, rt_scene **scene,
+                        rt_error *error);
+/* PLY's text may hold binary data (its body): no NUL check applies past
+ * the header. */
+rt_status rt__ply_parse(const char *text, size_t length, const char *name,
                         const rt_load_options *options, rt_scene **scene,
                         rt_error *error);
 struct rt_files;

@@ -40,8 +40,8 @@ typedef struct parser {
     long records;           /* records read, for the cancellation poll */
     int record_lines_left;  /* lines with content from the cursor on */
     rt_error *error;
-    /* the current record */
-    rt_token values[MAX_VALUES];
+    /* the current record (and room for a token too many) */
+    rt_token values[MAX_VALUES + 1];
     int value_count;
     int record_line;
 } parser;
@@ -60,34 +60,41 @@ static int is_comma(const rt_token *t)
 /*
  * Reads the next line with content into values[]: values separated by
  * blanks and/or one comma.  Returns RT_OK, or an error; at the end of the
- * input sets value_count to -1.
+ * input sets value_count to -1.  The lexer writes each token straight into
+ * its place (values[MAX_VALUES] takes the one too many, for the message):
+ * a token copied just after the lexer wrote it waits for the store.
  */
 static rt_status next_record(parser *p)
 {
-    rt_token t, comma;
-    if (!rt__lex_statement(&p->lex, &t)) {
+    rt_token *t = &p->values[0];
+    if (!rt__lex_statement(&p->lex, t)) {
         p->value_count = -1;
         return RT_OK;
     }
-    p->record_line = t.line;
+    p->record_line = t->line;
     p->record_lines_left--;
     if (p->records++ % RT_LOAD_POLL == 0 && rt__load_cancelled(p->options))
         return rt__load_cancel(p->error, p->name);
     p->value_count = 0;
     int comma_allowed = 0;
+    rt_token comma = {NULL, 0, 0, 0};   /* the last comma */
     do {
-        if (is_comma(&t)) {
+        if (is_comma(t)) {
             if (!comma_allowed)
-                return fail_at(p, RT_ERR_SYNTAX, "a number", &t);
+                return fail_at(p, RT_ERR_SYNTAX, "a number", t);
             comma_allowed = 0;
-            comma = t;
-            continue;
+            comma.text = t->text;
+            comma.length = 1;
+            comma.line = t->line;
+            comma.column = t->column;
+        } else {
+            if (p->value_count == MAX_VALUES)
+                return fail_at(p, RT_ERR_SYNTAX, "the end of the line", t);
+            p->value_count++;
+            comma_allowed = 1;
         }
-        if (p->value_count == MAX_VALUES)
-            return fail_at(p, RT_ERR_SYNTAX, "the end of the line", &t);
-        p->values[p->value_count++] = t;
-        comma_allowed = 1;
-    } while (rt__lex_next(&p->lex, &t));
+        t = &p->values[p->value_count];
+    } while (rt__lex_next(&p->lex, t));
     if (!comma_allowed)         /* a trailing comma */
         return fail_at(p, RT_ERR_SYNTAX, "a number after the comma", &comma);
     return RT_OK;
@@ -318,15 +325,32 @@ static int locate(void *user, const rt_refusal *r, rt_token *token)
             goto done;                                                       \
     } while (0)
 
+/* The description's arrays: the build frees them (release_arrays) once
+ * the scene's records are made, before its kernel. */
+typedef struct scn_arrays {
+    rt_vec3 *vertices;
+    rt_facet_desc *facets;
+    int *facet_lines;
+} scn_arrays;
+
+static void release_arrays(void *user)
+{
+    scn_arrays *a = user;
+    free(a->vertices);
+    free(a->facets);
+    free(a->facet_lines);
+    a->vertices = NULL;
+    a->facets = NULL;
+    a->facet_lines = NULL;
+}
+
 static rt_status parse(parser *p, const rt_load_options *options,
                        rt_scene **scene)
 {
     rt_status status;
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
-    rt_vec3 *vertices = NULL;
-    rt_facet_desc *facets = NULL;
-    int *facet_lines = NULL;
+    scn_arrays a = {NULL, NULL, NULL};
     rt_light *lights = NULL;
 
     TRY(expect_record(p, 3, "the observer `x, y, z`"));
@@ -340,25 +364,25 @@ static rt_status parse(parser *p, const rt_load_options *options,
     TRY(lens_values(p, &d.aperture, &d.focal_distance));
     TRY(count(p, "vertex", &d.vertex_count));
     p->vertex_count = d.vertex_count;
-    vertices = malloc((size_t)(d.vertex_count ? d.vertex_count : 1) *
-                      sizeof *vertices);
-    if (vertices == NULL)
+    a.vertices = malloc((size_t)(d.vertex_count ? d.vertex_count : 1) *
+                        sizeof *a.vertices);
+    if (a.vertices == NULL)
         goto nomem;
     for (int i = 0; i < d.vertex_count; i++) {
         TRY(expect_record(p, 3, "a vertex `x, y, z`"));
-        TRY(point(p, 0, &vertices[i]));
+        TRY(point(p, 0, &a.vertices[i]));
     }
-    d.vertices = vertices;
+    d.vertices = a.vertices;
 
     TRY(count(p, "facet", &d.facet_count));
     p->facet_count = d.facet_count;
     size_t m = (size_t)(d.facet_count ? d.facet_count : 1);
-    facets = calloc(m, sizeof *facets);
-    facet_lines = malloc(m * sizeof *facet_lines);
-    if (facets == NULL || facet_lines == NULL)
+    a.facets = calloc(m, sizeof *a.facets);
+    a.facet_lines = malloc(m * sizeof *a.facet_lines);
+    if (a.facets == NULL || a.facet_lines == NULL)
         goto nomem;
     for (int i = 0; i < d.facet_count; i++) {
-        rt_facet_desc *f = &facets[i];
+        rt_facet_desc *f = &a.facets[i];
         TRY(expect_values(p, 7, 9,
                           "a facet `a, b, c, k, R, G, B [, t [, n]]`"));
         for (int j = 0; j < 3; j++) {
@@ -369,9 +393,9 @@ static rt_status parse(parser *p, const rt_load_options *options,
         TRY(number(p, 3, &f->reflection));
         TRY(color(p, 4, &f->color));
         TRY(transparency(p, f));
-        facet_lines[i] = p->record_line;
+        a.facet_lines[i] = p->record_line;
     }
-    d.facets = facets;
+    d.facets = a.facets;
 
     TRY(expect_record(p, 3, "the background colour `R, G, B`"));
     TRY(color(p, 0, &d.background));
@@ -413,16 +437,15 @@ static rt_status parse(parser *p, const rt_load_options *options,
         status = rt__load_cancel(p->error, p->name);
         goto done;
     }
-    rt_reading reading = {p->name, facet_lines, NULL, options, locate, p};
+    rt_reading reading = {p->name, a.facet_lines, NULL, options, locate, p,
+                          release_arrays, &a};
     status = rt__reader_finish(&d, &reading, scene, p->error);
     goto done;
 nomem:
     status = rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
                            "out of memory");
 done:
-    free(vertices);
-    free(facets);
-    free(facet_lines);
+    release_arrays(&a);
     free(lights);
     return status;
 }

@@ -101,14 +101,8 @@ static void kd_boxes_job(void *argument, size_t j, unsigned char *scratch)
         return;
     }
     for (size_t i = j * KD_BOX_CHUNK; i < end; i++) {
-        const KERNEL_T *k = w->k;
-        const vec *p[3] = {&k->tris[i].a, &k->tris[i].b, &k->tris[i].c};
-        double (*v)[3] = s->v[i];
-        for (int c = 0; c < 3; c++) {
-            v[c][0] = (double)p[c]->x;
-            v[c][1] = (double)p[c]->y;
-            v[c][2] = (double)p[c]->z;
-        }
+        double v[3][3];
+        kd_corners(s, (int32_t)i, v);
         s->sliver[i] = !(condition(v) <= OCTREE_CONDITION_MAX);
         for (int a = 0; a < 3; a++) {
             double low = v[0][a], high = v[0][a];
@@ -193,10 +187,11 @@ static void kd_task_job(void *argument, size_t j, unsigned char *scratch)
     b->sh = &w->sh;
     b->side = scratch;
     b->lists = task->node_lists;         /* the block is the builder's now */
-    b->list_capacity = kd_block_size(task->shape);
+    b->list_capacity = task->list_capacity;
     task->node_lists = NULL;
+    task->list_capacity = 0;
     kd_build_node(b, 0, task->shape, task->lo, task->hi, task->depth);
-    free(b->lists);
+    rt__pages_free(b->lists, b->list_capacity, sizeof *b->lists);
     free(b->keys);
     b->lists = NULL;
     b->keys = NULL;
@@ -213,8 +208,14 @@ static uint32_t kd_emit(kdtree *t, size_t *stored, const kd_builder *src,
                         uint32_t i)
 {
     const kdnode *n = &src->nodes[i];
-    if (src->top && kd_is_leaf(n))
-        return kd_emit(t, stored, &src->tasks[n->at.first].b, 0);
+    if (src->top && kd_is_leaf(n)) {
+        kd_builder *task = &src->tasks[n->at.first].b;
+        uint32_t root = kd_emit(t, stored, task, 0);
+        /* copied: its pages go back now, so the tree is never held
+         * twice */
+        kd_builder_release(task);
+        return root;
+    }
     uint32_t out = (uint32_t)t->node_count++;
     if (kd_is_leaf(n)) {
         uint32_t count = kd_payload(n);
@@ -291,7 +292,7 @@ static rt_status kd_build_once(kd_build *w, kdtree *t, rt_workers *workers,
     }
     top.side = malloc(n);
     if (top.side == NULL ||
-        !kd_grow((void **)&top.lists, &top.list_capacity, at,
+        !kd_grow_pages((void **)&top.lists, &top.list_capacity, at,
                  sizeof *top.lists, &top))
         goto done;
     w->root = top.lists;
@@ -301,7 +302,7 @@ static rt_status kd_build_once(kd_build *w, kdtree *t, rt_workers *workers,
     if (!kd_run(workers, threads, &sorts))
         goto done;
     kd_build_node(&top, 0, w->shape, t->lo, t->hi, 0);
-    free(top.lists);
+    rt__pages_free(top.lists, top.list_capacity, sizeof *top.lists);
     free(top.keys);
     top.lists = NULL;
     top.keys = NULL;
@@ -322,6 +323,13 @@ static rt_status kd_build_once(kd_build *w, kdtree *t, rt_workers *workers,
         refs += b->stored;
         t->depth = b->depth > t->depth ? b->depth : t->depth;
     }
+    /* The facets' boxes serve the splits only: freed before the layout's
+     * copy (the peak of a big build). */
+    free(s->lo);
+    free(s->hi);
+    free(s->sliver);
+    s->lo = s->hi = NULL;
+    s->sliver = NULL;
     t->nodes = malloc(nodes * sizeof *t->nodes);
     t->refs = malloc((refs ? refs : 1) * sizeof *t->refs);
     if (t->nodes == NULL || t->refs == NULL) {
@@ -370,7 +378,9 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     atomic_init(&s->stop, 0);
     s->lo = malloc((n ? n : 1) * sizeof *s->lo);
     s->hi = malloc((n ? n : 1) * sizeof *s->hi);
-    s->v = malloc((n ? n : 1) * sizeof *s->v);
+    s->tris = k->tris;
+    s->traverse = n >= KD_LARGE_FACETS ? KD_COST_TRAVERSE_LARGE
+                                       : KD_COST_TRAVERSE;
     s->sliver = malloc(n ? n : 1);
     double size = 0, box_lo[3], box_hi[3];
     for (int a = 0; a < 3; a++) {
@@ -400,7 +410,7 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     s->overlap_margin = fmax(t->reach_margin,
                              (extent + size) * OCTREE_ROUNDING);
     rt_status result = RT_OK;
-    if (s->lo == NULL || s->hi == NULL || s->v == NULL || s->sliver == NULL) {
+    if (s->lo == NULL || s->hi == NULL || s->sliver == NULL) {
         result = RT_ERR_NOMEM;
     } else if (k->count == 0 || !(size * 4 < INFINITY)) {
         t->brute = 1;   /* nothing to list, or no room for cells */
@@ -443,7 +453,6 @@ static kdtree *kdtree_build(const KERNEL_T *k, const rt_cancel *cancel,
     }
     free(s->lo);
     free(s->hi);
-    free(s->v);
     free(s->sliver);
     free(w);
     if (result == RT_OK) {

@@ -25,7 +25,13 @@
  *     gears-s2 and tetra-s6, docs/kdtree.md), rounded up to 0.4 for what
  *     a leaf visit costs beyond its tests (the mailbox, the batch): K_T =
  *     8 for K_I = 20, the fastest of 4, 6, 8 and 15 over the SPD scenes
- *     (Wald and Havran's were 15 and 20); and KD_EMPTY_BONUS (their
+ *     (Wald and Havran's were 15 and 20); for a tree of
+ *     KD_LARGE_FACETS facets or more, whose nodes outgrow the caches (at
+ *     about 100 bytes a facet, 13 MB and up against this machine's 32 MB
+ *     L3), K_T = KD_COST_TRAVERSE_LARGE = 30: the same trace time within
+ *     the noise on the 200 k and 1 M facet terrains, a build 30-50 %
+ *     faster and a tree 2.5 times smaller (docs/kdtree.md, "Large
+ *     trees"); and KD_EMPTY_BONUS (their
  *     lambda = 0.8 for a side left empty): a node is split only when the
  *     split's cost is below the leaf's;
  *   - a depth cap of KD_DEPTH_BASE + KD_DEPTH_SLOPE log2(N) levels
@@ -43,6 +49,8 @@
  *     build reports RT_ERR_NOMEM (such a scene needs tens of gigabytes).
  */
 #define KD_COST_TRAVERSE 8.0
+#define KD_COST_TRAVERSE_LARGE 30.0
+#define KD_LARGE_FACETS (1 << 17)
 #define KD_COST_INTERSECT 20.0
 #define KD_EMPTY_BONUS 0.8
 #define KD_DEPTH_BASE 8

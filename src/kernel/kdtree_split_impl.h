@@ -40,9 +40,10 @@ static size_t kd_block_size(kd_shape sh)
 /* What every part of one build reads, and the counts it shares. */
 typedef struct kd_shared {
     float (*lo)[3], (*hi)[3];   /* each facet's grown box, in float */
-    double (*v)[3][3];      /* each facet's vertices, in double */
+    const tri *tris;        /* the facets (their vertices: kd_corners) */
     unsigned char *sliver;
     double overlap_margin;  /* the octree's margin, for the overlap test */
+    double traverse;        /* the SAH's K_T for this tree's size */
     int facets;
     int task_facets;        /* nodes at or below it are tasks */
     int cap;                /* the depth cap */
@@ -64,7 +65,7 @@ typedef struct kd_builder {
     int32_t *refs;          /* the leaves' lists of more than one facet */
     size_t stored, ref_capacity;
     int32_t *lists;         /* the blocks of the nodes waiting, then the
-                               one being split */
+                               one being split (in pages) */
     size_t list_capacity;
     float *keys;            /* the sweep's bounds in order: 3 n */
     size_t key_capacity;
@@ -80,7 +81,8 @@ typedef struct kd_builder {
 
 /* A subtree to build: its node's block and cell; then what built it. */
 typedef struct kd_task {
-    int32_t *node_lists;
+    int32_t *node_lists;    /* in pages (base/pages.h) */
+    size_t list_capacity;
     kd_shape shape;
     double lo[3], hi[3];
     int depth;
@@ -120,6 +122,35 @@ static float float_above(double x)
     return (double)f < x ? nextafterf(f, INFINITY) : f;
 }
 
+/* Facet i's vertices in double (exact in either precision), as the
+ * overlap tests read them. */
+static void kd_corners(const kd_shared *s, int32_t i, double v[3][3])
+{
+    const tri *f = &s->tris[i];
+    const vec *p[3] = {&f->a, &f->b, &f->c};
+    for (int c = 0; c < 3; c++) {
+        v[c][0] = (double)p[c]->x;
+        v[c][1] = (double)p[c]->y;
+        v[c][2] = (double)p[c]->z;
+    }
+}
+
+static int kd_fail(kd_builder *b)
+{
+    b->status = RT_ERR_NOMEM;
+    atomic_store_explicit(&b->sh->stop, 1, memory_order_relaxed);
+    return 0;
+}
+
+/* Grows a builder's nodes, references or lists, the big arrays a build
+ * holds until its layout copies them (or its task ends): in pages of
+ * their own (base/pages.h), so that each gives its memory back at once. */
+static int kd_grow_pages(void **array, size_t *capacity, size_t needed,
+                         size_t size, kd_builder *b)
+{
+    return rt__pages_grow(array, capacity, needed, size) || kd_fail(b);
+}
+
 static int kd_grow(void **array, size_t *capacity, size_t needed,
                    size_t size, kd_builder *b)
 {
@@ -136,6 +167,7 @@ typedef struct kd_sweep {
     double lo, hi;          /* the cell on the axis */
     double other_sum, other_product;    /* of the other two extents */
     double scale;           /* K_I over the cell's half area */
+    double traverse;        /* K_T (kd_shared) */
     double *cost;
     int *axis;
     float *split;
@@ -154,7 +186,7 @@ static inline void kd_consider(kd_sweep *w, float p, int below, int above)
     double c = (below_area * below + above_area * above) * w->scale;
     if (below == 0 || above == 0)
         c *= KD_EMPTY_BONUS;
-    c += KD_COST_TRAVERSE;
+    c += w->traverse;
     if (c < *w->cost) {
         *w->cost = c;
         *w->axis = w->a;
@@ -189,7 +221,7 @@ static void sweep(kd_builder *b, const int32_t *node_lists, kd_shape sh,
     double d1 = hi[a1] - lo[a1], d2 = hi[a2] - lo[a2], da = hi[a] - lo[a];
     kd_sweep w = {lo[a], hi[a], d1 + d2, d1 * d2,
                   KD_COST_INTERSECT / (da * (d1 + d2) + d1 * d2),
-                  cost, axis, split, a};
+                  b->sh->traverse, cost, axis, split, a};
     int cs = 0, ce = 0, cf = 0;
     if (nf == 0) {
         /* no flat box (the usual case): two lists; every box ends after
@@ -234,8 +266,8 @@ static int kd_new_node(kd_builder *b)
         atomic_store_explicit(&b->sh->too_big, 1, memory_order_relaxed);
         return -1;
     }
-    if (!kd_grow((void **)&b->nodes, &b->node_capacity, b->node_count + 1,
-                 sizeof *b->nodes, b))
+    if (!kd_grow_pages((void **)&b->nodes, &b->node_capacity,
+                       b->node_count + 1, sizeof *b->nodes, b))
         return -1;
     return (int)b->node_count++;
 }
@@ -256,8 +288,9 @@ static void kd_make_leaf(kd_builder *b, int node, const int32_t *list, int n)
     if (n == 1) {
         b->nodes[node].at.first = (uint32_t)list[0];
     } else {
-        if (n > 0 && !kd_grow((void **)&b->refs, &b->ref_capacity,
-                              b->stored + (size_t)n, sizeof *b->refs, b))
+        if (n > 0 && !kd_grow_pages((void **)&b->refs, &b->ref_capacity,
+                                    b->stored + (size_t)n, sizeof *b->refs,
+                                    b))
             return;
         if (n > 0)
             memcpy(b->refs + b->stored, list, (size_t)n * sizeof *list);
@@ -277,11 +310,11 @@ static void kd_make_task(kd_builder *b, int node, const int32_t *node_lists,
     kd_task *task = &b->tasks[b->task_count];
     memset(task, 0, sizeof *task);
     size_t size = kd_block_size(sh);
-    task->node_lists = malloc((size ? size : 1) * sizeof *node_lists);
-    if (task->node_lists == NULL) {
-        b->status = RT_ERR_NOMEM;
+    void *pages = NULL;
+    if (!kd_grow_pages(&pages, &task->list_capacity, size ? size : 1,
+                       sizeof *node_lists, b))
         return;
-    }
+    task->node_lists = pages;
     memcpy(task->node_lists, node_lists, size * sizeof *node_lists);
     task->shape = sh;
     memcpy(task->lo, lo, sizeof task->lo);
@@ -340,10 +373,12 @@ static void kd_partition(kd_builder *b, const int32_t *node_lists, kd_shape sh,
         if (in_below && in_above && finite) {
             /* a box that straddles the plane: the facet itself may miss
              * one side (Akenine-Moller's test, as the octree's listing) */
-            in_below = vertex_inside(c_below, h_below, s->v[i]) ||
-                       triangle_box_overlap(c_below, h_below, s->v[i]);
-            in_above = vertex_inside(c_above, h_above, s->v[i]) ||
-                       triangle_box_overlap(c_above, h_above, s->v[i]);
+            double v[3][3];
+            kd_corners(s, i, v);
+            in_below = vertex_inside(c_below, h_below, v) ||
+                       triangle_box_overlap(c_below, h_below, v);
+            in_above = vertex_inside(c_above, h_above, v) ||
+                       triangle_box_overlap(c_above, h_above, v);
             if (!in_below && !in_above)
                 in_below = in_above = 1;    /* rounding: keep both */
         }
@@ -422,7 +457,7 @@ static void kd_build_node(kd_builder *b, size_t off, kd_shape sh,
         return;
     }
     size_t size = kd_block_size(sh), top = off + size;
-    if (!kd_grow((void **)&b->lists, &b->list_capacity, top + 2 * size,
+    if (!kd_grow_pages((void **)&b->lists, &b->list_capacity, top + 2 * size,
                  sizeof *b->lists, b))
         return;
     kd_shape sb, sa;
@@ -448,15 +483,25 @@ static void kd_build_node(kd_builder *b, size_t off, kd_shape sh,
     b->nodes[node].bits = (uint32_t)upper << 3 | (uint32_t)axis;
 }
 
+/* Gives back a builder's nodes and references (after the layout). */
+static void kd_builder_release(kd_builder *b)
+{
+    rt__pages_free(b->nodes, b->node_capacity, sizeof *b->nodes);
+    rt__pages_free(b->refs, b->ref_capacity, sizeof *b->refs);
+    b->nodes = NULL;
+    b->refs = NULL;
+    b->node_capacity = b->ref_capacity = 0;
+}
+
 static void kd_builder_free(kd_builder *b)
 {
-    free(b->nodes);
-    free(b->refs);
-    free(b->lists);
+    kd_builder_release(b);
+    rt__pages_free(b->lists, b->list_capacity, sizeof *b->lists);
     free(b->keys);
     free(b->side);
     for (size_t j = 0; j < b->task_count; j++) {
-        free(b->tasks[j].node_lists);
+        rt__pages_free(b->tasks[j].node_lists, b->tasks[j].list_capacity,
+                       sizeof *b->tasks[j].node_lists);
         kd_builder_free(&b->tasks[j].b);
     }
     free(b->tasks);

@@ -34,11 +34,38 @@
 #include "raytrace/render.h"
 #include "raytrace/scene.h"
 
+/* A material of a scene: what facets alike share (docs/rendering-model.md:
+ * k, t, n, d and C_F), stored once in the scene's table however many
+ * facets use it. */
+typedef struct rt_material {
+    double reflection;      /* k in [0, 1] */
+    double transparency;    /* t >= 0, k + t <= 1 */
+    double refractive_index; /* n > 0 */
+    double diffuse;         /* d >= 0 (1 - k - t in .scn files) */
+    rt_rgb8 color;          /* C_F */
+} rt_material;
+
+/* A facet as a scene keeps it (24 bytes): its corners, its material,
+ * its line in the file and whether a ray can meet it.  Its normal is not
+ * stored: rt__facet_normal computes it from the corners. */
+typedef struct rt_facet_record {
+    int vertex[3];          /* 0-based indices into the vertex array */
+    int material;           /* index into the scene's materials */
+    int line;               /* of the record in the source; 0: none */
+    unsigned char degenerate;   /* 0, RT_FACET_ZERO_AREA or
+                                   RT_FACET_REPEATED */
+} rt_facet_record;
+
 /* What a kernel is built from. */
 typedef struct rt_kernel_source {
     const rt_vec3 *vertices;
-    const rt_facet_info *facets;
+    const rt_facet_record *facets;
     int facet_count;
+    const rt_material *materials;   /* the facets' materials */
+    int material_count;
+    const rt_vec3 *normals; /* NULL, or each facet's rt__facet_normal,
+                               computed already (the scene's build hands
+                               them to the double kernel) */
     const rt_light *lights; /* light_count >= 1 */
     int light_count;
     rt_rgb8 background;
@@ -198,6 +225,13 @@ struct rt_kernel_ops {
     /* The eye of `origin`; NULL when out of memory. */
     rt_kernel_eye *(*eye_create)(const rt_kernel *kernel, rt_vec3 origin);
     void (*eye_destroy)(rt_kernel_eye *eye);     /* NULL: no-op */
+    /* Makes the blocks the brute-force AVX2 loops read unless they exist
+     * (thread-safe): RT_OK (also when the processor has no AVX2, or the
+     * kernel made them with itself, below RT_ACCEL_AUTO_FACETS facets)
+     * or RT_ERR_NOMEM.  Without them brute force runs the scalar loops,
+     * with the same hits: a kernel traced through a tree never needs
+     * them. */
+    rt_status (*prepare_blocks)(const rt_kernel *kernel);
     /*
      * Builds the kernel's octree unless it exists (thread-safe): RT_OK
      * (built now or before; *info filled when not NULL), RT_ERR_NOMEM, or
@@ -262,6 +296,11 @@ static inline void rt__kernel_eye_destroy(const rt_kernel *kernel,
                                           rt_kernel_eye *eye)
 {
     kernel->ops->eye_destroy(eye);
+}
+
+static inline rt_status rt__kernel_prepare_blocks(const rt_kernel *kernel)
+{
+    return kernel->ops->prepare_blocks(kernel);
 }
 
 static inline rt_status rt__kernel_prepare_octree(const rt_kernel *kernel,

@@ -46,21 +46,29 @@
 #include "kernel.h"
 
 #include "base/clock.h"
+#include "base/exact.h"
 #include "base/fast_inv_sqrt.h"
+#include "base/pages.h"
 #include "kernel/plane_crossing.h"
 #include "real_impl.h"
 
-/* A facet that can be hit, with what shading needs precomputed. */
-typedef struct tri {
-    vec a, b, c;
-    vec normal;             /* unit, in the direction of (b-a) x (c-a) */
-    REAL k;
+/* A material of the scene in this precision, with what shading needs
+ * precomputed: facets alike share one. */
+typedef struct material {
+    REAL k;                 /* reflection */
     REAL diffuse[3];        /* d C_S C_F / 255 per channel, for the first
                                light (d = 1 - k - t in .scn files) */
     REAL t;                 /* transparency */
     REAL n;                 /* refractive index */
     REAL d;                 /* diffuse weight */
+} material;
+
+/* A facet that can be hit. */
+typedef struct tri {
+    vec a, b, c;
+    vec normal;             /* unit, in the direction of (b-a) x (c-a) */
     int facet;              /* index of the facet record */
+    int material;           /* index into the kernel's materials */
 } tri;
 
 typedef struct block block;     /* eight facets, simd_impl.h */
@@ -81,14 +89,22 @@ typedef struct KERNEL_T {
     rt_kernel base;         /* first: the table of operations */
     tri *tris;
     int count;
-    block *blocks;          /* the same facets, eight by eight */
+    /* The same facets, eight by eight, for the brute-force AVX2 loops:
+     * made with the kernel when it has fewer than RT_ACCEL_AUTO_FACETS
+     * facets (where `auto` picks brute force), else by the first call of
+     * prepare_blocks (a brute-force render); until then those loops give
+     * way to the scalar ones (the same hits).  A tree's leaves gather
+     * their facets from `tris`, so a big mesh never holds this copy. */
+    _Atomic(block *) blocks;
     int block_count;
     int avx2;               /* the processor runs the AVX2 loops */
     vec light;              /* the first light */
     vec *lights;            /* every light, the first included */
     int light_count;
-    REAL *more_diffuse;     /* per facet, per further light l >= 1:
-                               d C_S,l C_F / 255 at [(i (L-1) + l-1) 3 + c] */
+    material *materials;    /* the scene's, in this precision */
+    int material_count;
+    REAL *more_diffuse;     /* per material m, per further light l >= 1:
+                               d C_S,l C_F / 255 at [(m (L-1) + l-1) 3 + c] */
     int transparent;        /* some facet has t > 0 */
     REAL background[3];
     struct shadow_plane *planes;    /* NULL, or per facet, and */
@@ -98,8 +114,16 @@ typedef struct KERNEL_T {
                                light */
     _Atomic(octree *) tree;     /* built on first use, then only read */
     _Atomic(kdtree *) kd;       /* the same for the kd-tree */
-    pthread_mutex_t tree_lock;  /* serialises both constructions */
+    pthread_mutex_t tree_lock;  /* serialises those constructions and the
+                                   blocks' */
 } KERNEL_T;
+
+/* k's blocks, once made; else NULL. */
+static inline const block *blocks_of(const KERNEL_T *k)
+{
+    return atomic_load_explicit((_Atomic(block *) *)&k->blocks,
+                                memory_order_acquire);
+}
 
 /* The precision's kernel behind the interface's handle (its first
  * member), and the same for an eye. */
@@ -195,39 +219,50 @@ static inline trace_ctx query_context(const KERNEL_T *k,
 
 static void kernel_destroy(rt_kernel *kernel);
 
-/* Appends facet record i of source `s` to the kernel under construction,
- * with its diffuse terms for every light. */
-static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
+/* Material m of source `s` in this precision, with its diffuse terms
+ * for every light. */
+static void add_material(KERNEL_T *k, const rt_kernel_source *s, int m)
 {
-    const rt_facet_info *info = &s->facets[i];
-    tri *f = &k->tris[k->count++];
+    const rt_material *given = &s->materials[m];
+    material *out = &k->materials[m];
     int more = s->light_count - 1;
-    f->a = from_rt(s->vertices[info->vertex[0]]);
-    f->b = from_rt(s->vertices[info->vertex[1]]);
-    f->c = from_rt(s->vertices[info->vertex[2]]);
-    f->normal = from_rt(info->normal);
-    f->k = (REAL)info->reflection;
-    f->t = (REAL)info->transparency;
-    f->n = (REAL)info->refractive_index;
+    out->k = (REAL)given->reflection;
+    out->t = (REAL)given->transparency;
+    out->n = (REAL)given->refractive_index;
     /* The file's rule d = 1 - k - t in this precision (so a handout
      * facet gets exactly the (1 - k) of section 3); else the given d. */
-    REAL d = info->diffuse == 1.0 - info->reflection - info->transparency
-                 ? 1 - f->k - f->t
-                 : (REAL)info->diffuse;
-    f->d = d;
-    k->transparent |= f->t > 0;
-    REAL color[3] = {info->color.r, info->color.g, info->color.b};
+    REAL d = given->diffuse == 1.0 - given->reflection - given->transparency
+                 ? 1 - out->k - out->t
+                 : (REAL)given->diffuse;
+    out->d = d;
+    REAL color[3] = {given->color.r, given->color.g, given->color.b};
     for (int l = 0; l < s->light_count; l++) {
         const rt_rgb8 *c8 = &s->lights[l].color;
         REAL light[3] = {c8->r, c8->g, c8->b};
-        REAL *out = l == 0 ? f->diffuse
-                           : &k->more_diffuse[((size_t)(k->count - 1) *
-                                                   (size_t)more +
-                                               (size_t)(l - 1)) * 3];
+        REAL *terms = l == 0 ? out->diffuse
+                             : &k->more_diffuse[((size_t)m * (size_t)more +
+                                                 (size_t)(l - 1)) * 3];
         for (int c = 0; c < 3; c++)
-            out[c] = d * light[c] * color[c] / 255;
+            terms[c] = d * light[c] * color[c] / 255;
     }
+}
+
+/* Appends facet record i of source `s` to the kernel under construction. */
+static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
+{
+    const rt_facet_record *record = &s->facets[i];
+    tri *f = &k->tris[k->count++];
+    rt_vec3 a = s->vertices[record->vertex[0]],
+            b = s->vertices[record->vertex[1]],
+            c = s->vertices[record->vertex[2]];
+    f->a = from_rt(a);
+    f->b = from_rt(b);
+    f->c = from_rt(c);
+    f->normal = from_rt(s->normals != NULL ? s->normals[i]
+                                           : rt__facet_normal(a, b, c));
     f->facet = i;
+    f->material = record->material;
+    k->transparent |= k->materials[record->material].t > 0;
 }
 
 /* The kernel's arrays, sized for source `s`; 0 when out of memory. */
@@ -235,19 +270,33 @@ static int allocate(KERNEL_T *k, const rt_kernel_source *s)
 {
     k->tris = malloc((size_t)(s->facet_count > 0 ? s->facet_count : 1) *
                      sizeof *k->tris);
-    int block_count = (s->facet_count + BLOCK_LANES - 1) / BLOCK_LANES;
-    k->blocks = aligned_alloc(32, (size_t)(block_count > 0 ? block_count : 1) *
-                                      sizeof *k->blocks);
     int more = s->light_count - 1;
     k->light_count = s->light_count;
     k->lights = malloc((size_t)s->light_count * sizeof *k->lights);
+    k->materials = malloc((size_t)(s->material_count > 0 ? s->material_count
+                                                         : 1) *
+                          sizeof *k->materials);
+    k->material_count = s->material_count;
     /* One light (the handout's case) needs no table. */
-    size_t more_size = more > 0 && s->facet_count > 0
-                           ? (size_t)more * (size_t)s->facet_count * 3
+    size_t more_size = more > 0 && s->material_count > 0
+                           ? (size_t)more * (size_t)s->material_count * 3
                            : 1;
     k->more_diffuse = malloc(more_size * sizeof *k->more_diffuse);
-    return k->tris != NULL && k->blocks != NULL && k->lights != NULL &&
+    return k->tris != NULL && k->lights != NULL && k->materials != NULL &&
            k->more_diffuse != NULL;
+}
+
+/* The blocks of k's facets (from malloc, 32-byte aligned); NULL when out
+ * of memory. */
+static block *make_blocks(const KERNEL_T *k)
+{
+    block *blocks = aligned_alloc(32, (size_t)(k->block_count > 0
+                                                   ? k->block_count
+                                                   : 1) *
+                                          sizeof *blocks);
+    if (blocks != NULL)
+        fill_blocks(blocks, k->tris, k->count, mk(0, 0, 0));
+    return blocks;
 }
 
 static rt_kernel *kernel_create(const rt_kernel_source *s)
@@ -256,6 +305,7 @@ static rt_kernel *kernel_create(const rt_kernel_source *s)
     if (k == NULL)
         return NULL;
     k->base.ops = &KERNEL_OPS;
+    atomic_init(&k->blocks, NULL);
     atomic_init(&k->tree, NULL);
     atomic_init(&k->kd, NULL);
     pthread_mutex_init(&k->tree_lock, NULL);
@@ -269,6 +319,8 @@ static rt_kernel *kernel_create(const rt_kernel_source *s)
     k->background[0] = s->background.r;
     k->background[1] = s->background.g;
     k->background[2] = s->background.b;
+    for (int m = 0; m < s->material_count; m++)
+        add_material(k, s, m);
     for (int i = 0; i < s->facet_count; i++) {
         if (i % RT_KERNEL_POLL == RT_KERNEL_POLL - 1 &&
             rt_cancel_requested(s->cancel)) {
@@ -279,8 +331,15 @@ static rt_kernel *kernel_create(const rt_kernel_source *s)
             add_facet(k, s, i);
     }
     k->block_count = (k->count + BLOCK_LANES - 1) / BLOCK_LANES;
-    fill_blocks(k->blocks, k->tris, k->count, mk(0, 0, 0));
     k->avx2 = cpu_has_avx2();
+    if (k->avx2 && k->count < RT_ACCEL_AUTO_FACETS) {
+        block *blocks = make_blocks(k);
+        if (blocks == NULL) {
+            kernel_destroy(&k->base);
+            return NULL;
+        }
+        atomic_store_explicit(&k->blocks, blocks, memory_order_relaxed);
+    }
     if (k->avx2 && k->count > 0 && k->count <= PACKET_MAX_FACETS &&
         k->light_count <= KNOWN_LIGHTS && !packet_prepare_kernel(k)) {
         free(k->planes);        /* out of memory: no shadow packets */
@@ -296,8 +355,9 @@ static void kernel_destroy(rt_kernel *kernel)
     KERNEL_T *k = (KERNEL_T *)kernel;
     if (k != NULL) {
         free(k->tris);
-        free(k->blocks);
+        free(atomic_load(&k->blocks));
         free(k->lights);
+        free(k->materials);
         free(k->more_diffuse);
         free(k->planes);
         free(k->light_side);
@@ -306,6 +366,23 @@ static void kernel_destroy(rt_kernel *kernel)
         pthread_mutex_destroy(&k->tree_lock);
     }
     free(k);
+}
+
+static rt_status kernel_prepare_blocks(const rt_kernel *kernel)
+{
+    const KERNEL_T *k = kernel_of(kernel);
+    KERNEL_T *mutable = (KERNEL_T *)k;  /* only the lazy blocks change */
+    if (!k->avx2 || blocks_of(k) != NULL)
+        return RT_OK;
+    pthread_mutex_lock(&mutable->tree_lock);
+    block *blocks = atomic_load_explicit(&mutable->blocks,
+                                         memory_order_relaxed);
+    if (blocks == NULL) {
+        blocks = make_blocks(k);
+        atomic_store_explicit(&mutable->blocks, blocks, memory_order_release);
+    }
+    pthread_mutex_unlock(&mutable->tree_lock);
+    return blocks != NULL ? RT_OK : RT_ERR_NOMEM;
 }
 
 static rt_status kernel_prepare_octree(const rt_kernel *kernel,
@@ -471,6 +548,7 @@ const rt_kernel_ops KERNEL_OPS = {
     .destroy = kernel_destroy,
     .eye_create = kernel_eye_create,
     .eye_destroy = kernel_eye_destroy,
+    .prepare_blocks = kernel_prepare_blocks,
     .prepare_octree = kernel_prepare_octree,
     .prepare_kdtree = kernel_prepare_kdtree,
     .trace = kernel_trace,

@@ -447,7 +447,8 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
         int skip[VW], lane[VW], m = 0, frame = -1;
         for (int l = 0; l < n; l++) {
             const known_hit *b = &out[l];
-            if (!b->found || k->tris[b->h->index].d == 0)
+            if (!b->found ||
+                k->materials[k->tris[b->h->index].material].d == 0)
                 continue;
             vec to_light = sub(k->lights[light], b->point);
             if (!(dot(b->normal, to_light) > 0))

@@ -47,8 +47,9 @@ static int any_hit_scalar(const KERNEL_T *k, const ray *r, REAL t_max,
 
 /* The loops a trace uses: AVX2 when the processor has it and the caller
  * did not ask for the scalar ones (simd 0), with the vertices of `eye`
- * (may be NULL) for a ray from its origin with no facet to skip.  All
- * give the same hits. */
+ * (may be NULL) for a ray from its origin with no facet to skip, else
+ * the kernel's blocks once made (prepare_blocks).  All give the same
+ * hits. */
 static inline int nearest_brute(const KERNEL_T *k, int simd,
                                 const KERNEL_EYE_T *eye, const ray *r,
                                 REAL t_max, int skip, hit *h, uint64_t *tests)
@@ -57,8 +58,9 @@ static inline int nearest_brute(const KERNEL_T *k, int simd,
     if (simd && eye != NULL && skip < 0 &&
         memcmp(&eye->origin, &r->origin, sizeof eye->origin) == 0)
         return nearest_eye_avx2(k, eye->blocks, r, t_max, h, tests);
-    if (simd)
-        return nearest_avx2(k, r, t_max, skip, h, tests);
+    const block *facet_blocks = simd ? blocks_of(k) : NULL;
+    if (facet_blocks != NULL)
+        return nearest_avx2(k, facet_blocks, r, t_max, skip, h, tests);
 #else
     (void)simd;
     (void)eye;
@@ -73,8 +75,10 @@ static inline int any_hit_brute(const KERNEL_T *k, int simd, const ray *r,
                                 int *blocker)
 {
 #if HAVE_AVX2_KERNEL
-    if (simd)
-        return any_hit_avx2(k, r, t_max, skip, &counters->ray_facet_tests,
+    const block *facet_blocks = simd ? blocks_of(k) : NULL;
+    if (facet_blocks != NULL)
+        return any_hit_avx2(k, facet_blocks, r, t_max, skip,
+                            &counters->ray_facet_tests,
                             &counters->early_exit_saved, blocker);
 #else
     (void)simd;

@@ -96,13 +96,13 @@ HOT_INLINE ray shadow_ray(vec point, vec error_bound, vec normal, vec light,
     return prepare_leaving(origin, sub(light, origin), error_bound);
 }
 
-/* The terms d C_S,l C_F / 255 of facet `index` for light `l`. */
-static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int index,
-                              int l)
+/* The terms d C_S,l C_F / 255 of facet f's material for light `l`. */
+static const REAL *diffuse_of(const KERNEL_T *k, const tri *f, int l)
 {
     if (l == 0)
-        return f->diffuse;
-    return &k->more_diffuse[((size_t)index * (size_t)(k->light_count - 1) +
+        return k->materials[f->material].diffuse;
+    return &k->more_diffuse[((size_t)f->material *
+                                 (size_t)(k->light_count - 1) +
                              (size_t)(l - 1)) * 3];
 }
 
@@ -160,6 +160,7 @@ typedef struct known_hit {
 /* Where a ray met a facet, as the rays it sends on leave it. */
 typedef struct surface {
     const tri *f;
+    const material *m;      /* f's */
     int index;              /* of f in the kernel's tris */
     vec point, error_bound; /* the hit point and its rounding-error bound */
     vec normal;             /* unit, facing the ray that met it */
@@ -204,7 +205,7 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
 {
     const KERNEL_T *k = c->k;
     const tri *f = s->f;
-    int dark = f->d == 0;   /* k = 1 on a handout facet */
+    int dark = s->m->d == 0;    /* k = 1 on a handout facet */
     const rt_color none = {0, 0, 0};
     for (int l = 0; l < k->light_count; l++) {
         vec light = k->lights[l];
@@ -232,7 +233,7 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
             continue;
         }
         REAL w = weight * dot(s->normal, normalize(to_light, c->fast));
-        const REAL *diffuse = diffuse_of(k, f, s->index, l);
+        const REAL *diffuse = diffuse_of(k, f, l);
         for (int ch = 0; ch < 3; ch++)
             color[ch] += w * diffuse[ch];
         if (c->rec != NULL)
@@ -267,6 +268,7 @@ HOT_INLINE int shade_hit(const trace_ctx *c, int found, const hit *h,
         return 0;
     }
     s->f = &k->tris[h->index];
+    s->m = &k->materials[s->f->material];
     s->index = h->index;
     if (known != NULL) {
         s->point = known->point;

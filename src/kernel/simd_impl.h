@@ -222,10 +222,11 @@ nearest_blocks(const KERNEL_T *k, const block *blocks, int translated,
     return found;
 }
 
-AVX2 static int nearest_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
-                             int skip, hit *h, uint64_t *tests)
+AVX2 static int nearest_avx2(const KERNEL_T *k, const block *blocks,
+                             const ray *r, REAL t_max, int skip, hit *h,
+                             uint64_t *tests)
 {
-    return nearest_blocks(k, k->blocks, 0, r, t_max, skip, h, tests);
+    return nearest_blocks(k, blocks, 0, r, t_max, skip, h, tests);
 }
 
 /* For a ray from the eye's origin (a camera ray: no facet to skip). */
@@ -238,9 +239,9 @@ AVX2 static int nearest_eye_avx2(const KERNEL_T *k, const block *translated,
 
 /* any_hit() with the AVX2 filter; stops after the block of the first hit
  * and counts the facets of the blocks it went through. */
-AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
-                             int skip, uint64_t *tests, uint64_t *saved,
-                             int *blocker)
+AVX2 static int any_hit_avx2(const KERNEL_T *k, const block *facet_blocks,
+                             const ray *r, REAL t_max, int skip,
+                             uint64_t *tests, uint64_t *saved, int *blocker)
 {
     vray q;
     broadcast(r, &q);
@@ -248,8 +249,8 @@ AVX2 static int any_hit_avx2(const KERNEL_T *k, const ray *r, REAL t_max,
     lanes_kept keep;
     int b;
     for (b = 0; b < k->block_count; b++) {
-        unsigned m = block_candidates(&k->blocks[b], &q, 0, block_lanes(k, b),
-                                      &keep);
+        unsigned m = block_candidates(&facet_blocks[b], &q, 0,
+                                      block_lanes(k, b), &keep);
         while (m != 0) {
             int lane = __builtin_ctz(m), i = b * BLOCK_LANES + lane;
             m &= m - 1;

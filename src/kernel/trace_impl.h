@@ -45,13 +45,13 @@ HOT_INLINE void trace_opaque(const trace_ctx *c, vec origin, vec incoming,
         if (!shade_hit(c, found, &h, origin, incoming, weight, node, given,
                        color, &s))
             break;
-        if (s.f->k == 0) {
+        if (s.m->k == 0) {
             c->counters->reflection_rays_skipped += bounce < c->max_depth;
             break;
         }
         if (bounce >= c->max_depth)
             break;          /* a reflection past the limit is black */
-        weight *= s.f->k;
+        weight *= s.m->k;
         vec reflected = sub(incoming,
                             scale(s.normal, 2 * dot(incoming, s.normal)));
         origin = offset_origin(s.point, s.error_bound, s.normal, reflected);
@@ -153,21 +153,22 @@ HOT_INLINE int trace_transparent(const trace_ctx *c, vec origin,
                        NULL, color, &s))
             continue;
         const tri *f = s.f;
+        const material *m = s.m;
         int deeper = p.level < c->max_depth;
-        if (f->k == 0)
+        if (m->k == 0)
             counters->reflection_rays_skipped += deeper;
         if (!deeper) {
-            counters->refraction_rays_skipped += f->t > 0;
+            counters->refraction_rays_skipped += m->t > 0;
             continue;       /* past the limit: black */
         }
         vec mirror = sub(p.incoming,
                          scale(s.normal, 2 * dot(p.incoming, s.normal)));
-        REAL mirror_weight = f->k;
+        REAL mirror_weight = m->k;
         vec refracted = mk(0, 0, 0);   /* set when refracts */
-        int refracts = f->t > 0 && refract(p.incoming, f->normal, f->n,
+        int refracts = m->t > 0 && refract(p.incoming, f->normal, m->n,
                                            &refracted);
-        if (f->t > 0 && !refracts) {
-            mirror_weight += f->t;  /* total internal reflection */
+        if (m->t > 0 && !refracts) {
+            mirror_weight += m->t;  /* total internal reflection */
             counters->refraction_rays_skipped++;
         }
         if (!reserve_tasks(&stack, &capacity, used, local)) {
@@ -178,7 +179,7 @@ HOT_INLINE int trace_transparent(const trace_ctx *c, vec origin,
             ray_task task = {
                 offset_origin(s.point, s.error_bound, s.normal, refracted),
                 normalize(refracted, c->fast), s.error_bound,
-                p.weight * f->t, s.index, p.level + 1, -1};
+                p.weight * m->t, s.index, p.level + 1, -1};
             if (rec != NULL)
                 task.node = record_task(rec, RT_RAY_REFRACTED, p.node, &task);
             stack[used++] = task;

@@ -91,10 +91,11 @@ static void record_hit(void *state, int node, int facet, double t,
     if (node < 0)
         return;
     rt_ray_node *n = &r->nodes[node];
-    const rt_facet_info *f = &r->scene->facets[facet];
+    const rt_facet_record *record = &r->scene->facets[facet];
+    const rt_material *f = &r->scene->materials.items[record->material];
     n->hit = 1;
     n->facet = facet;
-    n->line = f->line;
+    n->line = record->line;
     n->t = t;
     n->point = point;
     n->normal = normal;

@@ -243,10 +243,13 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
         return cancelled(error);
     if (status != RT_OK)
         return rt__render_out_of_memory(error);
-    /* The camera rays' origin, subtracted from every vertex once for the
-     * scene (only the fast brute-force loops read it). */
+    /* The facets eight by eight and the camera rays' origin subtracted
+     * from every vertex, made once for the scene: only the fast
+     * brute-force loops read them. */
     if (options->kernel != RT_KERNEL_SCALAR && !f->settings.octree &&
         !f->settings.kdtree) {
+        if (rt__kernel_prepare_blocks(f->kernel) != RT_OK)
+            return rt__render_out_of_memory(error);
         f->settings.eye = rt__scene_eye(scene, options->precision);
         if (f->settings.eye == NULL)
             return rt__render_out_of_memory(error);

@@ -45,6 +45,9 @@ void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
     source->vertices = s->vertices;
     source->facets = s->facets;
     source->facet_count = s->facet_count;
+    source->materials = s->materials.items;
+    source->material_count = s->materials.count;
+    source->normals = NULL;
     source->lights = s->lights;
     source->light_count = s->light_count;
     source->background = s->background;

@@ -22,13 +22,6 @@
 #include "scene_internal.h"
 #include "base/vecmath.h"
 
-/* Unit normal in the direction of (b - a) x (c - a), accurate for any
- * shape (slivers and needles included); zero for a zero-area facet. */
-static rt_vec3 facet_normal(rt_vec3 a, rt_vec3 b, rt_vec3 c)
-{
-    return v3_normalize(rt__exact_cross(a, b, c));
-}
-
 _Static_assert(RT_MAX_LIGHTS == 64, "RT_RULE_LIGHTS says 64 lights");
 
 /* Where a check reports what it refuses. */
@@ -327,56 +320,58 @@ static void add_repeat_warning(rt_notes *notes, const char *name,
                       r->count, r->first + 1);
 }
 
-/* Fills the facet records and counts, sorting out the facets no ray can
- * meet (docs/robustness-input.md, "Facets no ray meets"); their warnings go
- * to `notes`. */
-static int add_facets(rt_scene *s, const rt_scene_desc *d,
-                      const char *name, const int *facet_lines,
-                      rt_notes *notes, const rt_cancel *cancel)
+/* Fills the facet records, the materials they share and the counts,
+ * sorting out the facets no ray can meet (docs/robustness-input.md,
+ * "Facets no ray meets"); their warnings go to `notes`, each facet's
+ * normal to normals[i].  RT_OK, RT_ERR_CANCELLED or RT_ERR_NOMEM. */
+static rt_status add_facets(rt_scene *s, const rt_scene_desc *d,
+                            const char *name, const int *facet_lines,
+                            rt_notes *notes, const rt_cancel *cancel,
+                            rt_vec3 *normals)
 {
     repeats r = {0, 0, 0, 0};
     int previous = -1;      /* the last facet the renderer keeps */
     for (int i = 0; i < d->facet_count; i++) {
         if (i % RT_LOAD_POLL == RT_LOAD_POLL - 1 &&
             rt_cancel_requested(cancel))
-            return 0;
+            return RT_ERR_CANCELLED;
         const rt_facet_desc *f = &d->facets[i];
-        rt_facet_info *info = &s->facets[i];
+        rt_facet_record *record = &s->facets[i];
         rt_vec3 a = d->vertices[f->vertex[0]], b = d->vertices[f->vertex[1]],
                 c = d->vertices[f->vertex[2]];
-        info->size = sizeof *info;
-        memcpy(info->vertex, f->vertex, sizeof info->vertex);
-        info->reflection = f->reflection;
-        info->transparency = f->transparency;
-        info->refractive_index =
-            f->refractive_index > 0.0 ? f->refractive_index : 1.0;
-        info->diffuse = f->diffuse_given
-                            ? f->diffuse
-                            : 1.0 - f->reflection - f->transparency;
-        info->color = f->color;
-        info->line = facet_lines ? facet_lines[i] : 0;
-        info->normal = facet_normal(a, b, c);
-        info->degenerate = 0;
-        if (v3_max_abs(info->normal) == 0.0) {
-            info->degenerate = RT_FACET_ZERO_AREA;
-            add_degenerate_warning(notes, name, i, info->line);
+        rt_material m = {
+            f->reflection, f->transparency,
+            f->refractive_index > 0.0 ? f->refractive_index : 1.0,
+            f->diffuse_given ? f->diffuse
+                             : 1.0 - f->reflection - f->transparency,
+            f->color};
+        memset(record, 0, sizeof *record);
+        memcpy(record->vertex, f->vertex, sizeof record->vertex);
+        if ((record->material = rt__materials_add(&s->materials, &m)) < 0)
+            return RT_ERR_NOMEM;
+        record->line = facet_lines ? facet_lines[i] : 0;
+        rt_vec3 normal = normals[i] = rt__facet_normal(a, b, c);
+        if (v3_max_abs(normal) == 0.0) {
+            record->degenerate = RT_FACET_ZERO_AREA;
+            add_degenerate_warning(notes, name, i, record->line);
             continue;
         }
         if (previous >= 0 && same_corners(d, f, &d->facets[previous])) {
-            info->degenerate = RT_FACET_REPEATED;
+            record->degenerate = RT_FACET_REPEATED;
             if (r.count++ == 0)
-                r.first = i, r.first_line = info->line, r.of = previous;
+                r.first = i, r.first_line = record->line, r.of = previous;
             continue;
         }
         previous = i;
-        check_edge_on(notes, name, i, info->line, info->normal, a, b, c,
+        check_edge_on(notes, name, i, record->line, normal, a, b, c,
                       d->observer);
         s->live_count++;
         s->reflective_count += f->reflection > 0.0;
         s->transparent_count += f->transparency > 0.0;
     }
     add_repeat_warning(notes, name, &r);
-    return 1;
+    rt__materials_end(&s->materials);
+    return RT_OK;
 }
 
 rt_status rt__scene_check(const rt_scene_desc *d, const char *name,
@@ -393,6 +388,18 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
                           const int *facet_lines, const rt_notes *notes,
                           const rt_cancel *cancel, rt_scene **out,
                           rt_error *error, rt_refusal *refusal)
+{
+    return rt__scene_build_releasing(d, name, facet_lines, notes, cancel,
+                                     NULL, out, error, refusal);
+}
+
+rt_status rt__scene_build_releasing(const rt_scene_desc *d, const char *name,
+                                    const int *facet_lines,
+                                    const rt_notes *notes,
+                                    const rt_cancel *cancel,
+                                    const rt_scene_release *release,
+                                    rt_scene **out, rt_error *error,
+                                    rt_refusal *refusal)
 {
     *out = NULL;
     if (refusal != NULL)
@@ -432,11 +439,21 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     rt_notes warnings;
     memset(&warnings, 0, sizeof warnings);
     rt__notes_append(&warnings, notes);
-    if (!add_facets(s, d, name, facet_lines, &warnings, cancel)) {
+    /* The normals serve the warnings and the double kernel's build, then
+     * go: the kernel keeps its own, the records none. */
+    rt_vec3 *normals = malloc((nf ? nf : 1) * sizeof *normals);
+    status = normals == NULL ? RT_ERR_NOMEM
+                             : add_facets(s, d, name, facet_lines, &warnings,
+                                          cancel, normals);
+    if (status != RT_OK) {
+        free(normals);
         rt__notes_free(&warnings);
         rt_scene_destroy(s);
-        return rt__error_set(error, RT_ERR_CANCELLED, name, 0, 0,
-                             "the load was cancelled");
+        if (status == RT_ERR_CANCELLED)
+            return rt__error_set(error, RT_ERR_CANCELLED, name, 0, 0,
+                                 "the load was cancelled");
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0,
+                             "out of memory");
     }
     rt__notes_settle(&warnings);
     if (warnings.count > 0 && warnings.count < warnings.capacity) {
@@ -451,13 +468,19 @@ rt_status rt__scene_build(const rt_scene_desc *d, const char *name,
     int failed = warnings.failed;
     rt__notes_free(&warnings);
     if (failed) {
+        free(normals);
         rt_scene_destroy(s);
         return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
     }
+    /* The records hold all the kernel needs: the description can go. */
+    if (release != NULL && release->release != NULL)
+        release->release(release->user);
     rt_kernel_source source;
     rt__scene_kernel_source(s, &source);
     source.cancel = cancel;
+    source.normals = normals;
     s->kernel = rt__kernel_double_ops.create(&source);
+    free(normals);
     if (s->kernel == NULL) {
         rt_scene_destroy(s);
         if (rt_cancel_requested(cancel))
@@ -474,6 +497,7 @@ size_t rt__scene_bytes(const rt_scene *s)
     return sizeof *s + (s->name ? strlen(s->name) + 1 : 0) +
            (size_t)s->vertex_count * sizeof *s->vertices +
            (size_t)s->facet_count * sizeof *s->facets +
+           (size_t)s->materials.count * sizeof *s->materials.items +
            (size_t)s->warning_count * sizeof *s->warnings +
            (size_t)s->light_count * sizeof *s->lights;
 }
@@ -498,6 +522,7 @@ void rt_scene_destroy(rt_scene *scene)
     free(scene->name);
     free(scene->vertices);
     free(scene->facets);
+    rt__materials_free(&scene->materials);
     free(scene->lights);
     rt__scene_prepared_free(scene);
     free(scene->warnings);
@@ -550,10 +575,29 @@ void rt_scene_facet(const rt_scene *scene, int i, rt_facet_info *facet)
 {
     if (!RT__EXPECT(facet != NULL && facet->size >= FACET_INFO_SIZE_0_3))
         return;
-    static const rt_facet_info zero = {0};
-    rt__sized_fill(facet,
-                   INDEX_OK(scene, i, facet_count) ? &scene->facets[i] : &zero,
-                   sizeof *facet);
+    rt_facet_info full = {0};
+    if (INDEX_OK(scene, i, facet_count))
+        rt__scene_facet_info(scene, i, &full);
+    rt__sized_fill(facet, &full, sizeof *facet);
+}
+
+void rt__scene_facet_info(const rt_scene *s, int i, rt_facet_info *info)
+{
+    const rt_facet_record *record = &s->facets[i];
+    const rt_material *m = &s->materials.items[record->material];
+    memset(info, 0, sizeof *info);
+    info->size = sizeof *info;
+    memcpy(info->vertex, record->vertex, sizeof info->vertex);
+    info->reflection = m->reflection;
+    info->color = m->color;
+    info->normal = rt__facet_normal(s->vertices[record->vertex[0]],
+                                    s->vertices[record->vertex[1]],
+                                    s->vertices[record->vertex[2]]);
+    info->degenerate = record->degenerate;
+    info->line = record->line;
+    info->transparency = m->transparency;
+    info->refractive_index = m->refractive_index;
+    info->diffuse = m->diffuse;
 }
 
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)

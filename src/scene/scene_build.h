@@ -178,6 +178,25 @@ rt_status rt__scene_build(const rt_scene_desc *desc, const char *name,
                           const rt_cancel *cancel, rt_scene **scene,
                           rt_error *error, rt_refusal *refusal);
 
+/* What frees a description's arrays during a build (rt_reading). */
+typedef struct rt_scene_release {
+    void (*release)(void *user);    /* may be NULL */
+    void *user;
+} rt_scene_release;
+
+/* rt__scene_build, calling release->release(release->user) (release and
+ * its function may be NULL) once the scene's records are made, before
+ * its kernel: `desc` and `facet_lines` are not read after that call.  The
+ * call is made on success only up to that point; on a failure before it,
+ * the description is left to its owner. */
+rt_status rt__scene_build_releasing(const rt_scene_desc *desc,
+                                    const char *name, const int *facet_lines,
+                                    const rt_notes *notes,
+                                    const rt_cancel *cancel,
+                                    const rt_scene_release *release,
+                                    rt_scene **scene, rt_error *error,
+                                    rt_refusal *refusal);
+
 /* The checks of rt__scene_build alone: RT_OK, or the refusal as
  * rt__scene_build reports it (nothing is built). */
 rt_status rt__scene_check(const rt_scene_desc *desc, const char *name,

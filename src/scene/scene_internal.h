@@ -2,10 +2,11 @@
  * scene_internal.h - what an rt_scene holds (internal).
  *
  * A scene keeps two views of its facets: the records as the file gave them
- * (for accessors and the course's API), and its kernels (kernel.h), one
+ * (for accessors and the course's API: corners, line, and an index into
+ * a table of the materials they share), and its kernels (kernel.h), one
  * per precision, which hold only the facets that can be hit, with what the
  * renderer needs precomputed.  Zero-area facets and exact repeats of the
- * facet before them (rt_facet_info.degenerate) are absent from the kernel:
+ * facet before them (rt_facet_record.degenerate) are absent from the kernel:
  * the renderer never spends a test on them.
  */
 #ifndef RAYTRACE_SCENE_INTERNAL_H
@@ -18,13 +19,30 @@
 #include "raytrace/scene.h"
 #include "scene/scene_build.h"
 
+/* A scene's materials (materials.c): an array, and while the scene is
+ * built, the hash table that finds an entry alike. */
+typedef struct rt_materials {
+    rt_material *items;
+    int count, capacity;
+    int *slots;             /* the build's: entry indices, -1 empty */
+    size_t slot_count;      /* a power of two, or 0 */
+} rt_materials;
+
+/* The index of the entry of `t` equal to *m (every field, bit for bit),
+ * added when there is none; -1 when out of memory. */
+int rt__materials_add(rt_materials *t, const rt_material *m);
+/* Ends a build: frees the hash table and fits the array. */
+void rt__materials_end(rt_materials *t);
+void rt__materials_free(rt_materials *t);
+
 struct rt_scene {
     char *name;
     rt_camera camera;
     rt_vec3 *vertices;
     int vertex_count;
-    rt_facet_info *facets;
+    rt_facet_record *facets;    /* as the file gave them (kernel.h) */
     int facet_count;
+    rt_materials materials;     /* what the facets' records index */
     rt_warning *warnings;
     int warning_count;
     rt_rgb8 background;
@@ -75,6 +93,9 @@ size_t rt__scene_bytes(const rt_scene *scene);
 void rt__scene_prepared_init(rt_scene *scene);
 /* Ends the render threads and frees the kernels and eyes. */
 void rt__scene_prepared_free(rt_scene *scene);
+
+/* Fills *info with what facet record i says (its normal computed). */
+void rt__scene_facet_info(const rt_scene *scene, int i, rt_facet_info *info);
 
 /* What a kernel of any precision is built from: the scene's own arrays. */
 void rt__scene_kernel_source(const rt_scene *scene, rt_kernel_source *source);

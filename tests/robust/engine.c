@@ -26,7 +26,8 @@ struct rb_engine {
     rb_method method;
     rt_precision precision;
     rt_vec3 *vertices;          /* ours: what the kernel was built from */
-    rt_facet_info *facets;
+    rt_facet_record *facets;
+    rt_material *materials;     /* one per facet */
     rt_kernel *kernel;
     naive_d_scene *nd;
     naive_f_scene *nf;
@@ -67,17 +68,28 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
     rt_scene_get_info(scene, &info);
     e->vertices = calloc((size_t)info.vertex_count + 1, sizeof *e->vertices);
     e->facets = calloc((size_t)info.facet_count + 1, sizeof *e->facets);
+    e->materials = calloc((size_t)info.facet_count + 1,
+                          sizeof *e->materials);
     for (int i = 0; i < info.vertex_count; i++)
         e->vertices[i] = rt_scene_vertex(scene, i);
     for (int i = 0; i < info.facet_count; i++) {
-        e->facets[i].size = sizeof e->facets[i];
-        rt_scene_facet(scene, i, &e->facets[i]);
+        rt_facet_info f = {.size = sizeof f};
+        rt_scene_facet(scene, i, &f);
+        memcpy(e->facets[i].vertex, f.vertex, sizeof f.vertex);
+        e->facets[i].material = i;
+        e->facets[i].line = f.line;
+        e->facets[i].degenerate = (unsigned char)f.degenerate;
+        e->materials[i] = (rt_material){f.reflection, f.transparency,
+                                        f.refractive_index, f.diffuse,
+                                        f.color};
     }
     rt_kernel_source source;
     memset(&source, 0, sizeof source);
     source.vertices = e->vertices;
     source.facets = e->facets;
     source.facet_count = info.facet_count;
+    source.materials = e->materials;
+    source.material_count = info.facet_count;
     rt_light *lights = calloc((size_t)info.light_count, sizeof *lights);
     for (int i = 0; lights != NULL && i < info.light_count; i++)
         rt_scene_light(scene, i, &lights[i]);
@@ -92,6 +104,10 @@ rb_engine *rb_engine_create(const rt_scene *scene, rb_method method,
     /* With the octree or the kd-tree forced on, every query of the kernel
      * goes through it (a kernel that has one uses it for nearest_hit and
      * occluded too). */
+    /* Brute force runs the AVX2 loops once the kernel's blocks exist
+     * (made with the kernel only below RT_ACCEL_AUTO_FACETS facets). */
+    if (e->kernel != NULL)
+        rt__kernel_prepare_blocks(e->kernel);
     if (rb_accel() == RT_ACCEL_OCTREE && e->kernel != NULL)
         rt__kernel_prepare_octree(e->kernel, NULL, NULL);
     if (rb_accel() == RT_ACCEL_KDTREE && e->kernel != NULL)
@@ -120,6 +136,7 @@ void rb_engine_free(rb_engine *e)
     naive_f_free_scene(e->nf);
     free(e->vertices);
     free(e->facets);
+    free(e->materials);
     free(e);
 }
 

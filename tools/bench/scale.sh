@@ -2,13 +2,13 @@
 # scale.sh - rt-export on meshes of millions of facets, step by step, in
 # one run (docs/performance.md, "Scale: millions of facets"; issue 29):
 # the height field of tools/bench/terrain.py at about 1, 5 and 20 million
-# facets, as a binary little-endian PLY (terrain.py --ply) and, up to
+# facets, as a binary little-endian PLY (tools/bench/plygen.py) and, up to
 # SCN_MAX million facets (default 5), as the .scn of the same mesh
 # (terrain.py --float32: the PLY's float32 vertices written exactly, the
 # same facets in the same order); above it, whose .scn would pass the 1 GiB
-# a scene may weigh, as an OBJ of the same mesh instead (terrain.py --obj:
-# the vertices to nine digits), the text file rt-export reads without a
-# PLY reader.
+# a scene may weigh, as an OBJ of the same mesh instead (terrain.py --obj
+# --float32: the vertices to nine digits), the text file rt-export reads
+# without a PLY reader.
 #
 #   tools/bench/scale.sh [--sizes 1,5,20] [--runs N] [BUILD_DIR]
 #
@@ -113,8 +113,10 @@ def find(d, path):
     for k, v in d.items():
         if isinstance(v, dict):
             find(v, path + k + ".")
+        elif "peak" in k and k.endswith("_bytes"):
+            peaks.append("%s=%.1fMB" % (k[:-len("_bytes")], v / 1e6))
         elif "peak" in k:
-            peaks.append("%s%s=%s" % (path, k, v))
+            peaks.append("%s=%.6g" % (k, v))
 find(s, "")
 print(sec["load"], build, sec["render"] - build, sec["write"],
       float(sys.argv[2]) - float(sys.argv[1]), open(sys.argv[3]).read().strip(),
@@ -141,7 +143,7 @@ embree() {
     echo "$(col 1) $(col 2) $(col 3) $(col 4) $(col 5) $(col 6)"
 }
 
-knows_ply() { "$export" --help 2>&1 | grep -qi 'ply'; }
+knows_ply() { "$export" --help 2>&1 | grep -qi 'ply'; }  # main before PLY
 
 rows=()     # facets format MB load build trace write whole kb readkb rays peaks
 peers=()    # facets format load build trace whole kb rays
@@ -163,12 +165,9 @@ for s in ${sizes//,/ }; do
     for f in "${formats[@]}"; do
         file="$work/terrain-$n.$f"
         case $f in
-            scn) python3 "$here/terrain.py" "$n" --float32 >"$file" ;;
-            obj) python3 "$here/terrain.py" "$n" --obj >"$file" ;;
-            # When tools/bench/plygen.py lands with terrain.py's mesh, it
-            # can write this file instead; its vertices must stay the
-            # .scn's float32 ones for the rows to be one scene.
-            ply) python3 "$here/terrain.py" "$n" --ply >"$file" ;;
+            scn) python3 "$here/terrain.py" --float32 "$n" >"$file" ;;
+            obj) python3 "$here/terrain.py" --obj --float32 "$n" >"$file" ;;
+            ply) python3 "$here/plygen.py" "$n" >"$file" ;;
         esac
         bytes=$(stat -c %s "$file")
         files+=("$facets $f $bytes")
@@ -222,6 +221,7 @@ BEGIN {
     }
     load = $4; build = $5; trace = $6; write = $7; whole = $8;
     peak = $9 * 1024; readpeak = $10 * 1024; rays = $11; peaks = $12;
+    gsub(",", ", ", peaks);
     met = "-";
     if (tw != "-") {
         bad = "";

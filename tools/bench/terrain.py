@@ -1,37 +1,39 @@
 #!/usr/bin/env python3
 """terrain - a height field of N x N square cells, each cut into two
 triangles (2 N^2 facets), as a .scn, for timing builds on a big mesh
-(tools/bench/peers.sh: N = 708 gives 1,002,528 facets), or as a binary
-PLY of the same mesh (tools/bench/scale.sh).
+(tools/bench/peers.sh: N = 708 gives 1,002,528 facets; tools/bench/
+scale.sh).
 
     terrain.py N > terrain.scn
-    terrain.py N --float32 > terrain.scn
-    terrain.py N --ply > terrain.ply
-    terrain.py N --obj > terrain.obj
+    terrain.py --obj N > terrain.obj
+    terrain.py --nff N > terrain.nff
+    terrain.py [--obj] --float32 N > terrain.scn
+
+--obj writes the same mesh as an OBJ (`v x y z` and `f a b c`, the
+vertices written as in the .scn; the reader makes its own camera and
+light); --nff writes it as NFF in the style of the SPD generators: the
+view of the .scn, its background and light, one `f` material, and each
+facet as a polygon `p 3` with its three vertices on their own lines (an
+NFF polygon shares no vertices, so the file is about twice the .scn).
+tools/bench/parse-rate.sh times the readers on the three.
+
+--float32 rounds every coordinate to the nearest float32, as
+tools/bench/plygen.py's PLY of the same N holds it (what a scanned model
+holds): the .scn then writes each as the shortest decimal that reads back
+as the same double, so that it and the PLY are one scene, vertex for
+vertex and bit for bit, the same facets in the same order; an OBJ writes
+each to nine digits (the same float32, not the same double), which keeps
+20 million facets (N = 3163) under the 1 GiB a scene may weigh (0.92 GB;
+1.36 GB as the exact .scn).  tools/bench/scale.sh times the steps on them.
 
 The heights are a fixed sum of sines over the square [-1, 1]^2 (no
 randomness: the same file every run), at most 0.15; the camera looks down
 on it from the south-west at 400 x 400, the light is high in the south;
 every facet is opaque grey-green with k = 0 (no reflections: the mesh is
 there for its build and its camera and shadow rays).
-
---float32 rounds every coordinate to the nearest float32 (what a scanned
-model's PLY holds) and writes it exactly (the shortest decimal that reads
-back as that double), so that the .scn and the PLY of --ply hold the
-same vertices, bit for bit, and the same facets in the same order.
---ply writes them as binary little-endian PLY 1.0 (`element vertex` with
-`property float x, y, z`, `element face` with `property list uchar int
-vertex_indices`, 0-based); a PLY has no camera or light, so its comments
-say the ones of the .scn (as rt-export's --look-from, --look-at, --up,
---fov and --light).  It is written a row of cells at a time, with array
-slices, not a facet at a time: N = 3163 (20,009,138 facets, 10,017,796
-vertices, 380 MB) takes seconds.  --obj writes the same float32 vertices
-to nine digits (enough to read back as the same float32, not as the same
-double) and the same facets as a Wavefront OBJ, for the sizes whose .scn
-would pass the 1 GiB a scene may weigh (20 million facets: about 1.4 GB
-as --float32, 0.95 GB as --obj).
 """
 import array
+import itertools
 import math
 import sys
 
@@ -42,146 +44,117 @@ def height(x, y):
             0.03 * math.cos(11.0 * x - 5.0 * y))
 
 
-O = (-1.1, -1.5, 1.0)                           # the observer
-LIGHT = (0.5, -3, 4)
-# The options that give a PLY of the mesh the .scn's view: the screen is
-# centred on O -> (0, 0, 0), 60 degrees wide, its right horizontal.
+# The options that give a PLY or an OBJ of the mesh the .scn's view
+# (tools/bench/scale.sh): the screen centred on O -> (0, 0, 0), 60 degrees
+# wide, its right horizontal; the .scn's light.
 VIEW = "--look-from -1.1,-1.5,1 --look-at 0,0,0 --up 0,0,1 --fov 60 " \
        "--light 0.5,-3,4 --size 400x400"
 
 
-def write_head(out, n):
+def usage():
+    sys.exit("usage: terrain.py [--obj | --nff] [--float32] N > terrain.scn")
+
+
+def vertices(n, exact=None):
+    """The (n + 1)^2 vertices, row by row, as the .scn writes them; with
+    exact "scn" or "obj", rounded to float32 and written as --float32
+    says."""
+    if exact is None:
+        for j in range(n + 1):
+            y = -1 + 2 * j / n
+            yield from (("%.7g" % (-1 + 2 * i / n), "%.7g" % y,
+                         "%.7g" % height(-1 + 2 * i / n, y))
+                        for i in range(n + 1))
+        return
+    form = "%r" if exact == "scn" else "%.9g"
+    for j in range(n + 1):
+        y = -1 + 2 * j / n
+        row = array.array("f", bytes(12 * (n + 1)))
+        row[0::3] = array.array("f", (-1 + 2 * i / n for i in range(n + 1)))
+        row[1::3] = array.array("f", [y]) * (n + 1)
+        row[2::3] = array.array("f", (height(-1 + 2 * i / n, y)
+                                      for i in range(n + 1)))
+        c = row.tolist()                        # the doubles they widen to
+        yield from ((form % c[k], form % c[k + 1], form % c[k + 2])
+                    for k in range(0, len(c), 3))
+
+
+def facets(n, j):
+    """The 2 n facets of row j, each three 1-based vertex numbers."""
+    for i in range(n):
+        v = j * (n + 1) + i + 1                 # 1-based, lower left
+        yield (v, v + 1, v + n + 2)
+        yield (v, v + n + 2, v + n + 1)
+
+
+def write_obj(out, n, exact):
+    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
+              % (n, n))
+    rows = vertices(n, "obj" if exact else None)
+    for j in range(n + 1):                      # a row at a time
+        out.write("".join("v %s %s %s\n" % c
+                          for c in itertools.islice(rows, n + 1)))
+    for j in range(n):
+        out.write("".join("f %d %d %d\n" % f for f in facets(n, j)))
+
+
+def write_nff(out, n):
+    points = list(vertices(n))
+    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
+              % (n, n))
+    # the view of the .scn: from O towards the origin, z up, 60 degrees
+    out.write("v\nfrom -1.1 -1.5 1.0\nat 0 0 0\nup 0 0 1\nangle 60\n"
+              "hither 0.01\nresolution 400 400\n")
+    out.write("b %.9g %.9g %.9g\n" % (120 / 255, 160 / 255, 220 / 255))
+    out.write("l 0.5 -3 4\n")
+    out.write("f %.9g %.9g %.9g 1 0 0 0 0\n" % (150 / 255, 170 / 255,
+                                                 120 / 255))
+    for j in range(n):
+        out.write("".join("p 3\n%s %s %s\n%s %s %s\n%s %s %s\n"
+                          % (points[a - 1] + points[b - 1] + points[c - 1])
+                          for a, b, c in facets(n, j)))
+
+
+def main():
+    args = sys.argv[1:]
+    kind = "scn"
+    if args and args[0] in ("--obj", "--nff"):
+        kind = args.pop(0)[2:]
+    exact = bool(args) and args[0] == "--float32" and kind != "nff"
+    if exact:
+        args.pop(0)
+    if len(args) != 1 or not args[0].isdigit() or int(args[0]) < 1:
+        usage()
+    n = int(args[0])
+    out = sys.stdout
+    if kind == "obj":
+        write_obj(out, n, exact)
+        return
+    if kind == "nff":
+        write_nff(out, n)
+        return
     out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
               % (n, n))
     out.write("-1.1,-1.5,1.0\n")                # the observer O
     # A one unit from O towards (0, 0, 0); B to its right (tan 30 degrees).
-    d = math.sqrt(sum(c * c for c in O))
-    a = [c - c / d for c in O]
+    o = (-1.1, -1.5, 1.0)
+    d = math.sqrt(sum(c * c for c in o))
+    a = [c - c / d for c in o]
     right = (1.5, -1.1, 0.0)                    # (view x up), horizontal
     r = math.sqrt(sum(c * c for c in right))
     b = [a[i] + right[i] / r * math.tan(math.radians(30)) for i in range(3)]
     out.write(",".join("%.9g" % c for c in a + b) + ",400,400\n")
-
-
-def write_tail(out):
-    out.write("120,160,220\n")                  # the background
-    out.write("0.5,-3,4,255,255,255\n")         # the light
-
-
-def write_facets(out, n):
+    out.write("%d\n" % ((n + 1) * (n + 1)))
+    rows = vertices(n, "scn" if exact else None)
+    for j in range(n + 1):                      # a row at a time
+        out.write("".join("%s,%s,%s\n" % c
+                          for c in itertools.islice(rows, n + 1)))
     out.write("%d\n" % (2 * n * n))
     for j in range(n):
-        rows = []
-        for i in range(n):
-            v = j * (n + 1) + i + 1             # 1-based, lower left
-            rows.append("%d,%d,%d,0,150,170,120\n" % (v, v + 1, v + n + 2))
-            rows.append("%d,%d,%d,0,150,170,120\n" % (v, v + n + 2, v + n + 1))
-        out.write("".join(rows))
-
-
-def float32_row(n, j):
-    """Row j of the vertices, x, y, z interleaved, rounded to float32."""
-    y = -1 + 2 * j / n
-    row = array.array("f", bytes(12 * (n + 1)))
-    row[0::3] = array.array("f", (-1 + 2 * i / n for i in range(n + 1)))
-    row[1::3] = array.array("f", [y]) * (n + 1)
-    row[2::3] = array.array("f", (height(-1 + 2 * i / n, y)
-                                  for i in range(n + 1)))
-    return row
-
-
-def scn(n):
-    out = sys.stdout
-    write_head(out, n)
-    out.write("%d\n" % ((n + 1) * (n + 1)))
-    for j in range(n + 1):
-        out.write("".join("%.7g,%.7g,%.7g\n" % (-1 + 2 * i / n, -1 + 2 * j / n,
-                                                height(-1 + 2 * i / n,
-                                                       -1 + 2 * j / n))
-                          for i in range(n + 1)))
-    write_facets(out, n)
-    write_tail(out)
-
-
-def scn_float32(n):
-    out = sys.stdout
-    write_head(out, n)
-    out.write("%d\n" % ((n + 1) * (n + 1)))
-    for j in range(n + 1):
-        c = float32_row(n, j).tolist()          # the doubles they widen to
-        out.write("".join("%r,%r,%r\n" % (c[k], c[k + 1], c[k + 2])
-                          for k in range(0, len(c), 3)))
-    write_facets(out, n)
-    write_tail(out)
-
-
-def obj(n):
-    out = sys.stdout
-    out.write("# a height field of %d x %d cells: tools/bench/terrain.py\n"
-              "# view (rt-export): %s\n" % (n, n, VIEW))
-    for j in range(n + 1):
-        c = float32_row(n, j).tolist()
-        out.write("".join("v %.9g %.9g %.9g\n" % (c[k], c[k + 1], c[k + 2])
-                          for k in range(0, len(c), 3)))
-    for j in range(n):
-        rows = []
-        for i in range(n):
-            v = j * (n + 1) + i + 1             # 1-based, lower left
-            rows.append("f %d %d %d\nf %d %d %d\n"
-                        % (v, v + 1, v + n + 2, v, v + n + 2, v + n + 1))
-        out.write("".join(rows))
-
-
-def little_endian(a):
-    if sys.byteorder != "little":
-        a.byteswap()
-    return a.tobytes()
-
-
-def ply(n):
-    out = sys.stdout.buffer
-    head = ["ply", "format binary_little_endian 1.0",
-            "comment a height field of %d x %d cells: "
-            "tools/bench/terrain.py" % (n, n),
-            "comment view (rt-export): " + VIEW,
-            "element vertex %d" % ((n + 1) * (n + 1)),
-            "property float x", "property float y", "property float z",
-            "element face %d" % (2 * n * n),
-            "property list uchar int vertex_indices", "end_header"]
-    out.write(("\n".join(head) + "\n").encode("ascii"))
-    for j in range(n + 1):
-        out.write(little_endian(float32_row(n, j)))
-    m = 2 * n                                   # the facets of a row
-    record = bytearray(13 * m)
-    record[0::13] = b"\x03" * m
-    corner = [array.array("i", bytes(4 * m)) for _ in range(3)]
-    for j in range(n):
-        v = j * (n + 1)                         # 0-based, lower left
-        lower = array.array("i", range(v, v + n))
-        upper = array.array("i", range(v + n + 1, v + 2 * n + 1))
-        right = array.array("i", range(v + 1, v + n + 1))
-        diagonal = array.array("i", range(v + n + 2, v + 2 * n + 2))
-        # (v, v + 1, v + n + 2) then (v, v + n + 2, v + n + 1), as the .scn
-        corner[0][0::2] = lower
-        corner[0][1::2] = lower
-        corner[1][0::2] = right
-        corner[1][1::2] = diagonal
-        corner[2][0::2] = diagonal
-        corner[2][1::2] = upper
-        for c in range(3):
-            raw = little_endian(array.array("i", corner[c]))
-            for b in range(4):
-                record[1 + 4 * c + b::13] = raw[b::4]
-        out.write(record)
-
-
-def main():
-    modes = {"": scn, "--float32": scn_float32, "--ply": ply, "--obj": obj}
-    args = sys.argv[1:]
-    if not 1 <= len(args) <= 2 or not args[0].isdigit() or \
-            int(args[0]) < 1 or (args + [""])[1] not in modes:
-        sys.exit("usage: terrain.py N [--float32 | --ply | --obj] > FILE")
-    modes[(args + [""])[1]](int(args[0]))
+        out.write("".join("%d,%d,%d,0,150,170,120\n" % f
+                          for f in facets(n, j)))
+    out.write("120,160,220\n")                  # the background
+    out.write("0.5,-3,4,255,255,255\n")         # the light
 
 
 if __name__ == "__main__":
