@@ -24,11 +24,13 @@
 # is the wall clock of the process, "peak" its maximum resident set
 # (/usr/bin/time's %M, else getrusage of the child), "B/facet" the peak
 # over the facets, "read peak" that of `rt-export FILE --check` (the read
-# alone, one run).  Any key of --stats=json whose name holds "peak" (the
-# peak bytes per facet rt-export may report) is shown as it is.  A PLY
-# or an OBJ has no camera: their runs are given the .scn's view (terrain.VIEW:
-# --look-from, --look-at, --up, --fov, --light), so both formats cast the
-# same rays (the "rays" column).  A PLY that rt-export does not read (no
+# alone, one run).  The keys of --stats=json whose names hold "peak"
+# (rt-export's own "memory": peak_bytes, load_peak_bytes,
+# peak_bytes_per_facet, where it has them) are shown in the last column
+# (bytes as MB), from the first run.  A PLY or an OBJ has no camera: their
+# runs are given the .scn's view (terrain.VIEW: --look-from, --look-at,
+# --up, --fov, --light), so the formats cast the same rays (the "rays"
+# column).  A PLY that rt-export does not read (no
 # PLY reader in this build) gives the row "skipped: rt-export cannot read
 # PLY (not built)".  A size whose runs would not fit in memory (the last
 # size's bytes per facet, else 600, times its facets, beyond 80 % of
@@ -38,8 +40,8 @@
 # found) on the .scn and OBJ rows (it takes the file's own camera: on an
 # OBJ the automatic one, other rays, see its "rays"): its load,
 # rtcCommitScene (2 threads), render (one thread, as always), whole
-# process and peak.  The files live in a temporary folder,
-# removed as soon as their size is done; the script says how big they were.
+# process and peak.  The files live in a temporary folder, removed as soon
+# as their size is done; the script says how big they were.
 #   tools/bench/scale.sh --sizes 1,5 --runs 3 build
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
