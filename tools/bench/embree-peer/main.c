@@ -22,9 +22,10 @@
  *
  * It prints one line on standard output,
  *   embree: facets N build S s render S s camera_rays A shadow_rays B
- *   reflection_rays C refraction_rays D
+ *   reflection_rays C refraction_rays D load S s
  * (one line; build: rtcCommitScene alone; render: the pixels alone, not the
- * load, the build or the write), and writes the image to OUT when -o is
+ * load, the build or the write; load: rt_scene_load, the read rt-export
+ * does, alone), and writes the image to OUT when -o is
  * given.  --threads sets the threads of Embree's build (0: all cores, the
  * default); the render is always one thread.  A benchmark peer, never a
  * dependency of the library: built only where CMake finds Embree 3.
@@ -400,10 +401,12 @@ int main(int argc, char **argv)
 
     rt_error error = {0};
     rt_scene *scene = NULL;
+    double start = cli_clock_seconds();
     if (rt_scene_load(path, NULL, &scene, &error) != RT_OK) {
         fprintf(stderr, "rt-embree-peer: %s\n", error.message);
         return 1;
     }
+    double load = cli_seconds_since(start);
     rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     rt_camera camera = info.camera;
@@ -445,7 +448,7 @@ int main(int argc, char **argv)
     int live = 0, status = 1;
     if (fill(scene, &info, device, p.scene, &facets, &live)) {
         p.facets = facets;
-        double start = cli_clock_seconds();
+        start = cli_clock_seconds();
         rtcCommitScene(p.scene);
         double build = cli_seconds_since(start);
 
@@ -460,9 +463,9 @@ int main(int argc, char **argv)
         if (ok) {
             printf("embree: facets %d build %.6f s render %.6f s "
                    "camera_rays %llu shadow_rays %llu reflection_rays %llu "
-                   "refraction_rays %llu\n",
+                   "refraction_rays %llu load %.6f s\n",
                    live, build, seconds, n.camera, n.shadow, n.reflection,
-                   n.refraction);
+                   n.refraction, load);
             status = 0;
         } else if (error.message[0] == '\0') {
             snprintf(error.message, sizeof error.message, "out of memory");
