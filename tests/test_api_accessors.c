@@ -199,7 +199,8 @@ static uint64_t stats_rays_with_size(size_t size)
     X(a23, "rt_ray_tree_truncated", rt_ray_tree_truncated(NULL) == 0)      \
     X(a24, "rt_scene_facet", facet_with_size_is_untouched(0))                \
     X(a25, "rt_scene_facet",                                                 \
-      facet_with_size_is_untouched(sizeof(rt_facet_info) - sizeof(double)))  \
+      facet_with_size_is_untouched(offsetof(rt_facet_info, highlight) -     \
+                                   sizeof(double)))                         \
     X(a26, "rt_scene_get_info", info_with_size_is_untouched(0))              \
     X(a27, "rt_scene_get_info",                                              \
       info_with_size_is_untouched(offsetof(rt_scene_info, light_count)))    \

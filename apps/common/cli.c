@@ -309,7 +309,8 @@ static int read_view(const char *text, int max_light, rt_debug_view *view,
         rt_debug_view view;
     } views[] = {{"normal", RT_VIEW_NORMAL}, {"depth", RT_VIEW_DEPTH},
                  {"facet", RT_VIEW_FACET},   {"shadow", RT_VIEW_SHADOW},
-                 {"bounces", RT_VIEW_BOUNCES}, {"ns", RT_VIEW_NS}};
+                 {"bounces", RT_VIEW_BOUNCES}, {"ns", RT_VIEW_NS},
+                 {"shading-normal", RT_VIEW_SHADING_NORMAL}};
     const char *equals = strchr(text, '=');
     size_t length = equals != NULL ? (size_t)(equals - text) : strlen(text);
     for (size_t i = 0; i < sizeof views / sizeof *views; i++) {

@@ -26,6 +26,7 @@ const char view_app_keys_help[] =
     "N normal   D depth   F facet index\n"
     "L shadow term E (again: next light)\n"
     "B bounces  I N.S (again: next light)\n"
+    "M shading normal (smooth facets)\n"
     "V, 0     the picture\n"
     "S save   R reload   + - depth\n"
     "H, F1    this help  Q quit\n";
@@ -33,12 +34,13 @@ const char view_app_keys_help[] =
 /* How the title and the messages name each view (an rt_debug_view). */
 static const char *const view_names[] = {
     "", "normal view", "depth view", "facet view", "shadow view",
-    "bounces view", "N.S view",
+    "bounces view", "N.S view", "shading normal view",
 };
 
 const char *view_app__view_name(int view)
 {
-    return view >= 0 && view <= RT_VIEW_NS ? view_names[view] : "";
+    return view >= 0 && view <= RT_VIEW_SHADING_NORMAL ? view_names[view]
+                                                       : "";
 }
 
 static void change_depth(view_app *app, int delta)
@@ -167,7 +169,7 @@ int view_app__show_view(view_app *app)
 
 int view_app_set_view(view_app *app, int view, int light)
 {
-    if (view < 0 || view > RT_VIEW_NS)
+    if (view < 0 || view > RT_VIEW_SHADING_NORMAL)
         return 0;
     app->view = view;
     app->view_light = light;
@@ -206,6 +208,7 @@ static const struct {
     {SDLK_n, RT_VIEW_NORMAL, 0}, {SDLK_d, RT_VIEW_DEPTH, 0},
     {SDLK_f, RT_VIEW_FACET, 0},  {SDLK_b, RT_VIEW_BOUNCES, 0},
     {SDLK_l, RT_VIEW_SHADOW, 1}, {SDLK_i, RT_VIEW_NS, 1},
+    {SDLK_m, RT_VIEW_SHADING_NORMAL, 0},
     {SDLK_v, 0, 0},              {SDLK_0, 0, 0},
     {SDLK_KP_0, 0, 0},
 };

@@ -111,7 +111,23 @@ typedef struct rt_ray_node {
     int blocker;            /* when cast and E = 0: the nearest facet on the
                                segment to the light; else -1 */
     int blocker_line;       /* its record's line (0: unknown) */
-    /* (own: E (N.S) d C_S C_F / 255 x weight, as the renderer added it) */
+    /* (own: E (N.S) d C_S C_F / 255 x weight, plus the highlight below,
+     * as the renderer added it) */
+
+    /* Since 0.4 (docs/rendering-model.md, "Smooth shading and
+     * highlights").  Hits: */
+    int smooth;             /* 1: the facet has vertex normals */
+    rt_vec3 shading_normal; /* N_s as used (unit, on the side of `normal`;
+                               `normal` itself on a flat facet) */
+    rt_vec3 shading_point;  /* P', where its shadow rays leave (`point` on
+                               a flat facet) */
+    double highlight;       /* the facet's highlight weight s */
+    double highlight_exponent;  /* its exponent p */
+    /* Shadow rays: */
+    double r_dot_v;         /* R_l.V of the highlight (0 when not lit or
+                               s = 0) */
+    rt_color highlight_own; /* the highlight's term E s max(0, R.V)^p C_S
+                               x weight, part of `own` */
 } rt_ray_node;
 
 /* The rays of one pixel (opaque: rt_ray_tree_nodes reads it). */
@@ -159,7 +175,7 @@ RT_API size_t rt_ray_tree_truncated(const rt_ray_tree *tree);
  * RT_VIEW_DEPTH's.  docs/teaching.md shows how to read them.
  */
 typedef enum rt_debug_view {
-    RT_VIEW_NORMAL = 1,     /* the normal as used, n, as (n + 1) / 2 x 255
+    RT_VIEW_NORMAL = 1,     /* the geometric normal N_g as used, n, as (n + 1) / 2 x 255
                                per axis x, y, z -> red, green, blue */
     RT_VIEW_DEPTH = 2,      /* t of the camera ray: the nearest t of the
                                image's hits 255, the farthest 0, linear
@@ -173,8 +189,11 @@ typedef enum rt_debug_view {
     RT_VIEW_BOUNCES = 5,    /* reflected and refracted rays of the tree at
                                the deepest: 0 black, the render's depth
                                white, grey levels 255 b / depth between */
-    RT_VIEW_NS = 6          /* N.S of light `light`: 255 N.S when positive
+    RT_VIEW_NS = 6,         /* N.S of light `light`: 255 N.S when positive
                                (grey), 0 when <= 0 */
+    RT_VIEW_SHADING_NORMAL = 7  /* the shading normal N_s as RT_VIEW_NORMAL
+                                   shows the geometric one (the same on a
+                                   flat facet) */
 } rt_debug_view;
 
 /* The colour RT_VIEW_FACET gives facet `index`: a fixed hash of it, each

@@ -115,6 +115,12 @@ typedef struct rt_facet_info {
     double transparency;    /* t in [0, 1], k + t <= 1 */
     double refractive_index; /* n > 0 (1 when not given) */
     double diffuse;         /* diffuse weight d >= 0 (1 - k - t in .scn) */
+    /* Since 0.4 (docs/rendering-model.md, "Smooth shading and
+     * highlights"): */
+    double highlight;       /* Phong highlight weight s >= 0 (0: none) */
+    double highlight_exponent; /* its exponent p >= 1 */
+    int smooth;             /* 1: each corner has a vertex normal */
+    rt_vec3 vertex_normal[3]; /* unit, per corner, when smooth; else zero */
 } rt_facet_info;
 
 /* Values of rt_facet_info.degenerate: facets the renderer leaves out, as
@@ -141,6 +147,9 @@ typedef struct rt_scene_info {
     rt_camera camera;
     int light_count;        /* 1..RT_MAX_LIGHTS; each is rt_scene_light */
     int transparent_facet_count; /* live facets with transparency t > 0 */
+    /* Since 0.4: */
+    int smooth_facet_count; /* live facets with a normal at each corner */
+    int highlight_facet_count;  /* live facets with a highlight s > 0 */
 } rt_scene_info;
 
 /*
@@ -157,6 +166,8 @@ typedef struct rt_facet_desc {
     double diffuse;         /* diffuse weight d >= 0, used when
                                diffuse_given */
     int diffuse_given;      /* 0: d = 1 - k - t (the .scn rule) */
+    double highlight;       /* Phong highlight weight s >= 0 (0: none) */
+    double highlight_exponent; /* its exponent p >= 1; 0 stands for 1 */
 } rt_facet_desc;
 
 /*
@@ -177,6 +188,10 @@ typedef struct rt_scene_desc {
     int light_count;        /* 1..RT_MAX_LIGHTS */
     double aperture;        /* thin-lens radius a >= 0 (0: pinhole) */
     double focal_distance;  /* f > 0; 0 stands for |AO| */
+    const rt_vec3 *normals; /* NULL, or vertex_count vertex normals (copied,
+                               normalised): a facet whose three corners
+                               have one is smooth; a zero vector stands
+                               for none; others must be finite */
 } rt_scene_desc;
 
 /*
@@ -388,6 +403,10 @@ RT_API void rt_scene_get_info(const rt_scene *scene, rt_scene_info *info);
 /* The i-th vertex (0-based, i < vertex_count; else asserted, or the zero
  * vector where NDEBUG is defined).  Thread-safe. */
 RT_API rt_vec3 rt_scene_vertex(const rt_scene *scene, int i);
+
+/* The i-th vertex's unit normal, or the zero vector when it has none (and
+ * for a bad index: asserted as rt_scene_vertex's).  Thread-safe. */
+RT_API rt_vec3 rt_scene_vertex_normal(const rt_scene *scene, int i);
 
 /* The i-th facet record (0-based, i < facet_count; else asserted, or a
  * zeroed *facet, size kept, where NDEBUG is defined) into `facet`, whose

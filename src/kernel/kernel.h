@@ -43,6 +43,8 @@ typedef struct rt_material {
     double refractive_index; /* n > 0 */
     double diffuse;         /* d >= 0 (1 - k - t in .scn files) */
     rt_rgb8 color;          /* C_F */
+    double highlight;       /* s >= 0 (0: no highlight) */
+    double exponent;        /* p >= 1 */
 } rt_material;
 
 /* A facet as a scene keeps it (24 bytes): its corners, its material,
@@ -66,6 +68,9 @@ typedef struct rt_kernel_source {
     const rt_vec3 *normals; /* NULL, or each facet's rt__facet_normal,
                                computed already (the scene's build hands
                                them to the double kernel) */
+    const rt_vec3 *vertex_normals;  /* NULL, or per vertex its unit normal
+                                       (zero: none); a facet whose three
+                                       corners have one is smooth */
     const rt_light *lights; /* light_count >= 1 */
     int light_count;
     rt_rgb8 background;
@@ -93,7 +98,8 @@ typedef struct rt_trace_recorder {
                   rt_vec3 origin, rt_vec3 direction, double weight);
     /* Ray `node` met facet record `facet` at distance t. */
     void (*on_hit)(void *state, int node, int facet, double t,
-                   rt_vec3 point, rt_vec3 normal);
+                   rt_vec3 point, rt_vec3 normal, int smooth,
+                   rt_vec3 shading_normal, rt_vec3 shading_point);
     /* Ray `node` met nothing: the background's term `own`. */
     void (*on_miss)(void *state, int node, rt_color own);
     /* The shadow ray from the hit of `parent` to light `light`: cast or
@@ -101,7 +107,8 @@ typedef struct rt_trace_recorder {
      * and the term `own` it adds. */
     void (*on_shadow)(void *state, int parent, int light, rt_vec3 origin,
                       rt_vec3 direction, double n_dot_s, int cast,
-                      int blocked, int blocker, rt_color own);
+                      int blocked, int blocker, rt_color own,
+                      double r_dot_v, rt_color highlight);
 } rt_trace_recorder;
 
 /*

@@ -61,6 +61,8 @@ typedef struct material {
     REAL t;                 /* transparency */
     REAL n;                 /* refractive index */
     REAL d;                 /* diffuse weight */
+    REAL s;                 /* highlight weight (0: none) */
+    REAL p;                 /* highlight exponent, >= 1 */
 } material;
 
 /* A facet that can be hit: 48 bytes in double, 32 in float.  Its
@@ -125,6 +127,11 @@ typedef struct KERNEL_T {
     REAL *more_diffuse;     /* per material m, per further light l >= 1:
                                d C_S,l C_F / 255 at [(m (L-1) + l-1) 3 + c] */
     int transparent;        /* some facet has t > 0 */
+    vec *vertex_normals;    /* NULL when no facet is smooth; else per
+                               vertex its unit normal (zero: none) */
+    unsigned char *smooth;  /* NULL, or per facet of tris: 1 when each
+                               corner has a vertex normal */
+    vec *light_colors;      /* C_S,l per light, for the highlights */
     REAL background[3];
     struct shadow_plane *planes;    /* NULL, or per facet, and */
     REAL *light_side;       /* per light and facet: the shadow packets'
@@ -254,6 +261,8 @@ static void add_material(KERNEL_T *k, const rt_kernel_source *s, int m)
                  ? 1 - out->k - out->t
                  : (REAL)given->diffuse;
     out->d = d;
+    out->s = (REAL)given->highlight;
+    out->p = (REAL)given->exponent;
     REAL color[3] = {given->color.r, given->color.g, given->color.b};
     for (int l = 0; l < s->light_count; l++) {
         const rt_rgb8 *c8 = &s->lights[l].color;
@@ -281,6 +290,14 @@ static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
     f->facet = i;
     f->material = record->material;
     k->transparent |= k->materials[record->material].t > 0;
+    if (k->smooth != NULL) {
+        int smooth = 1;
+        for (int j = 0; j < 3; j++) {
+            rt_vec3 n = s->vertex_normals[record->vertex[j]];
+            smooth &= n.x != 0.0 || n.y != 0.0 || n.z != 0.0;
+        }
+        k->smooth[f - k->tris] = (unsigned char)smooth;
+    }
 }
 
 /* The number of vertices of source `s` that its facets but the
@@ -319,8 +336,24 @@ static int allocate(KERNEL_T *k, const rt_kernel_source *s)
                            ? (size_t)more * (size_t)s->material_count * 3
                            : 1;
     k->more_diffuse = malloc(more_size * sizeof *k->more_diffuse);
+    k->light_colors = malloc((size_t)s->light_count * sizeof *k->light_colors);
+    int normals_ok = 1;
+    if (s->vertex_normals != NULL) {
+        /* Only the vertices the kernel keeps; a scene without normals
+         * holds neither array. */
+        k->vertex_normals = malloc((size_t)(k->vertex_count > 0
+                                                ? k->vertex_count
+                                                : 1) *
+                                   sizeof *k->vertex_normals);
+        k->smooth = malloc((size_t)(s->facet_count > 0 ? s->facet_count
+                                                       : 1));
+        normals_ok = k->vertex_normals != NULL && k->smooth != NULL;
+        for (int v = 0; normals_ok && v < k->vertex_count; v++)
+            k->vertex_normals[v] = from_rt(s->vertex_normals[v]);
+    }
     return k->tris != NULL && k->vertices != NULL && k->lights != NULL &&
-           k->materials != NULL && k->more_diffuse != NULL;
+           k->materials != NULL && k->more_diffuse != NULL &&
+           k->light_colors != NULL && normals_ok;
 }
 
 /* The blocks of k's facets (from malloc, 32-byte aligned); NULL when out
@@ -350,8 +383,11 @@ static rt_kernel *kernel_create(const rt_kernel_source *s)
         kernel_destroy(&k->base);
         return NULL;
     }
-    for (int l = 0; l < s->light_count; l++)
+    for (int l = 0; l < s->light_count; l++) {
         k->lights[l] = from_rt(s->lights[l].position);
+        k->light_colors[l] = mk(s->lights[l].color.r, s->lights[l].color.g,
+                                s->lights[l].color.b);
+    }
     k->light = k->lights[0];
     k->background[0] = s->background.r;
     k->background[1] = s->background.g;
@@ -397,6 +433,9 @@ static void kernel_destroy(rt_kernel *kernel)
         free(k->lights);
         free(k->materials);
         free(k->more_diffuse);
+        free(k->light_colors);
+        free(k->vertex_normals);
+        free(k->smooth);
         free(k->planes);
         free(k->light_side);
         octree_free(atomic_load(&k->tree));

@@ -451,8 +451,11 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
         int skip[VW], lane[VW], m = 0, frame = -1;
         for (int l = 0; l < n; l++) {
             const known_hit *b = &out[l];
+            /* A smooth facet's shadow rays leave its shading point
+             * (shade_hit): left to the trace. */
             if (!b->found ||
-                k->materials[k->tris[b->h->index].material].d == 0)
+                k->materials[k->tris[b->h->index].material].d == 0 ||
+                (k->smooth != NULL && k->smooth[b->h->index]))
                 continue;
             vec to_light = sub(k->lights[light], b->point);
             if (!(dot(b->normal, to_light) > 0))

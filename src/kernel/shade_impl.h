@@ -166,8 +166,91 @@ typedef struct surface {
     const material *m;      /* f's */
     int index;              /* of f in the kernel's tris */
     vec point, error_bound; /* the hit point and its rounding-error bound */
-    vec normal;             /* unit, facing the ray that met it */
+    vec normal;             /* unit, facing the ray that met it: N_g */
+    int smooth;             /* f has vertex normals: the three below are
+                               its own; else they are normal and point */
+    vec shading;            /* N_s, on the side of `normal` */
+    vec shading_point;      /* P', where its shadow rays leave */
+    vec shading_bound;      /* the rounding-error bound of P' */
+    vec incoming;           /* the unit direction of the ray that met it */
 } surface;
+
+/*
+ * The shading normal of a smooth facet (docs/rendering-model.md, "Smooth
+ * shading"): the vertex normals weighted by the hit's barycentric weights,
+ * normalised and turned to the side of N_g = `normal`; N_g itself where
+ * the sum is zero or not finite.
+ */
+static vec shading_normal(const KERNEL_T *k, const tri *f, const hit *h,
+                          vec normal, int fast)
+{
+    const vec *n = k->vertex_normals;
+    vec sum = add(scale(n[f->v[0]], h->b0),
+                  add(scale(n[f->v[1]], h->b1), scale(n[f->v[2]], h->b2)));
+    REAL m = max3(sum.x, sum.y, sum.z);
+    if (!(m > 0) || !isfinite(m))
+        return normal;
+    vec unit = normalize(sum, fast);
+    return dot(unit, normal) < 0 ? neg(unit) : unit;
+}
+
+/*
+ * The shading point P' of Hanika's "Hacking the shadow terminator" (Ray
+ * Tracing Gems II, ch. 4, 2021) for the hit `point` of a smooth facet: for
+ * each corner v_i with normal n_i, the part of P - v_i below the tangent
+ * plane of v_i, d_i = min(0, (P - v_i).n_i), is taken off; P' = P -
+ * sum_i b_i d_i n_i, on the curved surface the normals describe (the
+ * terms with (P - v_i) of the paper's form cancel, as the weights sum to
+ * 1).  *bound is P's bound doubled (its error passes through the dot
+ * products once) plus the rounding of the terms and of the sum.
+ */
+static vec shading_point(const KERNEL_T *k, const tri *f, const hit *h,
+                         vec point, vec error_bound, vec *bound)
+{
+    REAL b[3] = {h->b0, h->b1, h->b2};
+    vec moved = mk(0, 0, 0), moved_error = mk(0, 0, 0);
+    for (int j = 0; j < 3; j++) {
+        const vec *v = corner(k->vertices, f, j);
+        vec n = k->vertex_normals[f->v[j]];
+        REAL along = dot(sub(point, *v), n);
+        if (!(along < 0))
+            continue;
+        moved = sub(moved, scale(n, b[j] * along));
+        REAL size = dot(add(vabs(point), vabs(*v)), vabs(n));
+        moved_error = add(moved_error,
+                          scale(vabs(n), fabs(b[j]) * size * gamma_bound(8)));
+    }
+    vec p = add(point, moved);
+    *bound = add(scale(error_bound, 2),
+                 add(moved_error, scale(add(vabs(p), vabs(moved)),
+                                        gamma_bound(2))));
+    return p;
+}
+
+/* The mirror direction R = I - 2 (I.N_s) N_s of s (unnormalised), or
+ * with N_g where N_s gives one below the facet. */
+static inline vec mirror_direction(const surface *s, vec incoming)
+{
+    vec r = sub(incoming, scale(s->shading, 2 * dot(incoming, s->shading)));
+    if (s->smooth && !(dot(r, s->normal) > 0))
+        r = sub(incoming, scale(s->normal, 2 * dot(incoming, s->normal)));
+    return r;
+}
+
+/* The highlight of light l at s: max(0, R_l.V)^p, R_l = 2 (N_s.S) N_s -
+ * S, V = -I (Phong; Whitted 1980), S the unit direction to the light;
+ * *r_dot_v gets R_l.V. */
+static inline REAL highlight_of(const surface *s, vec unit_to_light,
+                                REAL *r_dot_v)
+{
+    REAL ns = dot(s->shading, unit_to_light);
+    vec r = sub(scale(s->shading, 2 * ns), unit_to_light);
+    REAL rv = -dot(r, s->incoming);
+    *r_dot_v = rv;
+    if (!(rv > 0))
+        return 0;
+    return (REAL)pow((double)rv, (double)s->m->p);
+}
 
 /* Tells the recorder about the shadow ray to light l of the hit recorded
  * as `node` (not on the renders' path: only when a recorder is set):
@@ -176,7 +259,7 @@ typedef struct surface {
  * it. */
 static void record_light(trace_ctx c, const surface *s, int node, int l,
                          vec to_light, const ray *shadow, int blocked,
-                         rt_color own)
+                         rt_color own, double r_dot_v, rt_color highlight)
 {
     const KERNEL_T *k = c.k;
     int blocker = -1;
@@ -192,8 +275,9 @@ static void record_light(trace_ctx c, const surface *s, int node, int l,
     rt_vec3 from = shadow != NULL ? to_rt(origin)
                                   : to_rt(sub(k->lights[l], to_light));
     c.rec->on_shadow(c.rec->state, node, l, from, to_rt(direction),
-                     (double)dot(s->normal, normalize(to_light, c.fast)),
-                     shadow != NULL, blocked, blocker, own);
+                     (double)dot(s->shading, normalize(to_light, c.fast)),
+                     shadow != NULL, blocked, blocker, own, r_dot_v,
+                     highlight);
 }
 
 /* Adds the direct light, weighted, to color: for each light l,
@@ -208,15 +292,17 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
 {
     const KERNEL_T *k = c->k;
     const tri *f = s->f;
-    int dark = s->m->d == 0;    /* k = 1 on a handout facet */
+    /* k = 1 on a handout facet: d = 0, and no highlight */
+    int dark = s->m->d == 0 && s->m->s == 0;
     const rt_color none = {0, 0, 0};
     for (int l = 0; l < k->light_count; l++) {
         vec light = k->lights[l];
         vec to_light = sub(light, s->point);
-        if (dark || !(dot(s->normal, to_light) > 0)) {
+        if (dark || !(dot(s->shading, to_light) > 0)) {
             c->counters->shadow_rays_skipped++;
             if (c->rec != NULL)
-                record_light(*c, s, node, l, to_light, NULL, 0, none);
+                record_light(*c, s, node, l, to_light, NULL, 0, none, 0,
+                             none);
             continue;
         }
         c->counters->shadow_rays++;
@@ -226,23 +312,43 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
             c->rec == NULL) {
             blocked = given[l];
         } else {
-            shadow = shadow_ray(s->point, s->error_bound, s->normal, light,
-                                to_light);
+            if (s->smooth)  /* from P', the terminator's fix */
+                shadow = shadow_ray(s->shading_point, s->shading_bound,
+                                    s->normal, light,
+                                    sub(light, s->shading_point));
+            else
+                shadow = shadow_ray(s->point, s->error_bound, s->normal,
+                                    light, to_light);
             blocked = shadow_blocked(c, &shadow, l, s->index);
         }
         if (blocked) {
             if (c->rec != NULL)
-                record_light(*c, s, node, l, to_light, &shadow, 1, none);
+                record_light(*c, s, node, l, to_light, &shadow, 1, none, 0,
+                             none);
             continue;
         }
-        REAL w = weight * dot(s->normal, normalize(to_light, c->fast));
+        vec unit = normalize(to_light, c->fast);
+        REAL w = weight * dot(s->shading, unit);
         const REAL *diffuse = diffuse_of(k, f, l);
         for (int ch = 0; ch < 3; ch++)
             color[ch] += w * diffuse[ch];
+        REAL r_dot_v = 0, spot[3] = {0, 0, 0};
+        if (s->m->s > 0) {
+            REAL h = weight * s->m->s * highlight_of(s, unit, &r_dot_v);
+            vec cs = k->light_colors[l];
+            spot[0] = h * cs.x;
+            spot[1] = h * cs.y;
+            spot[2] = h * cs.z;
+            for (int ch = 0; ch < 3; ch++)
+                color[ch] += spot[ch];
+        }
         if (c->rec != NULL)
             record_light(*c, s, node, l, to_light, &shadow, 0,
-                         (rt_color){w * diffuse[0], w * diffuse[1],
-                                    w * diffuse[2]});
+                         (rt_color){w * diffuse[0] + spot[0],
+                                    w * diffuse[1] + spot[1],
+                                    w * diffuse[2] + spot[2]},
+                         (double)r_dot_v,
+                         (rt_color){spot[0], spot[1], spot[2]});
     }
 }
 
@@ -283,9 +389,21 @@ HOT_INLINE int shade_hit(const trace_ctx *c, int found, const hit *h,
         s->normal = dot(s->f->normal, incoming) > 0 ? neg(s->f->normal)
                                                     : s->f->normal;
     }
+    s->incoming = incoming;
+    s->smooth = k->smooth != NULL && k->smooth[h->index];
+    if (s->smooth) {
+        s->shading = shading_normal(k, s->f, h, s->normal, c->fast);
+        s->shading_point = shading_point(k, s->f, h, s->point,
+                                         s->error_bound, &s->shading_bound);
+    } else {
+        s->shading = s->normal;
+        s->shading_point = s->point;
+        s->shading_bound = s->error_bound;
+    }
     if (c->rec != NULL)
         c->rec->on_hit(c->rec->state, node, s->f->facet, (double)h->t,
-                       to_rt(s->point), to_rt(s->normal));
+                       to_rt(s->point), to_rt(s->normal), s->smooth,
+                       to_rt(s->shading), to_rt(s->shading_point));
     add_direct_light(c, s, weight, node, known != NULL ? known->blocked : NULL,
                      color);
     return 1;

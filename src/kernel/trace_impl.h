@@ -52,8 +52,7 @@ HOT_INLINE void trace_opaque(const trace_ctx *c, vec origin, vec incoming,
         if (bounce >= c->max_depth)
             break;          /* a reflection past the limit is black */
         weight *= s.m->k;
-        vec reflected = sub(incoming,
-                            scale(s.normal, 2 * dot(incoming, s.normal)));
+        vec reflected = mirror_direction(&s, incoming);
         origin = offset_origin(s.point, s.error_bound, s.normal, reflected);
         origin_bound = s.error_bound;
         incoming = normalize(reflected, c->fast);
@@ -100,6 +99,27 @@ static int refract(vec incoming, vec n_w, REAL n, vec *out)
         return 0;
     *out = add(scale(incoming, eta), scale(normal, eta * c - sqrt(q)));
     return 1;
+}
+
+/*
+ * refract() at a smooth facet: whether the ray enters or leaves is the
+ * winding normal's to say, as at a flat facet, and Snell's law is applied
+ * with N_s (which faces the ray, as N_t does).  A direction that does not
+ * go below the facet (judged with N_g) is computed with N_g instead; a
+ * total internal reflection (with N_s) is 0, as refract()'s.
+ */
+static int refract_smooth(const surface *s, REAL n, vec *out)
+{
+    vec incoming = s->incoming;
+    REAL eta = dot(incoming, s->f->normal) < 0 ? 1 / n : n;
+    REAL c = -dot(incoming, s->shading);
+    REAL q = 1 - eta * eta * (1 - c * c);
+    if (q < 0)
+        return 0;
+    *out = add(scale(incoming, eta), scale(s->shading, eta * c - sqrt(q)));
+    if (dot(*out, s->normal) < 0)
+        return 1;
+    return refract(incoming, s->f->normal, n, out);
 }
 
 /* Makes room for two more tasks on the stack (*stack, *capacity: moved
@@ -161,12 +181,13 @@ HOT_INLINE int trace_transparent(const trace_ctx *c, vec origin,
             counters->refraction_rays_skipped += m->t > 0;
             continue;       /* past the limit: black */
         }
-        vec mirror = sub(p.incoming,
-                         scale(s.normal, 2 * dot(p.incoming, s.normal)));
+        vec mirror = mirror_direction(&s, p.incoming);
         REAL mirror_weight = m->k;
         vec refracted = mk(0, 0, 0);   /* set when refracts */
-        int refracts = m->t > 0 && refract(p.incoming, f->normal, m->n,
-                                           &refracted);
+        int refracts = m->t > 0 &&
+                       (s.smooth ? refract_smooth(&s, m->n, &refracted)
+                                 : refract(p.incoming, f->normal, m->n,
+                                           &refracted));
         if (m->t > 0 && !refracts) {
             mirror_weight += m->t;  /* total internal reflection */
             counters->refraction_rays_skipped++;

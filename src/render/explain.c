@@ -85,7 +85,8 @@ static int record_ray(void *state, int kind, int parent, int depth,
 }
 
 static void record_hit(void *state, int node, int facet, double t,
-                       rt_vec3 point, rt_vec3 normal)
+                       rt_vec3 point, rt_vec3 normal, int smooth,
+                       rt_vec3 shading_normal, rt_vec3 shading_point)
 {
     tree_builder *r = state;
     if (node < 0)
@@ -102,6 +103,11 @@ static void record_hit(void *state, int node, int facet, double t,
     n->reflection = f->reflection;
     n->transparency = f->transparency;
     n->diffuse = f->diffuse;
+    n->smooth = smooth;
+    n->shading_normal = shading_normal;
+    n->shading_point = shading_point;
+    n->highlight = f->highlight;
+    n->highlight_exponent = f->exponent;
 }
 
 static void record_miss(void *state, int node, rt_color own)
@@ -113,7 +119,8 @@ static void record_miss(void *state, int node, rt_color own)
 
 static void record_shadow(void *state, int parent, int light,
                           rt_vec3 origin, rt_vec3 direction, double n_dot_s,
-                          int cast, int blocked, int blocker, rt_color own)
+                          int cast, int blocked, int blocker, rt_color own,
+                          double r_dot_v, rt_color highlight)
 {
     tree_builder *r = state;
     if (parent < 0) {
@@ -138,6 +145,8 @@ static void record_shadow(void *state, int parent, int light,
     n->blocker = blocked ? blocker : -1;
     n->blocker_line = n->blocker >= 0 ? r->scene->facets[blocker].line : 0;
     n->own = own;
+    n->r_dot_v = r_dot_v;
+    n->highlight_own = highlight;
 }
 
 /* Each node's subtotal: its own term plus its descendants' (parents come
@@ -296,6 +305,11 @@ static void view_pixel(const tree_builder *r, rt_debug_view view,
             (camera->normal.y + 1) / 2 * 255,
             (camera->normal.z + 1) / 2 * 255);
         break;
+    case RT_VIEW_SHADING_NORMAL:
+        put(p, (camera->shading_normal.x + 1) / 2 * 255,
+            (camera->shading_normal.y + 1) / 2 * 255,
+            (camera->shading_normal.z + 1) / 2 * 255);
+        break;
     case RT_VIEW_FACET: {
         rt_rgb8 c = rt_debug_facet_color(camera->facet);
         p[0] = c.r, p[1] = c.g, p[2] = c.b;
@@ -361,10 +375,10 @@ rt_status rt_render_view(const rt_scene *scene,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "the image's stride is %zu bytes, less than 3 "
                              "x its width %d", image->stride, image->width);
-    if (view < RT_VIEW_NORMAL || view > RT_VIEW_NS)
+    if (view < RT_VIEW_NORMAL || view > RT_VIEW_SHADING_NORMAL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "a debug view of %d: expected RT_VIEW_NORMAL.."
-                             "RT_VIEW_NS", (int)view);
+                             "RT_VIEW_SHADING_NORMAL", (int)view);
     if ((view == RT_VIEW_SHADOW || view == RT_VIEW_NS) &&
         (light < 0 || light >= scene->light_count))
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,

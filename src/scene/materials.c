@@ -18,7 +18,7 @@
 
 /* The bits of a material, as the table compares them (no padding read). */
 typedef struct key {
-    double values[4];
+    double values[6];
     unsigned char color[3];
 } key;
 
@@ -30,6 +30,8 @@ static key key_of(const rt_material *m)
     k.values[1] = m->transparency;
     k.values[2] = m->refractive_index;
     k.values[3] = m->diffuse;
+    k.values[4] = m->highlight;
+    k.values[5] = m->exponent;
     k.color[0] = m->color.r;
     k.color[1] = m->color.g;
     k.color[2] = m->color.b;

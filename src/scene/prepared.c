@@ -48,6 +48,7 @@ void rt__scene_kernel_source(const rt_scene *s, rt_kernel_source *source)
     source->materials = s->materials.items;
     source->material_count = s->materials.count;
     source->normals = NULL;
+    source->vertex_normals = s->vertex_normals;
     source->lights = s->lights;
     source->light_count = s->light_count;
     source->background = s->background;

@@ -102,6 +102,17 @@ static rt_status check_finite(const check *c, const rt_scene_desc *d)
                           RT_FIELD_POSITION, part, expected, words,
                           "every vertex");
     }
+    for (int i = 0; d->normals != NULL && i < d->vertex_count; i++) {
+        int part = bad_coordinate(d->normals[i], 1);
+        if (part >= 0)
+            return refuse(c, RT_ERR_RANGE, RT_ITEM_VERTEX, i,
+                          RT_FIELD_NORMAL, part, RT_RULE_NORMAL,
+                          "vertex %d: expected %s, found %g", i,
+                          RT_RULE_NORMAL,
+                          part == 0 ? d->normals[i].x
+                          : part == 1 ? d->normals[i].y
+                                      : d->normals[i].z);
+    }
     return RT_OK;
 }
 
@@ -181,6 +192,13 @@ static rt_status check_facet(const check *c, const rt_scene_desc *d, int i)
     if (f->diffuse_given && !(f->diffuse >= 0.0 && isfinite(f->diffuse)))
         return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_D, 0,
                       RT_RULE_D, words, i, RT_RULE_D, f->diffuse);
+    if (!(f->highlight >= 0.0 && isfinite(f->highlight)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_S, 0,
+                      RT_RULE_S, words, i, RT_RULE_S, f->highlight);
+    if (!((f->highlight_exponent >= 1.0 || f->highlight_exponent == 0.0) &&
+          isfinite(f->highlight_exponent)))
+        return refuse(c, RT_ERR_RANGE, RT_ITEM_FACET, i, RT_FIELD_P, 0,
+                      RT_RULE_P, words, i, RT_RULE_P, f->highlight_exponent);
     return RT_OK;
 }
 
@@ -344,7 +362,8 @@ static rt_status add_facets(rt_scene *s, const rt_scene_desc *d,
             f->refractive_index > 0.0 ? f->refractive_index : 1.0,
             f->diffuse_given ? f->diffuse
                              : 1.0 - f->reflection - f->transparency,
-            f->color};
+            f->color, f->highlight,
+            f->highlight_exponent > 0.0 ? f->highlight_exponent : 1.0};
         memset(record, 0, sizeof *record);
         memcpy(record->vertex, f->vertex, sizeof record->vertex);
         if ((record->material = rt__materials_add(&s->materials, &m)) < 0)
@@ -368,6 +387,8 @@ static rt_status add_facets(rt_scene *s, const rt_scene_desc *d,
         s->live_count++;
         s->reflective_count += f->reflection > 0.0;
         s->transparent_count += f->transparency > 0.0;
+        s->highlight_count += f->highlight > 0.0;
+        s->smooth_count += rt__scene_facet_smooth(s, record);
     }
     add_repeat_warning(notes, name, &r);
     rt__materials_end(&s->materials);
@@ -426,6 +447,10 @@ rt_status rt__scene_build_releasing(const rt_scene_desc *d, const char *name,
     }
     if (nv > 0)
         memcpy(s->vertices, d->vertices, nv * sizeof *s->vertices);
+    if (d->normals != NULL && !rt__scene_copy_normals(s, d)) {
+        rt_scene_destroy(s);
+        return rt__error_set(error, RT_ERR_NOMEM, name, 0, 0, "out of memory");
+    }
     s->vertex_count = d->vertex_count;
     s->facet_count = d->facet_count;
     s->background = d->background;
@@ -495,7 +520,8 @@ rt_status rt__scene_build_releasing(const rt_scene_desc *d, const char *name,
 size_t rt__scene_bytes(const rt_scene *s)
 {
     return sizeof *s + (s->name ? strlen(s->name) + 1 : 0) +
-           (size_t)s->vertex_count * sizeof *s->vertices +
+           (size_t)s->vertex_count * sizeof *s->vertices *
+               (s->vertex_normals != NULL ? 2 : 1) +
            (size_t)s->facet_count * sizeof *s->facets +
            (size_t)s->materials.count * sizeof *s->materials.items +
            (size_t)s->warning_count * sizeof *s->warnings +
@@ -521,6 +547,7 @@ void rt_scene_destroy(rt_scene *scene)
         return;
     free(scene->name);
     free(scene->vertices);
+    free(scene->vertex_normals);
     free(scene->facets);
     rt__materials_free(&scene->materials);
     free(scene->lights);
@@ -555,7 +582,9 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
             .background = s->background,
             .camera = s->camera,
             .light_count = s->light_count,
-            .transparent_facet_count = s->transparent_count};
+            .transparent_facet_count = s->transparent_count,
+            .smooth_facet_count = s->smooth_count,
+            .highlight_facet_count = s->highlight_count};
     rt__sized_fill(info, &full, sizeof full);
 }
 
@@ -598,6 +627,11 @@ void rt__scene_facet_info(const rt_scene *s, int i, rt_facet_info *info)
     info->transparency = m->transparency;
     info->refractive_index = m->refractive_index;
     info->diffuse = m->diffuse;
+    info->highlight = m->highlight;
+    info->highlight_exponent = m->exponent;
+    info->smooth = rt__scene_facet_smooth(s, record);
+    for (int j = 0; j < 3 && info->smooth; j++)
+        info->vertex_normal[j] = s->vertex_normals[record->vertex[j]];
 }
 
 void rt_scene_light(const rt_scene *scene, int i, rt_light *light)

@@ -104,6 +104,9 @@ void rt__notes_free(rt_notes *notes);
 #define RT_RULE_T_SIGN "a transparency t >= 0"
 #define RT_RULE_N "a refractive index n > 0"
 #define RT_RULE_D "a diffuse weight d >= 0"
+#define RT_RULE_S "a highlight weight s >= 0"
+#define RT_RULE_P "a highlight exponent p >= 1"
+#define RT_RULE_NORMAL "a finite vertex normal"
 #define RT_RULE_APERTURE "an aperture a >= 0"
 #define RT_RULE_FOCAL "a focal distance f > 0"
 #define RT_RULE_CAMERA "a camera that sees something"
@@ -139,7 +142,10 @@ typedef enum rt_field {
     RT_FIELD_K,
     RT_FIELD_T,
     RT_FIELD_N,
-    RT_FIELD_D
+    RT_FIELD_D,
+    RT_FIELD_S,
+    RT_FIELD_P,
+    RT_FIELD_NORMAL         /* a vertex's normal (part: coordinate) */
 } rt_field;
 
 /* What the builder refused, as data (rt__scene_build); its words are also

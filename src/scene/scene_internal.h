@@ -36,10 +36,19 @@ int rt__materials_add(rt_materials *t, const rt_material *m);
 void rt__materials_end(rt_materials *t);
 void rt__materials_free(rt_materials *t);
 
+/* Copies d's vertex normals (normals.c), normalised, into s; 0 when out
+ * of memory.  None but zero ones: s->vertex_normals stays NULL. */
+int rt__scene_copy_normals(struct rt_scene *s, const rt_scene_desc *d);
+/* Whether facet record r of s has a vertex normal at each corner. */
+int rt__scene_facet_smooth(const struct rt_scene *s,
+                           const rt_facet_record *r);
+
 struct rt_scene {
     char *name;
     rt_camera camera;
     rt_vec3 *vertices;
+    rt_vec3 *vertex_normals;    /* NULL when no vertex has a normal; else
+                                   per vertex, unit or zero (none) */
     int vertex_count;
     rt_facet_record *facets;    /* as the file gave them (kernel.h) */
     int facet_count;
@@ -63,6 +72,8 @@ struct rt_scene {
     int live_count;         /* facets that can be hit */
     int reflective_count;   /* live facets with k > 0 */
     int transparent_count;  /* live facets with t > 0 */
+    int smooth_count;       /* live facets with three vertex normals */
+    int highlight_count;    /* live facets with s > 0 */
     rt_scene_source *sources;   /* the files the load read (names owned) */
     int source_count;
 };
