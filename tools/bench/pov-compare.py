@@ -28,10 +28,11 @@ NAME-mask.png (masked pixels white).  A table in Markdown goes to stdout.
 """
 import argparse
 import os
-import re
 import subprocess
 import sys
 import tempfile
+
+import scnstrip
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -85,19 +86,6 @@ def lights_of(scn):
     return len(lines) - (4 + n + m) - 1
 
 
-def strip_normals(scn, out):
-    """scn without vertex normals (the vertex records cut to x, y, z)."""
-    with open(scn, encoding="utf-8-sig") as f:
-        raw = f.readlines()
-    body = [(i, l) for i, l in enumerate(raw) if l.split("#", 1)[0].strip()]
-    n = int(float(body[2][1].split("#", 1)[0]))
-    for i, line in body[3:3 + n]:
-        vals = [v for v in re.split(r"[,\s]+", line.split("#", 1)[0]) if v]
-        raw[i] = ", ".join(vals[:3]) + "\n"
-    with open(out, "w") as f:
-        f.writelines(raw)
-
-
 def compare(args, scene, tmp):
     name = os.path.splitext(os.path.basename(scene))[0]
     w, h = args.size
@@ -129,7 +117,7 @@ def compare(args, scene, tmp):
     _, _, b = read_ppm(povppm)
 
     flat = os.path.join(tmp, name + "-flat.scn")
-    strip_normals(scn, flat)
+    scnstrip.strip(scn, flat, normals=True, highlights=False)
     mask = bytearray(w * h)
     threshold = round(255 * args.threshold)
     for light in range(lights_of(scn)):
