@@ -158,8 +158,10 @@ def compare(args, scene, tmp):
               bytes(255 * mask[i // 3] for i in range(3 * w * h)))
     to_png(os.path.join(tmp, "m.ppm"), base + "-mask.png")
     total = w * h
-    return (name, total, 100.0 * agree / total, 100.0 * (total - kept) / total,
-            100.0 * kept_agree / kept if kept else 100.0, worst)
+    return (name, total, 100.0 * agree / total, total - agree,
+            100.0 * (total - kept) / total,
+            100.0 * kept_agree / kept if kept else 100.0, kept - kept_agree,
+            worst)
 
 
 def main():
@@ -173,14 +175,15 @@ def main():
     p.add_argument("--povray", default="povray")
     args = p.parse_args()
     args.size = tuple(int(x) for x in args.size.split("x"))
-    print("| scene (%dx%d) | pixels | agree overall | masked | "
-          "agree away from terminators | largest difference there |"
-          % args.size)
-    print("|---|--:|--:|--:|--:|--:|")
+    print("| scene (%dx%d) | pixels | agree overall | differ | masked | "
+          "agree away from terminators | differ there | largest difference "
+          "there |" % args.size)
+    print("|---|--:|--:|--:|--:|--:|--:|--:|")
     with tempfile.TemporaryDirectory() as tmp:
         for scene in args.scenes:
             r = compare(args, scene, tmp)
-            print("| %s | %d | %.2f %% | %.2f %% | %.2f %% | %d |" % r)
+            print("| %s | %d | %.2f %% | %d | %.2f %% | %.2f %% | %d | %d |"
+                  % r)
             sys.stdout.flush()
 
 
