@@ -6,7 +6,12 @@
 # For each SCENE (any of our formats), writes OUT_DIR/shading-NAME.png: three
 # pictures of SIZE (default 320x240), labelled, side by side:
 #   before   OLD_BUILD's rt-export (main before smooth shading and highlights,
-#            commit 69deee2) on SCENE itself: flat facets, no highlights;
+#            commit 69deee2) on SCENE itself: flat facets, no highlights
+#            (a .scn with the records that reader lacks is first cut to the
+#            ones it has by scnstrip.py --normals --highlights --course; one
+#            whose d is not 1 - k - t, which no record of that reader holds,
+#            is rendered by BUILD without its normals and highlights, which
+#            is byte for byte what a scene without them rendered before);
 #   after    BUILD's rt-export on SCENE; an OBJ model without `vn` lines is
 #            given area-weighted vertex normals first (add-normals.py);
 #   POV-Ray  POV-Ray 3.7 on what `rt-convert --extended` writes of the same
@@ -34,7 +39,16 @@ label() {   # in.png text out.png
 for s in "$@"; do
     name=$(basename "${s%.*}")
     in=$s
+    before=$s
+    flat=$old
     case $s in
+    *.scn)
+        before=$work/before.scn
+        if ! python3 "$here/scnstrip.py" --normals --highlights --course \
+                "$s" "$before" 2>/dev/null; then
+            python3 "$here/scnstrip.py" --normals --highlights "$s" "$before"
+            flat=$build
+        fi ;;
     *.obj)
         if ! grep -q '^vn ' "$s"; then
             cp "$(dirname "$s")"/*.mtl "$work"/ 2>/dev/null || true
@@ -42,10 +56,10 @@ for s in "$@"; do
             python3 "$here/add-normals.py" "$s" "$in"
         fi ;;
     esac
-    "$old/apps/rt-export" -q -j2 --size "$size" --depth "$depth" "$s" \
-        -o "$work/before.png"
+    "$flat/apps/rt-export" -q -j2 --size "$size" --depth "$depth" "$before" \
+        -o "$work/before.png" >/dev/null
     "$build/apps/rt-export" -q -j2 --size "$size" --depth "$depth" "$in" \
-        -o "$work/after.png"
+        -o "$work/after.png" >/dev/null
     "$build/apps/rt-convert" --extended "$in" "$work/$name.scn" >/dev/null
     python3 "$here/scn2pov.py" "$work/$name.scn" "$depth" "$w" "$h" \
         >"$work/$name.pov"
