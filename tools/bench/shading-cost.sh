@@ -2,22 +2,23 @@
 # shading-cost.sh - what smooth shading and highlights cost (docs/performance.md,
 # "Smooth shading and highlights: what they cost").
 #
-#   tools/bench/shading-cost.sh BUILD_DIR [SCENE ...]
+#   tools/bench/shading-cost.sh BUILD_DIR SCENE ...
 #
-# Default scenes: ../shared/formats/*.nff.  Each is written as an extended
+# Each SCENE (any of our formats) is written as an extended
 # .scn by `rt-convert --extended` (every model parameter kept), then
 # tools/bench/scnstrip.py makes the variants: without highlights (s = 0),
 # without vertex normals (flat), without either.  Each variant is rendered
 # by rt-export at SIZE (default 512x512) with 2 threads; the table gives the
-# render time of --stats, the median of RUNS (default 3).
+# render time of --stats, the median of RUNS (default 3), the rays of the
+# scene as converted and without either (smooth normals change where
+# reflected and refracted rays go, so their number), and the render time
+# per ray of both.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-build=${1:?usage: shading-cost.sh BUILD_DIR [SCENE ...]}
+build=${1:?usage: shading-cost.sh BUILD_DIR SCENE ...}
 shift
+[ $# -gt 0 ] || { echo "usage: shading-cost.sh BUILD_DIR SCENE ..." >&2; exit 2; }
 scenes=("$@")
-if [ ${#scenes[@]} -eq 0 ]; then
-    scenes=("$here"/../../../shared/formats/*.nff)
-fi
 runs=${RUNS:-3}
 size=${SIZE:-512x512}
 work=$(mktemp -d)
@@ -33,6 +34,11 @@ render() {  # scene.scn -> median render seconds
     done | median
 }
 
+rays() {    # scene.scn -> rays of every kind
+    "$build/apps/rt-export" "$1" -o "$work/out.ppm" -j2 --size "$size" \
+        --stats -q 2>&1 >/dev/null | sed -n 's/^rays: .*(\([0-9]*\) in all).*/\1/p'
+}
+
 count() {   # what the scene holds: smooth facets, facets with s > 0
     python3 - "$1" <<'EOF'
 import re, sys
@@ -46,8 +52,8 @@ print(m, smooth, shiny)
 EOF
 }
 
-echo "| scene ($size) | facets | smooth | with a highlight | as converted | no highlights | no normals | neither | cost of both |"
-echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|"
+echo "| scene ($size) | facets | smooth | with a highlight | as converted | no highlights | no normals | neither | rays as converted / neither | ns per ray as converted / neither |"
+echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
 for s in "${scenes[@]}"; do
     name=$(basename "${s%.*}")
     "$build/apps/rt-convert" --extended "$s" "$work/full.scn" >/dev/null
@@ -60,8 +66,10 @@ for s in "${scenes[@]}"; do
     nohl=$(render "$work/nohl.scn")
     flat=$(render "$work/flat.scn")
     none=$(render "$work/none.scn")
+    ra=$(rays "$work/full.scn")
+    rd=$(rays "$work/none.scn")
     awk -v n="$name" -v m="$m" -v sm="$smooth" -v sh="$shiny" -v a="$full" \
-        -v b="$nohl" -v c="$flat" -v d="$none" 'BEGIN {
-        printf "| %s | %d | %d | %d | %.3f s | %.3f s | %.3f s | %.3f s | %+.0f %% |\n",
-               n, m, sm, sh, a, b, c, d, 100 * (a - d) / d }'
+        -v b="$nohl" -v c="$flat" -v d="$none" -v ra="$ra" -v rd="$rd" 'BEGIN {
+        printf "| %s | %d | %d | %d | %.3f s | %.3f s | %.3f s | %.3f s | %d / %d | %.0f / %.0f |\n",
+               n, m, sm, sh, a, b, c, d, ra, rd, 1e9 * a / ra, 1e9 * d / rd }'
 done
