@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """rtref.py - an independent reference renderer for libraytrace scenes.
 
-Implements the rendering model (sections 1-4, and the extension of section 7:
-several lights, transparency and refraction, depth of field) from the text
-alone, in pure Python 3 (standard library only), so that the C renderer's
+Implements the rendering model (sections 1-4, the extension of section 7:
+several lights, transparency and refraction, depth of field, and section 8:
+vertex normals, the shading point of the shadow terminator, Phong
+highlights) from the text alone, in pure Python 3 (standard library only), so that the C renderer's
 images can be checked against something that shares none of its code.  It
 is meant to be correct for the project's own, well-conditioned scenes, not
 robust in general.
@@ -16,14 +17,19 @@ Choices, where they differ on purpose from the C library:
 
 * Parsing: tokens are separated by commas and/or white space, '#' starts a
   comment, a UTF-8 BOM and CRLF are accepted; records are read in the order
-  of section 1, with the extended records of section 7:
+  of section 1, with the extended records of sections 7 and 8:
       screen  xA,yA,zA, xB,yB,zB, w,h [, a, f]   (a = 0, f = |AO| by default)
-      facet   a,b,c, k, R,G,B [, t [, n]]        (t = 0, n = 1 by default)
+      vertex  x,y,z [, nx,ny,nz]                 (a vertex normal)
+      facet   a,b,c, k, R,G,B [, t [, n [, d [, s, p]]]]
+              (t = 0, n = 1, d = 1 - k - t, s = 0, p = 1 by default)
       light   x,y,z, R,G,B, then zero or more further lights, one a line,
               until the end of the file.
   Validation is light (enough for valid files, with line and column):
   counts, record lengths, integral values, indices in 1..n, colours in
-  0..255, k >= 0, t >= 0, k + t <= 1, n > 0, a >= 0, f > 0.
+  0..255, k >= 0, t >= 0, k + t <= 1, n > 0, a >= 0, f > 0, d >= 0 (any
+  k + t + d), s >= 0, p >= 1, a vertex normal finite and non-zero.  A
+  vertex normal is normalised on load (n / |n|, one division per
+  component); a facet is smooth when all three of its vertices carry one.
 * Camera (section 2): B is replaced by its orthogonal projection on the
   plane through A perpendicular to AO (AB' below); AC' = (AO x AB')|AB'| /
   |AO x AB'|.  A point at pixel coordinates (x, y) (x from the left edge,
@@ -78,6 +84,51 @@ Choices, where they differ on purpose from the C library:
   colour of the mirror ray R = I - 2 (I.N) N (the same ray as C_R, traced
   once when both are needed); otherwise C_T is the colour of the ray of
   unit direction T = eta I + (eta c - sqrt(q)) N_t.
+* Section 8, smooth facets.  The hit's barycentric weights are
+  Moller-Trumbore's: (b_a, b_b, b_c) = (1 - u - v, u, v).  N_g is the
+  facet's normal turned to face the incoming ray (the N above).  The
+  shading normal N_s = normalise(b_a n_a + b_b n_b + b_c n_c), turned to
+  N_g's side (N_s := -N_s when N_s.N_g < 0); N_s = N_g where the sum's
+  length is zero or not finite, and on a flat facet.  N_s stands in every
+  cosine: N.S_l, the highlight, the mirror ray R = I - 2 (I.N_s) N_s, and
+  Snell's law (the refraction's enter/leave test stays the winding
+  normal's; c and T are computed with N_s turned like N_t, which is N_g).
+  A smooth facet's mirror direction with R.N_g <= 0 (below the facet) is
+  recomputed with N_g; its refracted direction with T.N_g >= 0 (above the
+  facet) is recomputed with N_t = N_g (which may then be a total internal
+  reflection); a total internal reflection found with N_s stays one and
+  takes the mirror ray (itself N_s's, with the same fallback).  On a flat
+  facet none of this runs: the arithmetic is exactly that of section 7.
+* The shadow terminator (section 8).  The shading point, Hanika's
+      P' = P + sum_i b_i (P - v_i - min(0, (P - v_i).n_i) n_i)
+  is computed in its collected form P' = P - sum_i b_i min(0,
+  (P - v_i).n_i) n_i (the same in exact arithmetic, as sum_i b_i v_i = P
+  and sum_i b_i = 1), with the corner normals as loaded (not turned), the
+  corners' terms added in the order a, b, c and only where (P - v_i).n_i
+  < 0; on a flat facet P' = P.  READING OF THE SPEC: S_l is section 3's,
+  the unit vector from the hit point P to light l, in N_s.S_l, in the
+  diffuse term and in the highlight's R_l; only the shadow ray moves: it
+  starts at P', goes towards light l (unit direction of L - P', length
+  |L - P'|), skips the facet it leaves and is blocked by a hit with
+  EPS < t < |L - P'| (1 - 1e-9).  E_l = 1 when N_s.S_l > 0 and that ray
+  is free.
+* Highlights (section 8): with V = -I and R_l = 2 (N_s.S_l) N_s - S_l,
+  light l adds E_l s max(0, R_l.V)^p C_S,l (the light's colour).  A light
+  is considered (shadow ray and all) when d > 0 or s > 0; for each light
+  in file order the diffuse term (d (N_s.S_l) / 255) C_S,l C_F is added
+  first (when d > 0), then the highlight s (R_l.V)^p C_S,l (when s > 0 and
+  R_l.V > 0; Python's ** for the power), and after all lights + k C_R,
+  then + t C_T.  So
+      C = k C_R + t C_T + sum_l [d E_l (N_s.S_l) C_S,l C_F / 255
+                                 + E_l s max(0, R_l.V)^p C_S,l].
+  With no vertex normal and s = 0 everywhere this is section 7's
+  arithmetic, operation for operation.
+* Speed only: facets are grouped in runs of 16 consecutive ones (file
+  order), each with a bounding sphere enlarged by a margin far above
+  rounding; a ray whose line misses a run's sphere, or whose [tmin, tmax]
+  cannot reach it, skips the run.  Every facet that could be hit is still
+  tested, in file order, so the nearest hit (ties included) is the one a
+  test of every facet finds.
 * Depth: the primary ray is level 0; every reflected or refracted ray is
   one level more.  A hit on a ray of level L traces its reflected and
   refracted rays only if L < depth, otherwise C_R = C_T = 0 (black).
