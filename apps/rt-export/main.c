@@ -19,6 +19,7 @@
 #include "cli.h"
 #include "cli_explain.h"
 #include "cli_export.h"
+#include "cli_text.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -81,6 +82,9 @@ static void print_check(const char *path, const rt_scene *scene)
     }
     printf("  background %d %d %d\n", info.background.r, info.background.g,
            info.background.b);
+    char up[160];
+    if (cli_up_axis_text(scene, up, sizeof up))
+        printf("  up axis    %s; --up-axis picks another\n", up);
     printf("  warnings   %d\n", info.warning_count);
     for (int i = 0; i < info.warning_count; i++)
         printf("  %s\n", rt_scene_warning(scene, i)->message);

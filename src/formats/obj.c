@@ -428,6 +428,9 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     rt_light light;
+    rt__mesh_up(r->lex.text.start,
+                (size_t)(r->lex.text.end - r->lex.text.start), 0, r->options,
+                &d);
     status = rt__mesh_auto_view(r->name, r->vertices, r->vertex_count,
                                 r->facets, r->facet_count, r->options, &d,
                                 &light, r->error);
