@@ -152,7 +152,7 @@ static const spec table[] = {
      "the point the screen is centred on"},
     {CLI_GROUP_CAMERA, "up", 0, "X,Y,Z", 0, V_POINT, 0, INF, 0, NULL, {0},
      AT(load.up), AT(load.up_given), NULL, "up in the image"},
-    {CLI_GROUP_CAMERA, "up-axis", 0, "AXIS", 0, V_CHOICE, 0, 0, 0,
+    {CLI_GROUP_INPUT, "up-axis", 0, "AXIS", 0, V_CHOICE, 0, 0, 0,
      "auto|x|y|z|-x|-y|-z|+x|+y|+z",
      {RT_UP_AUTO, RT_UP_X, RT_UP_Y, RT_UP_Z, RT_UP_NEG_X, RT_UP_NEG_Y,
       RT_UP_NEG_Z, RT_UP_X, RT_UP_Y, RT_UP_Z},
