@@ -15,7 +15,8 @@ foreach(suite
     test_readers
     test_api
     test_api_edges
-    test_api_accessors)
+    test_api_accessors
+    test_shading)
   raytrace_add_suite(${suite})
 endforeach()
 # The accessors' bad calls, tests/test_api_accessors.c: in a debug build

@@ -200,7 +200,8 @@ static const spec table[] = {
     {CLI_GROUP_VIEW, "view", 0, "V", 0, V_VIEW, 0, CLI_MAX_LIGHTS - 1, 0,
      NULL, {0}, NO_OFFSET, NO_OFFSET, NULL,
      "write a debug view instead of the image: normal, depth, facet, "
-     "shadow[=L] (E of light L, default 0), bounces or ns[=L] (N.S); "
+     "shadow[=L] (E of light L, default 0), bounces, ns[=L] (N.S) or "
+     "shading-normal; "
      "docs/teaching.md says how to read each"},
 };
 
@@ -411,7 +412,8 @@ static int store(const cli_program *program, const spec *s,
                       &settings->view_light))
             return CLI_CONTINUE;
         snprintf(what, sizeof what, "normal, depth, facet, shadow[=L], "
-                 "bounces or ns[=L] (L in 0..%.0f)", s->max);
+                 "bounces, ns[=L] (L in 0..%.0f) or shading-normal",
+                 s->max);
         return value_error(program, s, what, value);
     }
     if (read != CLI_READ_OK)

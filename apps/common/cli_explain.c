@@ -88,14 +88,29 @@ static void print_color(FILE *out, const char *label, rt_color c)
     fprintf(out, "%s%.6g %.6g %.6g", label, c.r, c.g, c.b);
 }
 
-static void print_shadow_ray(FILE *out, const rt_ray_node *r, int indent)
+static void print_shadow_ray(FILE *out, const rt_ray_node *n,
+                             const rt_ray_node *r, int indent)
 {
+    const rt_ray_node *hit = r->parent >= 0 ? &n[r->parent] : NULL;
+    int shiny = hit != NULL && hit->highlight > 0;
     fprintf(out, "%*sshadow ray to light %d: N.S %.6g, ", 2 * indent, "",
             r->light, r->n_dot_s);
     if (!r->cast)
         fprintf(out, "not cast (%s), term 0\n",
                 r->diffuse == 0 && r->n_dot_s > 0 ? "d = 0" : "N.S <= 0");
-    else if (r->e > 0) {
+    else if (r->e > 0 && shiny) {
+        rt_color diffuse = {r->own.r - r->highlight_own.r,
+                            r->own.g - r->highlight_own.g,
+                            r->own.b - r->highlight_own.b};
+        print_color(out, "E 1 (lit): E (N.S) d C_S C_F / 255 x weight = ",
+                    diffuse);
+        fprintf(out, "\n%*s", 2 * indent + 2, "");
+        fprintf(out, "highlight: R.V %.6g, E s max(0, R.V)^p C_S x weight "
+                     "= ", r->r_dot_v);
+        print_color(out, "", r->highlight_own);
+        print_color(out, "; term ", r->own);
+        fprintf(out, "\n");
+    } else if (r->e > 0) {
         print_color(out, "E 1 (lit): E (N.S) d C_S C_F / 255 x weight = ",
                     r->own);
         fprintf(out, "\n");
@@ -112,7 +127,7 @@ static void print_ray(FILE *out, const rt_ray_node *n, size_t count,
 {
     const rt_ray_node *r = &n[i];
     if (r->kind == RT_RAY_SHADOW) {
-        print_shadow_ray(out, r, indent);
+        print_shadow_ray(out, n, r, indent);
         return;
     }
     fprintf(out, "%*s%s ray", 2 * indent, "",
@@ -131,8 +146,18 @@ static void print_ray(FILE *out, const rt_ray_node *n, size_t count,
             r->t);
     print_vec(out, ", point ", r->point);
     print_vec(out, ", normal as used ", r->normal);
-    fprintf(out, "; k %.6g, t %.6g, d %.6g\n", r->reflection, r->transparency,
+    fprintf(out, "; k %.6g, t %.6g, d %.6g", r->reflection, r->transparency,
             r->diffuse);
+    if (r->highlight > 0)
+        fprintf(out, ", highlight s %.6g, p %.6g", r->highlight,
+                r->highlight_exponent);
+    fprintf(out, "\n");
+    if (r->smooth) {
+        fprintf(out, "%*s", 2 * indent + 2, "");
+        print_vec(out, "smooth: shading normal N_s ", r->shading_normal);
+        print_vec(out, ", shading point P' ", r->shading_point);
+        fprintf(out, "\n");
+    }
     for (size_t c = i + 1; c < count; c++)
         if (n[c].parent == (int)i)
             print_ray(out, n, count, c, indent + 1);
@@ -156,9 +181,13 @@ void cli_explain_print_text(FILE *out, const rt_ray_tree *tree,
     size_t count;
     const rt_ray_node *n = rt_ray_tree_nodes(tree, &count);
     char shown[1024];
+    int shiny = 0;
+    for (size_t i = 0; i < count; i++)
+        shiny |= n[i].hit && n[i].highlight > 0;
     fprintf(out, "pixel %d,%d of %s: C = sum over lights of E (N.S) d C_S "
-                 "C_F / 255 + k C_R + t C_T\n", x, y,
-            cli_printable(scene, shown, sizeof shown));
+                 "C_F / 255%s + k C_R + t C_T\n", x, y,
+            cli_printable(scene, shown, sizeof shown),
+            shiny ? " + E s max(0, R.V)^p C_S" : "");
     for (size_t i = 0; i < count; i++)
         if (n[i].parent < 0) {
             if (samples > 1)
@@ -206,6 +235,14 @@ static void print_json_trace(FILE *out, const rt_ray_node *n, size_t count,
     print_json_vec(out, "normal", r->normal);
     fprintf(out, ",\"k\":%.17g,\"transmission\":%.17g,\"d\":%.17g",
             r->reflection, r->transparency, r->diffuse);
+    if (r->smooth) {
+        fprintf(out, ",\"smooth\":true");
+        print_json_vec(out, "shading_normal", r->shading_normal);
+        print_json_vec(out, "shading_point", r->shading_point);
+    }
+    if (r->highlight > 0)
+        fprintf(out, ",\"s\":%.17g,\"p\":%.17g", r->highlight,
+                r->highlight_exponent);
     rt_color direct, reflected, refracted;
     cli_explain_terms(n, count, i, &direct, &reflected, &refracted);
     print_json_color(out, "direct", direct);
@@ -239,6 +276,11 @@ void cli_explain_print_json(FILE *out, const rt_ray_tree *tree,
                          "\"e\":%g,\"blocker\":%d,\"blocker_line\":%d",
                     r->light, r->n_dot_s, r->cast, r->e, r->blocker,
                     r->blocker_line);
+        if (r->kind == RT_RAY_SHADOW && r->parent >= 0 &&
+            n[r->parent].highlight > 0) {
+            fprintf(out, ",\"r_dot_v\":%.17g", r->r_dot_v);
+            print_json_color(out, "highlight", r->highlight_own);
+        }
         else
             print_json_trace(out, n, count, i);
         print_json_color(out, "own", r->own);

@@ -131,6 +131,7 @@ typedef struct KERNEL_T {
                                vertex its unit normal (zero: none) */
     unsigned char *smooth;  /* NULL, or per facet of tris: 1 when each
                                corner has a vertex normal */
+    int shading;            /* some facet is smooth or has a highlight */
     vec *light_colors;      /* C_S,l per light, for the highlights */
     REAL background[3];
     struct shadow_plane *planes;    /* NULL, or per facet, and */
@@ -181,6 +182,10 @@ typedef struct trace_ctx {
     const rt_trace_recorder *rec;   /* NULL in renders */
     const kdtree *kd;           /* NULL, or the kd-tree the queries use
                                    (then tree is NULL) */
+    int shading;                /* the kernel has smooth facets or
+                                   highlights: shade_hit() computes N_s,
+                                   P' and the highlight (a constant 0
+                                   compiles that code away) */
 } trace_ctx;
 
 #include "intersect_impl.h"
@@ -219,7 +224,7 @@ static inline trace_ctx trace_context(const KERNEL_T *k,
         k, settings->octree && !settings->kdtree ? octree_of(k) : NULL,
         eye_of(settings->eye), k->avx2 && settings->kernel != RT_KERNEL_SCALAR,
         settings->fast_inv_sqrt, settings->max_depth, counters, rec,
-        settings->kdtree ? kdtree_of(k) : NULL};
+        settings->kdtree ? kdtree_of(k) : NULL, k->shading};
 }
 
 /* The context of the queries nearest_hit and occluded: the fast loops,
@@ -263,6 +268,7 @@ static void add_material(KERNEL_T *k, const rt_kernel_source *s, int m)
     out->d = d;
     out->s = (REAL)given->highlight;
     out->p = (REAL)given->exponent;
+    k->shading |= out->s > 0;
     REAL color[3] = {given->color.r, given->color.g, given->color.b};
     for (int l = 0; l < s->light_count; l++) {
         const rt_rgb8 *c8 = &s->lights[l].color;
@@ -297,6 +303,7 @@ static void add_facet(KERNEL_T *k, const rt_kernel_source *s, int i)
             smooth &= n.x != 0.0 || n.y != 0.0 || n.z != 0.0;
         }
         k->smooth[f - k->tris] = (unsigned char)smooth;
+        k->shading |= smooth;
     }
 }
 

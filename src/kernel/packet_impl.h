@@ -482,18 +482,34 @@ static void packet_first_bounce(const KERNEL_T *k, vec origin,
 
 /* One camera ray traced alone, as kernel_trace() traces it, `known` (may
  * be NULL) its first hit. */
-static rt_color trace_alone(const trace_ctx *c, vec origin, vec incoming,
-                            const known_hit *known)
+HOT_INLINE rt_color trace_alone(const trace_ctx *c, vec origin,
+                                vec incoming, const known_hit *known,
+                                int shading)
 {
     /* Packets run by brute force with the AVX2 loops, unrecorded: a
      * context that says so in constants, so that the loop's octree,
-     * scalar and recording code is compiled away. */
-    const trace_ctx plain = {c->k, NULL,    c->eye,       1,
+     * scalar and recording code is compiled away, and with `shading` a
+     * constant of the two copies below. */
+    const trace_ctx plain = {c->k,    NULL,         c->eye,      1,
                              c->fast, c->max_depth, c->counters, NULL,
-                             NULL};
+                             NULL,    shading};
     REAL color[3] = {0, 0, 0};
     trace_opaque(&plain, origin, incoming, known, color);
     return (rt_color){color[0], color[1], color[2]};
+}
+
+/* The copy for kernels without smooth facets or highlights. */
+static rt_color trace_alone_flat(const trace_ctx *c, vec origin,
+                                 vec incoming, const known_hit *known)
+{
+    return trace_alone(c, origin, incoming, known, 0);
+}
+
+/* The copy for the others. */
+static rt_color trace_alone_shaded(const trace_ctx *c, vec origin,
+                                   vec incoming, const known_hit *known)
+{
+    return trace_alone(c, origin, incoming, known, 1);
 }
 #else /* no AVX2 kernel: no packets, and nothing prepared for them */
 #define PACKET_MAX_FACETS 0
@@ -534,6 +550,8 @@ static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
     }
 #if HAVE_AVX2_KERNEL
     int fast = c.fast;
+    rt_color (*const alone)(const trace_ctx *, vec, vec, const known_hit *) =
+        k->shading ? trace_alone_shaded : trace_alone_flat;
     for (int begin = 0; begin < count; begin += CHUNK_RAYS) {
         int end = begin + CHUNK_RAYS < count ? begin + CHUNK_RAYS : count;
         /* The chunk's rays as a trace prepares them; the tile's frame is
@@ -570,7 +588,7 @@ static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
             if (j < end) {
                 const ray *p = &q[j - begin];
                 if (ray_frame(p) != t.frame) {
-                    colors[j] = trace_alone(&c, origin, in[j - begin], NULL);
+                    colors[j] = alone(&c, origin, in[j - begin], NULL);
                     continue;
                 }
                 r[n] = p;
@@ -589,7 +607,7 @@ static void kernel_trace_span(const rt_kernel *kernel, rt_vec3 origin_d,
             packet_first_bounce(k, origin, incoming, found, h, n, first,
                                 counters);
             for (int l = 0; l < n; l++)
-                colors[slot[l]] = trace_alone(&c, origin, incoming[l],
+                colors[slot[l]] = alone(&c, origin, incoming[l],
                                               &first[l]);
             n = 0;
         }

@@ -168,12 +168,23 @@ typedef struct surface {
     vec point, error_bound; /* the hit point and its rounding-error bound */
     vec normal;             /* unit, facing the ray that met it: N_g */
     int smooth;             /* f has vertex normals: the three below are
-                               its own; else they are normal and point */
+                               set (all four are set only where the
+                               trace's context has `shading`; normal_s()
+                               gives N_s in every case) */
     vec shading;            /* N_s, on the side of `normal` */
     vec shading_point;      /* P', where its shadow rays leave */
     vec shading_bound;      /* the rounding-error bound of P' */
-    vec incoming;           /* the unit direction of the ray that met it */
+    vec incoming;           /* the unit direction of the ray that met it
+                               (set where the trace's context has
+                               `shading`) */
 } surface;
+
+/* N_s of s: its own on a smooth facet, else N_g (a context without
+ * `shading` has no smooth facet: N_g, with no test). */
+static inline vec normal_s(const trace_ctx *c, const surface *s)
+{
+    return c->shading && s->smooth ? s->shading : s->normal;
+}
 
 /*
  * The shading normal of a smooth facet (docs/rendering-model.md, "Smooth
@@ -229,10 +240,12 @@ static vec shading_point(const KERNEL_T *k, const tri *f, const hit *h,
 
 /* The mirror direction R = I - 2 (I.N_s) N_s of s (unnormalised), or
  * with N_g where N_s gives one below the facet. */
-static inline vec mirror_direction(const surface *s, vec incoming)
+static inline vec mirror_direction(const trace_ctx *c, const surface *s,
+                                   vec incoming)
 {
-    vec r = sub(incoming, scale(s->shading, 2 * dot(incoming, s->shading)));
-    if (s->smooth && !(dot(r, s->normal) > 0))
+    vec n = normal_s(c, s);
+    vec r = sub(incoming, scale(n, 2 * dot(incoming, n)));
+    if (c->shading && s->smooth && !(dot(r, s->normal) > 0))
         r = sub(incoming, scale(s->normal, 2 * dot(incoming, s->normal)));
     return r;
 }
@@ -240,11 +253,12 @@ static inline vec mirror_direction(const surface *s, vec incoming)
 /* The highlight of light l at s: max(0, R_l.V)^p, R_l = 2 (N_s.S) N_s -
  * S, V = -I (Phong; Whitted 1980), S the unit direction to the light;
  * *r_dot_v gets R_l.V. */
-static inline REAL highlight_of(const surface *s, vec unit_to_light,
-                                REAL *r_dot_v)
+static inline REAL highlight_of(const trace_ctx *c, const surface *s,
+                                vec unit_to_light, REAL *r_dot_v)
 {
-    REAL ns = dot(s->shading, unit_to_light);
-    vec r = sub(scale(s->shading, 2 * ns), unit_to_light);
+    vec n = normal_s(c, s);
+    REAL ns = dot(n, unit_to_light);
+    vec r = sub(scale(n, 2 * ns), unit_to_light);
     REAL rv = -dot(r, s->incoming);
     *r_dot_v = rv;
     if (!(rv > 0))
@@ -275,7 +289,7 @@ static void record_light(trace_ctx c, const surface *s, int node, int l,
     rt_vec3 from = shadow != NULL ? to_rt(origin)
                                   : to_rt(sub(k->lights[l], to_light));
     c.rec->on_shadow(c.rec->state, node, l, from, to_rt(direction),
-                     (double)dot(s->shading, normalize(to_light, c.fast)),
+                     (double)dot(normal_s(&c, s), normalize(to_light, c.fast)),
                      shadow != NULL, blocked, blocker, own, r_dot_v,
                      highlight);
 }
@@ -293,12 +307,12 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
     const KERNEL_T *k = c->k;
     const tri *f = s->f;
     /* k = 1 on a handout facet: d = 0, and no highlight */
-    int dark = s->m->d == 0 && s->m->s == 0;
+    int dark = s->m->d == 0 && (!c->shading || s->m->s == 0);
     const rt_color none = {0, 0, 0};
     for (int l = 0; l < k->light_count; l++) {
         vec light = k->lights[l];
         vec to_light = sub(light, s->point);
-        if (dark || !(dot(s->shading, to_light) > 0)) {
+        if (dark || !(dot(normal_s(c, s), to_light) > 0)) {
             c->counters->shadow_rays_skipped++;
             if (c->rec != NULL)
                 record_light(*c, s, node, l, to_light, NULL, 0, none, 0,
@@ -312,7 +326,7 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
             c->rec == NULL) {
             blocked = given[l];
         } else {
-            if (s->smooth)  /* from P', the terminator's fix */
+            if (c->shading && s->smooth)   /* from P': the terminator */
                 shadow = shadow_ray(s->shading_point, s->shading_bound,
                                     s->normal, light,
                                     sub(light, s->shading_point));
@@ -328,13 +342,13 @@ HOT_INLINE void add_direct_light(const trace_ctx *c, const surface *s,
             continue;
         }
         vec unit = normalize(to_light, c->fast);
-        REAL w = weight * dot(s->shading, unit);
+        REAL w = weight * dot(normal_s(c, s), unit);
         const REAL *diffuse = diffuse_of(k, f, l);
         for (int ch = 0; ch < 3; ch++)
             color[ch] += w * diffuse[ch];
         REAL r_dot_v = 0, spot[3] = {0, 0, 0};
-        if (s->m->s > 0) {
-            REAL h = weight * s->m->s * highlight_of(s, unit, &r_dot_v);
+        if (c->shading && s->m->s > 0) {
+            REAL h = weight * s->m->s * highlight_of(c, s, unit, &r_dot_v);
             vec cs = k->light_colors[l];
             spot[0] = h * cs.x;
             spot[1] = h * cs.y;
@@ -389,21 +403,22 @@ HOT_INLINE int shade_hit(const trace_ctx *c, int found, const hit *h,
         s->normal = dot(s->f->normal, incoming) > 0 ? neg(s->f->normal)
                                                     : s->f->normal;
     }
-    s->incoming = incoming;
-    s->smooth = k->smooth != NULL && k->smooth[h->index];
-    if (s->smooth) {
-        s->shading = shading_normal(k, s->f, h, s->normal, c->fast);
-        s->shading_point = shading_point(k, s->f, h, s->point,
-                                         s->error_bound, &s->shading_bound);
-    } else {
-        s->shading = s->normal;
-        s->shading_point = s->point;
-        s->shading_bound = s->error_bound;
+    if (c->shading) {
+        s->incoming = incoming;
+        s->smooth = k->smooth != NULL && k->smooth[h->index];
+        if (s->smooth) {
+            s->shading = shading_normal(k, s->f, h, s->normal, c->fast);
+            s->shading_point =
+                shading_point(k, s->f, h, s->point, s->error_bound,
+                              &s->shading_bound);
+        }
     }
     if (c->rec != NULL)
         c->rec->on_hit(c->rec->state, node, s->f->facet, (double)h->t,
-                       to_rt(s->point), to_rt(s->normal), s->smooth,
-                       to_rt(s->shading), to_rt(s->shading_point));
+                       to_rt(s->point), to_rt(s->normal),
+                       c->shading && s->smooth, to_rt(normal_s(c, s)),
+                       to_rt(c->shading && s->smooth ? s->shading_point
+                                                     : s->point));
     add_direct_light(c, s, weight, node, known != NULL ? known->blocked : NULL,
                      color);
     return 1;

@@ -52,7 +52,7 @@ HOT_INLINE void trace_opaque(const trace_ctx *c, vec origin, vec incoming,
         if (bounce >= c->max_depth)
             break;          /* a reflection past the limit is black */
         weight *= s.m->k;
-        vec reflected = mirror_direction(&s, incoming);
+        vec reflected = mirror_direction(c, &s, incoming);
         origin = offset_origin(s.point, s.error_bound, s.normal, reflected);
         origin_bound = s.error_bound;
         incoming = normalize(reflected, c->fast);
@@ -181,11 +181,11 @@ HOT_INLINE int trace_transparent(const trace_ctx *c, vec origin,
             counters->refraction_rays_skipped += m->t > 0;
             continue;       /* past the limit: black */
         }
-        vec mirror = mirror_direction(&s, p.incoming);
+        vec mirror = mirror_direction(c, &s, p.incoming);
         REAL mirror_weight = m->k;
         vec refracted = mk(0, 0, 0);   /* set when refracts */
         int refracts = m->t > 0 &&
-                       (s.smooth ? refract_smooth(&s, m->n, &refracted)
+                       (c->shading && s.smooth ? refract_smooth(&s, m->n, &refracted)
                                  : refract(p.incoming, f->normal, m->n,
                                            &refracted));
         if (m->t > 0 && !refracts) {
@@ -241,7 +241,16 @@ static rt_color kernel_trace(const rt_kernel *kernel, rt_vec3 origin_d,
      * (a constant NULL recorder: its recording code is compiled away), and
      * the copy rt_explain_pixel records with. */
     int complete = 1;
-    if (rec == NULL) {
+    if (rec == NULL && !k->shading) {
+        /* no smooth facet, no highlight: the shading of section 7 alone */
+        trace_ctx c = trace_context(k, settings, counters, NULL);
+        c.shading = 0;
+        const trace_ctx flat = c;
+        if (k->transparent)
+            complete = trace_transparent(&flat, origin, incoming, color);
+        else
+            trace_opaque(&flat, origin, incoming, NULL, color);
+    } else if (rec == NULL) {
         const trace_ctx c = trace_context(k, settings, counters, NULL);
         if (k->transparent)
             complete = trace_transparent(&c, origin, incoming, color);
