@@ -60,9 +60,10 @@ static void print_check(const char *path, const rt_scene *scene)
     printf("  image      %d x %d\n", info.width, info.height);
     printf("  vertices   %d\n", info.vertex_count);
     printf("  facets     %d (%d can be hit, %d reflective, %d "
-           "transparent)\n",
+           "transparent, %d smooth, %d with highlights)\n",
            info.facet_count, info.live_facet_count,
-           info.reflective_facet_count, info.transparent_facet_count);
+           info.reflective_facet_count, info.transparent_facet_count,
+           info.smooth_facet_count, info.highlight_facet_count);
     printf("  camera     O (%g, %g, %g), A (%g, %g, %g)%s\n",
            info.camera.observer.x, info.camera.observer.y,
            info.camera.observer.z, info.camera.screen_center.x,

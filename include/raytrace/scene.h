@@ -506,16 +506,20 @@ RT_API int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
 
 /* What a handout .scn file cannot hold (rt_scene_write_scn's *dropped,
  * bits): lights beyond the first, transparency and refractive indices, a
- * lens, diffuse weights other than 1 - k - t (as NFF's Kd). */
+ * lens, diffuse weights other than 1 - k - t (as NFF's Kd), and since 0.4
+ * vertex normals and highlights. */
 #define RT_SCN_DROPPED_LIGHTS 1u
 #define RT_SCN_DROPPED_TRANSPARENCY 2u
 #define RT_SCN_DROPPED_LENS 4u
 #define RT_SCN_DROPPED_DIFFUSE 8u
+#define RT_SCN_DROPPED_NORMALS 16u
+#define RT_SCN_DROPPED_HIGHLIGHTS 32u
 
 /*
  * Writes `scene` as a .scn file to the sink: the handout's records only,
- * or with `extended` also the optional lens, transparency and further-light
- * records (docs/scene-format.md).  Numbers are written with 17 significant
+ * or with `extended` also the optional lens, transparency, diffuse weight,
+ * highlight, vertex normal and further-light values (docs/scene-format.md),
+ * each only where the scene needs it.  Numbers are written with 17 significant
  * digits, so reading the file back gives the same doubles and the same
  * picture.  *dropped (may be NULL) receives the RT_SCN_DROPPED_ bits of
  * what the file could not hold.  Returns RT_OK, RT_ERR_IO (the sink
