@@ -165,7 +165,7 @@ int cli_up_axis_text(const rt_scene *scene, char *out, size_t size)
         return 1;
     case RT_UP_CUE_OPTION:
         snprintf(out, size, "%s up (--up-axis)", axis);
-        return 1;
+        return 2;
     }
     if (size > 0)
         out[0] = '\0';
@@ -176,8 +176,9 @@ void cli_print_up_note(FILE *stream, const char *program, const char *name,
                        const rt_scene *scene)
 {
     char text[160], shown[512];
-    if (cli_up_axis_text(scene, text, sizeof text))
-        fprintf(stream, "%s: %s: note: automatic camera with %s; --up-axis "
-                "picks another\n", program,
-                cli_printable(name, shown, sizeof shown), text);
+    int said = cli_up_axis_text(scene, text, sizeof text);
+    if (said)
+        fprintf(stream, "%s: %s: note: automatic camera with %s%s\n",
+                program, cli_printable(name, shown, sizeof shown), text,
+                said == 1 ? "; --up-axis picks another" : "");
 }
