@@ -146,6 +146,7 @@ int main(int argc, char **argv)
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-convert: %s\n", rt_scene_warning(scene, i)->message);
+    cli_print_up_note(stderr, "rt-convert", in, scene);
     code = cli_refuse_input_as_output("rt-convert", out, scene, in,
                                       "the scene")
                ? EXIT_BAD_INPUT

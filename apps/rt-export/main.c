@@ -19,6 +19,7 @@
 #include "cli.h"
 #include "cli_explain.h"
 #include "cli_export.h"
+#include "cli_text.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -82,6 +83,11 @@ static void print_check(const char *path, const rt_scene *scene)
     }
     printf("  background %d %d %d\n", info.background.r, info.background.g,
            info.background.b);
+    char up[160];
+    int said = cli_up_axis_text(scene, up, sizeof up);
+    if (said)
+        printf("  up axis    %s%s\n", up,
+               said == 1 ? "; --up-axis picks another" : "");
     printf("  warnings   %d\n", info.warning_count);
     for (int i = 0; i < info.warning_count; i++)
         printf("  %s\n", rt_scene_warning(scene, i)->message);
