@@ -16,7 +16,8 @@ foreach(suite
     test_api
     test_api_edges
     test_api_accessors
-    test_shading)
+    test_shading
+    test_smooth)
   raytrace_add_suite(${suite})
 endforeach()
 # The accessors' bad calls, tests/test_api_accessors.c: in a debug build

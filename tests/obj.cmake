@@ -24,3 +24,9 @@ raytrace_add_suite(test_exact INTERNAL)
 # and memory out (tests/test_obj_costs.c).
 raytrace_add_suite(test_obj_costs)
 set_tests_properties(test_obj_costs PROPERTIES TIMEOUT 600)
+# Vertex normals, highlights and the up axis of the mesh readers (OBJ `vn`,
+# MTL Ks/Ns/illum, PLY nx/ny/nz, --up-axis; tests/test_mesh_normals.c).
+raytrace_add_suite(test_mesh_normals)
+# `rt-convert --extended` of OBJ and PLY models renders as the model
+# (SPEC section 8; needs the extended .scn records: tests/test_mesh_convert.c).
+raytrace_add_suite(test_mesh_convert)

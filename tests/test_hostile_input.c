@@ -200,15 +200,15 @@ START_TEST(line_of_commas_is_refused_at_the_first_stray_comma)
                      RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
                      "hostile.scn:1:1: expected a number, found `,`");
-    /* values then a million commas: the eleventh value (one more than the
-     * longest record holds) is the error, found before the commas are
-     * read */
-    memcpy(text, "1,2,3,4,5,6,7,8,9,10,11", 23);
+    /* values then a million commas: the thirteenth value (one more than
+     * the longest record, a facet with highlights, holds) is the error,
+     * found before the commas are read */
+    memcpy(text, "1,2,3,4,5,6,7,8,9,10,11,12,13", 29);
     ck_assert_int_eq(rt_test_parse_refused(text, length, &error),
                      RT_ERR_SYNTAX);
     ck_assert_str_eq(error.message,
-                     "hostile.scn:1:22: expected the end of the line, found "
-                     "`11`");
+                     "hostile.scn:1:28: expected the end of the line, found "
+                     "`13`");
     /* a complete observer, then a million commas on the next line */
     memset(text, ',', length);
     memcpy(text, "0,0,0\n1,", 8);

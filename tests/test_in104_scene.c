@@ -244,13 +244,22 @@ START_TEST(parse_refuses_a_file_that_uses_the_extensions)
         {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30 0.5 1.5", "",
          "transparent facets"},
         {"0 0 5 1 0 5 8 6 0.2 5", "1 2 3 0 10 20 30", "", "aperture"},
+        {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30 0 1 0.5", "",
+         "diffuse weights"},
+        {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30 0 1 1 0.5 10", "",
+         "highlights"},
+        {"0 0 5 1 0 5 8 6", "1 2 3 0 10 20 30\n#n", "", "vertex normals"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char text[512];
+        /* a facet ending in "#n": the vertices carry normals */
+        int normals = strstr(cases[i].facet, "#n") != NULL;
         snprintf(text, sizeof text,
-                 "0 0 10\n%s\n3\n-1 -1 0\n1 -1 0\n0 1 0\n1\n%s\n1 2 3\n"
-                 "0 0 10 255 255 255\n%s\n",
-                 cases[i].screen, cases[i].facet, cases[i].more_light);
+                 "0 0 10\n%s\n3\n-1 -1 0%s\n1 -1 0%s\n0 1 0%s\n1\n%s\n"
+                 "1 2 3\n0 0 10 255 255 255\n%s\n",
+                 cases[i].screen, normals ? " 0 0 1" : "",
+                 normals ? " 0 0 1" : "", normals ? " 0 0 1" : "",
+                 cases[i].facet, cases[i].more_light);
         rt_test_write_file("in104_extended.scn", text);
         scene s;
         capture_begin();

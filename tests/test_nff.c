@@ -226,13 +226,19 @@ START_TEST(a_cone_to_a_point_has_one_facet_a_segment)
     rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 7);
-    ck_assert_int_eq(info.vertex_count, 8);
+    /* 7 points of the base circle, and the apex once a segment (each
+     * copy with its own normal: tessellate.h) */
+    ck_assert_int_eq(info.vertex_count, 14);
     for (int i = 0; i < info.facet_count; i++) {
         rt_vec3 p[3];
         corners(scene, i, p);
         rt_vec3 radial = {p[0].x + p[1].x + p[2].x,
                           p[0].y + p[1].y + p[2].y, 0};
         ck_assert(dot(winding(scene, i), radial) > 0);
+    }
+    for (int i = 0; i < info.vertex_count; i++) {
+        rt_vec3 v = rt_scene_vertex(scene, i);
+        ck_assert(v.z == 0 || (v.x == 0 && v.y == 0 && v.z == 2));
     }
     rt_scene_destroy(scene);
 }
@@ -292,7 +298,13 @@ START_TEST(colours_and_materials_map_to_the_model)
     rt_scene_facet(scene, 1, &f);
     ck_assert(f.diffuse == 2 && f.reflection == 0.25 && f.transparency == 0 &&
               f.refractive_index == 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "Shine"), 1);
+    /* Ks is also the highlight's weight, Shine its exponent */
+    rt_scene_facet(scene, 0, &f);
+    ck_assert(f.highlight == 0.2 && f.highlight_exponent == 30);
+    rt_scene_facet(scene, 1, &f);
+    ck_assert(f.highlight == 0.25 && f.highlight_exponent == 5);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "Shine"), 0);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "highlight"), 0);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -402,17 +414,182 @@ START_TEST(a_non_convex_polygon_is_cut_into_ears_covering_its_area)
 }
 END_TEST
 
-START_TEST(a_patch_ignores_its_normals_with_one_warning)
+START_TEST(a_patch_gives_its_triangles_the_normals_of_its_corners)
 {
-    rt_scene *scene = load_nff(VIEW "pp 3\n0 0 0 0 -1 0\n1 0 0 0 -1 0\n"
-                               "0 0 1 0 -1 0\n"
-                               "pp 3\n0 1 0 0 -1 0\n1 1 0 0 -1 0\n"
-                               "0 1 1 0 -1 0\n",
+    /* a square cut into two triangles, a normal of its own at each corner
+     * (given unnormalised: the scene holds them normalised) */
+    static const double corner[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1},
+                                        {0, 0, 1}};
+    static const double given[4][3] = {{0, -2, 0}, {1, -1, 0}, {1, -1, 1},
+                                       {0, -3, 4}};
+    rt_scene *scene = load_nff(VIEW "pp 4\n0 0 0 0 -2 0\n1 0 0 1 -1 0\n"
+                               "1 0 1 1 -1 1\n0 0 1 0 -3 4\n",
                                0);
     rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
     ck_assert_int_eq(info.facet_count, 2);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "normals of `pp`"), 1);
+    ck_assert_int_eq(info.smooth_facet_count, 2);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "normal"), 0);
+    for (int i = 0; i < info.facet_count; i++) {
+        rt_facet_info f = {.size = sizeof f};
+        rt_scene_facet(scene, i, &f);
+        ck_assert(f.smooth);
+        for (int j = 0; j < 3; j++) {
+            rt_vec3 v = rt_scene_vertex(scene, f.vertex[j]);
+            int k = 0;
+            while (k < 4 && !(v.x == corner[k][0] && v.y == corner[k][1] &&
+                              v.z == corner[k][2]))
+                k++;
+            ck_assert_int_lt(k, 4);
+            rt_vec3 g = {given[k][0], given[k][1], given[k][2]};
+            double l = length(g);
+            rt_vec3 n = f.vertex_normal[j];
+            ck_assert_double_eq_tol(n.x, g.x / l, 1e-15);
+            ck_assert_double_eq_tol(n.y, g.y / l, 1e-15);
+            ck_assert_double_eq_tol(n.z, g.z / l, 1e-15);
+        }
+    }
+    rt_scene_destroy(scene);
+}
+END_TEST
+
+START_TEST(a_zero_patch_normal_leaves_its_triangles_flat_with_one_warning)
+{
+    rt_scene *scene = load_nff(VIEW "pp 3\n0 0 0 0 0 0\n1 0 0 0 -1 0\n"
+                               "0 0 1 0 -1 0\n"
+                               "pp 3\n0 1 0 0 -1 0\n1 1 0 0 -1 0\n"
+                               "0 1 1 0 0 0\n"
+                               "pp 3\n0 2 0 0 -1 0\n1 2 0 0 -1 0\n"
+                               "0 2 1 0 -1 0\n",
+                               0);
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.facet_count, 3);
+    ck_assert_int_eq(info.smooth_facet_count, 1);
+    ck_assert_int_eq(rt_test_count_warnings(scene, "zero vertex normal"), 1);
+    rt_scene_destroy(scene);
+}
+END_TEST
+
+/* The unit point of the sphere's ring i, meridian j, as tessellate.h
+ * defines the mesh (bands bands, 2 bands meridians). */
+static rt_vec3 sphere_point(int bands, int i, int j)
+{
+    if (i == 0)
+        return (rt_vec3){0, 0, 1};
+    if (i == bands)
+        return (rt_vec3){0, 0, -1};
+    double theta = PI * i / bands, phi = PI * j / bands;
+    return (rt_vec3){sin(theta) * cos(phi), sin(theta) * sin(phi),
+                     cos(theta)};
+}
+
+START_TEST(a_sphere_has_its_exact_normal_at_each_vertex_and_the_same_points)
+{
+    const double tol = 0.01;
+    const double c[3] = {1, 2, 3}, r = 0.5;
+    for (int inward = 0; inward < 2; inward++) {
+        rt_scene *scene = load_nff(inward ? VIEW "s 1 2 3 -0.5\n"
+                                          : VIEW "s 1 2 3 0.5\n",
+                                   tol);
+        rt_scene_info info = {.size = sizeof info};
+        rt_scene_get_info(scene, &info);
+        int bands = rt__tess_sphere_bands(tol);
+        ck_assert_int_eq(info.smooth_facet_count, info.facet_count);
+        /* the north pole, the rings from the north, the south pole */
+        int v = 0;
+        for (int i = 0; i <= bands; i++)
+            for (int j = 0; j < (i == 0 || i == bands ? 1 : 2 * bands);
+                 j++, v++) {
+                rt_vec3 u = sphere_point(bands, i, j);
+                rt_vec3 p = rt_scene_vertex(scene, v);
+                /* the points as before the normals, to the bit */
+                ck_assert(p.x == c[0] + u.x * r && p.y == c[1] + u.y * r &&
+                          p.z == c[2] + u.z * r);
+                rt_vec3 n = rt_scene_vertex_normal(scene, v);
+                double side = inward ? -1 : 1;
+                ck_assert_double_eq_tol(n.x, side * u.x, 1e-15);
+                ck_assert_double_eq_tol(n.y, side * u.y, 1e-15);
+                ck_assert_double_eq_tol(n.z, side * u.z, 1e-15);
+            }
+        ck_assert_int_eq(v, info.vertex_count);
+        /* facing as the facets are wound */
+        for (int i = 0; i < info.facet_count; i++) {
+            rt_facet_info f = {.size = sizeof f};
+            rt_scene_facet(scene, i, &f);
+            ck_assert(dot(winding(scene, i), f.vertex_normal[0]) > 0);
+        }
+        rt_scene_destroy(scene);
+    }
+}
+END_TEST
+
+START_TEST(a_cone_has_the_exact_normal_of_its_side_at_each_vertex)
+{
+    /* radius 2 at z = 0 to radius 1 at z = 3 (tolerance 0.1: 7 segments):
+     * the side's normal is normalise(3 rho + (2 - 1) z); a cone to a
+     * point (radius 1 to 0 over 2): normalise(2 rho + z), its apex once a
+     * segment with the normal at the segment's middle */
+    static const char *const cones[] = {"c 0 0 0 2 0 0 3 1\n",
+                                        "c 0 0 0 1 0 0 2 0\n"};
+    static const double height[] = {3, 2}, narrowing[] = {1, 1};
+    for (int k = 0; k < 2; k++) {
+        char text[512];
+        snprintf(text, sizeof text, VIEW "%s", cones[k]);
+        rt_scene *scene = load_nff(text, 0.1);
+        rt_scene_info info = {.size = sizeof info};
+        rt_scene_get_info(scene, &info);
+        ck_assert_int_eq(info.smooth_facet_count, info.facet_count);
+        double l = hypot(height[k], narrowing[k]);
+        for (int i = 0; i < info.facet_count; i++) {
+            rt_facet_info f = {.size = sizeof f};
+            rt_scene_facet(scene, i, &f);
+            rt_vec3 p[3];
+            corners(scene, i, p);
+            for (int j = 0; j < 3; j++) {
+                rt_vec3 n = f.vertex_normal[j];
+                ck_assert_double_eq_tol(n.z, narrowing[k] / l, 1e-15);
+                ck_assert_double_eq_tol(hypot(n.x, n.y), height[k] / l,
+                                        1e-15);
+                if (p[j].x != 0 || p[j].y != 0) {
+                    /* radial: along the point's own direction */
+                    double rho = hypot(p[j].x, p[j].y);
+                    ck_assert_double_eq_tol(n.x, height[k] / l * p[j].x / rho,
+                                            1e-14);
+                    ck_assert_double_eq_tol(n.y, height[k] / l * p[j].y / rho,
+                                            1e-14);
+                }
+            }
+            ck_assert(dot(winding(scene, i), f.vertex_normal[0]) > 0);
+        }
+        rt_scene_destroy(scene);
+    }
+}
+END_TEST
+
+START_TEST(polygons_and_materials_without_ks_carry_no_normal_or_highlight)
+{
+    /* What rendered flat before vertex normals and highlights still has
+     * neither: the renderer then takes the path it took before (the
+     * model's rule, docs/rendering-model.md). */
+    rt_scene *scene = load_nff(VIEW "f 1 0.5 0 0.8 0 40 0 1\n"
+                               "p 4\n0 0 0\n1 0 0\n1 0 1\n0 0 1\n"
+                               "p 3\n0 1 0\n1 1 0\n0 1 1\n",
+                               0);
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(scene, &info);
+    ck_assert_int_eq(info.facet_count, 3);
+    ck_assert_int_eq(info.smooth_facet_count, 0);
+    ck_assert_int_eq(info.highlight_facet_count, 0);
+    for (int i = 0; i < info.vertex_count; i++) {
+        rt_vec3 n = rt_scene_vertex_normal(scene, i);
+        ck_assert(n.x == 0 && n.y == 0 && n.z == 0);
+    }
+    for (int i = 0; i < info.facet_count; i++) {
+        rt_facet_info f = {.size = sizeof f};
+        rt_scene_facet(scene, i, &f);
+        ck_assert(f.highlight == 0 && f.highlight_exponent == 1);
+    }
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -629,7 +806,14 @@ static Suite *nff_suite(void)
     tcase_add_test(c, ks_plus_t_above_one_is_scaled_down_with_a_warning);
     tcase_add_test(c, lights_without_colour_share_one_white_light);
     tcase_add_test(c, a_file_without_light_gets_a_white_light_at_the_eye);
-    tcase_add_test(c, a_patch_ignores_its_normals_with_one_warning);
+    tcase_add_test(c, a_patch_gives_its_triangles_the_normals_of_its_corners);
+    tcase_add_test(c,
+                   a_zero_patch_normal_leaves_its_triangles_flat_with_one_warning);
+    tcase_add_test(c,
+                   a_sphere_has_its_exact_normal_at_each_vertex_and_the_same_points);
+    tcase_add_test(c, a_cone_has_the_exact_normal_of_its_side_at_each_vertex);
+    tcase_add_test(c,
+                   polygons_and_materials_without_ks_carry_no_normal_or_highlight);
     tcase_add_test(c, comments_crlf_and_values_across_lines_are_read);
     tcase_add_test(c, the_loader_picks_nff_by_extension);
     suite_add_tcase(s, c);

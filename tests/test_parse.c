@@ -118,10 +118,34 @@ static const bad_case bad_cases[] = {
     {"too few values before a comment", 1, "0 0 # z?", ALL, NULL, S_SYNTAX, 1,
      4, "", 1},
     /* too many values: the first extra token */
-    {"observer with 4 values", 1, "0 0 5 7", ALL, NULL, S_SYNTAX, 1, 7, "7", 1},
+    {"observer with 4 values", 1, "0 0 5 7", ALL, NULL,
+     S_SYNTAX, 1, 7, "7", 1},
     {"vertex with 4 values", 5, "1 -1 0 0", ALL, NULL, S_SYNTAX, 5, 8, "0", 1},
-    {"facet with 10 values", 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL, S_SYNTAX, 8,
-     21, "9", 1},
+    /* the extended records of 0.4 (vertex normals, d, s, p) */
+    {"vertex with 5 values", 5, "1 -1 0 0 1", ALL, NULL,
+     S_SYNTAX, 5, 8, "0", 1},
+    {"vertex with a zero normal", 5, "1 -1 0 0 0 0", ALL, NULL,
+     S_RANGE, 5, 8, "0", 1},
+    {"vertex with a word in its normal", 5, "1 -1 0 0 x 1", ALL, NULL,
+     S_SYNTAX, 5, 10, "x", 1},
+    {"vertex with 7 values", 5, "1 -1 0 0 0 1 8", ALL, NULL,
+     S_SYNTAX, 5, 14, "8", 1},
+    {"vertex with an infinite normal", 5, "1 -1 0 0 inf 1", ALL, NULL,
+     S_SYNTAX | S_RANGE, 5, 10, "inf", 1},
+    {"facet with 13 values", 8, "1 2 3 0 255 0 0 0 1 1 0.5 2 9", ALL, NULL,
+     S_SYNTAX, 8, 29, "9", 1},
+    {"facet with d < 0", 8, "1 2 3 0 255 0 0 0 1 -0.5", ALL, NULL,
+     S_RANGE, 8, 21, "-0.5", 1},
+    {"facet with s < 0", 8, "1 2 3 0 255 0 0 0 1 1 -1 2", ALL, NULL,
+     S_RANGE, 8, 23, "-1", 1},
+    {"facet with p < 1", 8, "1 2 3 0 255 0 0 0 1 1 0.5 0.5", ALL, NULL,
+     S_RANGE, 8, 27, "0.5", 1},
+    {"facet with p = 0", 8, "1 2 3 0 255 0 0 0 1 1 0.5 0", ALL, NULL,
+     S_RANGE, 8, 27, "0", 1},
+    {"facet with a word for s", 8, "1 2 3 0 255 0 0 0 1 1 s 2", ALL, NULL,
+     S_SYNTAX, 8, 23, "s", 1},
+    {"facet with s and no p", 8, "1 2 3 0 255 0 0 0 1 1 0.5", ALL, NULL,
+     S_SYNTAX, 8, 26, "", 1},
     {"facet with k + t > 1", 8, "1 2 3 0.5 255 0 0 0.6", ALL, NULL, S_RANGE, 8,
      19, "0.6", 1},
     {"facet with t < 0", 8, "1 2 3 0 255 0 0 -0.1", ALL, NULL, S_RANGE, 8, 17,
@@ -398,8 +422,8 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
     char text[2048];
     rt_test_base_scene(text, sizeof text, 0, NULL, ALL, NULL, "\n");
     rt_test_write_file(good.s, text);
-    rt_test_base_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 9", ALL, NULL,
-                       "\n");
+    rt_test_base_scene(text, sizeof text, 8, "1 2 3 0 255 0 0 0 1 1 0.5 2 9", ALL,
+                       NULL, "\n");
     rt_test_write_file(bad.s, text);
 
     rt_scene *scene = NULL;
@@ -411,8 +435,8 @@ START_TEST(load_reads_a_file_and_names_it_in_errors)
 
     scene = NULL;
     status = rt_scene_load(bad.s, NULL, &scene, &error);
-    bad_case c = {"file with 10 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
-                  21, "9", 1};
+    bad_case c = {"file with 13 facet values", 0, NULL, 0, NULL, S_SYNTAX, 8,
+                  29, "9", 1};
     check_error(&c, status, scene, &error, bad.s);
     rt_test_remove_dir(dir);
 }

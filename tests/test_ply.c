@@ -195,7 +195,7 @@ START_TEST(ply_a_facet_takes_the_mean_of_its_corners_colours)
 }
 END_TEST
 
-START_TEST(ply_normals_are_read_and_ignored_with_one_warning)
+START_TEST(ply_normals_are_the_vertices_normals_without_a_warning)
 {
     static const char text[] = TRIANGLE_HEADER(
         "property float nx\nproperty float ny\nproperty float nz\n", "")
@@ -205,10 +205,8 @@ START_TEST(ply_normals_are_read_and_ignored_with_one_warning)
     ck_assert_int_eq(ply_parse_named(text, strlen(text), "t.ply", NULL, &scene,
                                  &error),
                      RT_OK);
-    ck_assert_int_eq(rt_test_scene_info(scene).warning_count, 1);
-    ck_assert_int_eq(rt_test_count_warnings(scene, "the vertex normals (nx, "
-                                                   "ny, nz) are ignored"),
-                     1);
+    ck_assert_int_eq(rt_test_scene_info(scene).warning_count, 0);
+    ck_assert_int_eq(rt_test_scene_info(scene).smooth_facet_count, 1);
     rt_scene_destroy(scene);
 }
 END_TEST
@@ -556,7 +554,7 @@ static Suite *ply_suite(void)
     tcase_add_test(t, ply_lists_of_any_integer_types_read_the_same_faces);
     tcase_add_test(t, ply_skips_the_elements_and_properties_it_does_not_read);
     tcase_add_test(t, ply_a_facet_takes_the_mean_of_its_corners_colours);
-    tcase_add_test(t, ply_normals_are_read_and_ignored_with_one_warning);
+    tcase_add_test(t, ply_normals_are_the_vertices_normals_without_a_warning);
     tcase_add_test(t, ply_header_errors_give_their_line_and_column);
     tcase_add_test(t, ply_a_header_without_end_in_binary_data_says_so);
     tcase_add_test(t, ply_a_truncated_binary_body_gives_its_byte_offset);

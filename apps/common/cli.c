@@ -55,7 +55,7 @@ typedef struct spec {
     unsigned bounds;        /* V_NUMBER: CLI_BOUND_... (cli_values.h),
                                which ends are in the interval */
     const char *choices;    /* V_CHOICE: "a|b|c" */
-    int values[4];          /* V_CHOICE: the value of each choice */
+    int values[12];         /* V_CHOICE: the value of each choice */
     size_t offset;          /* into cli_settings, or NO_OFFSET */
     size_t given;           /* int set to 1 when given, or NO_OFFSET */
     void *target;           /* a program's option: where its value goes */
@@ -152,6 +152,13 @@ static const spec table[] = {
      "the point the screen is centred on"},
     {CLI_GROUP_CAMERA, "up", 0, "X,Y,Z", 0, V_POINT, 0, INF, 0, NULL, {0},
      AT(load.up), AT(load.up_given), NULL, "up in the image"},
+    {CLI_GROUP_INPUT, "up-axis", 0, "AXIS", 0, V_CHOICE, 0, 0, 0,
+     "auto|x|y|z|-x|-y|-z|+x|+y|+z",
+     {RT_UP_AUTO, RT_UP_X, RT_UP_Y, RT_UP_Z, RT_UP_NEG_X, RT_UP_NEG_Y,
+      RT_UP_NEG_Z, RT_UP_X, RT_UP_Y, RT_UP_Z},
+     AT(load.up_axis), NO_OFFSET, NULL,
+     "OBJ and PLY: the model's up for the automatic camera (default auto: "
+     "a comment's, else +y)"},
     {CLI_GROUP_CAMERA, "fov", 0, "DEGREES", 0, V_NUMBER, 0, 180,
      CLI_BOUND_OPEN_MIN, NULL, {0},
      AT(load.fov), AT(load.fov_given), NULL,

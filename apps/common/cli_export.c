@@ -176,6 +176,8 @@ void cli_export_print_warnings(const cli_export *ex)
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "%s: %s\n", ex->program->name,
                 rt_scene_warning(ex->scene, i)->message);
+    if (!ex->settings->quiet)
+        cli_print_up_note(stderr, ex->program->name, ex->name, ex->scene);
 }
 
 /* ------------------------------------------------------------------ */

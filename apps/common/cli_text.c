@@ -9,6 +9,8 @@
 
 #include <string.h>
 
+#include "raytrace/raytrace.h"
+
 #define INVALID (-1L)
 
 const char *cli_printable(const char *text, char *out, size_t size)
@@ -134,4 +136,49 @@ size_t cli_json_quote(const char *text, char *out, size_t size)
     if (size > 0)
         out[k.length < size ? k.length : size - 1] = '\0';
     return k.length;
+}
+
+int cli_up_axis_text(const rt_scene *scene, char *out, size_t size)
+{
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(scene, &info);
+    static const char *const names[] = {"+y", "+x", "+y", "+z",
+                                        "-x", "-y", "-z"};
+    const char *axis = info.up_axis >= RT_UP_AUTO && info.up_axis <= RT_UP_NEG_Z
+                           ? names[info.up_axis]
+                           : "+y";
+    switch (info.up_cue) {
+    case RT_UP_CUE_NONE:
+        break;
+    case RT_UP_CUE_DEFAULT:
+        snprintf(out, size, "%s up (the default: no comment names one)",
+                 axis);
+        return 1;
+    case RT_UP_CUE_COMMENT:
+        snprintf(out, size, "%s up (from the comment on line %d)", axis,
+                 info.up_cue_line);
+        return 1;
+    case RT_UP_CUE_EXPORTER:
+        snprintf(out, size,
+                 "%s up (the exporter named on line %d writes it so by "
+                 "default)", axis, info.up_cue_line);
+        return 1;
+    case RT_UP_CUE_OPTION:
+        snprintf(out, size, "%s up (--up-axis)", axis);
+        return 2;
+    }
+    if (size > 0)
+        out[0] = '\0';
+    return 0;
+}
+
+void cli_print_up_note(FILE *stream, const char *program, const char *name,
+                       const rt_scene *scene)
+{
+    char text[160], shown[512];
+    int said = cli_up_axis_text(scene, text, sizeof text);
+    if (said)
+        fprintf(stream, "%s: %s: note: automatic camera with %s%s\n",
+                program, cli_printable(name, shown, sizeof shown), text,
+                said == 1 ? "; --up-axis picks another" : "");
 }

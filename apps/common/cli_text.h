@@ -35,4 +35,16 @@ void cli_json_string(FILE *out, const char *text);
  * returns the length of the whole string, as snprintf does. */
 size_t cli_json_quote(const char *text, char *out, size_t size);
 
+/* The up axis of a scene's automatic camera and why, into out[0..size):
+ * "+z up (from the comment on line 3)"; 1, or 2 when --up-axis chose it;
+ * 0 (out empty) when the scene has its own camera. */
+struct rt_scene;
+int cli_up_axis_text(const struct rt_scene *scene, char *out, size_t size);
+
+/* The load's note about it on stream, "PROGRAM: NAME: note: automatic
+ * camera with +z up (...); --up-axis picks another" (without the advice
+ * when --up-axis chose it); nothing for a scene with its own camera. */
+void cli_print_up_note(FILE *stream, const char *program, const char *name,
+                       const struct rt_scene *scene);
+
 #endif /* RAYTRACE_CLI_TEXT_H */

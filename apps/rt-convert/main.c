@@ -3,8 +3,9 @@
  * course .scn file, for tools that read only that format.
  *
  * What the course's records cannot hold (lights beyond the first,
- * transparency, a lens, diffuse weights other than 1 - k - t) is dropped
- * with a warning, or kept in the optional records with --extended.  The
+ * transparency, a lens, diffuse weights other than 1 - k - t, highlights,
+ * vertex normals) is dropped with a warning, or kept in the optional
+ * records with --extended.  The
  * numbers keep 17 digits: rt-export renders the converted file exactly as
  * the original.  The command line is the programs' one option table
  * (apps/common/cli.h): the same forms, limits and messages as rt-export.
@@ -31,8 +32,8 @@ static int force_name;  /* --force-name */
 static const cli_option convert_options[] = {
     {"extended", 0, NULL, CLI_FLAG, 0, 0, &extended,
      "keep what the course's format cannot hold in the optional records "
-     "(further lights, t and n, a lens); without it they are dropped, "
-     "with a warning"},
+     "(further lights, t and n, a lens, d, highlights, vertex normals); "
+     "without it they are dropped, with a warning"},
     {"force-name", 0, NULL, CLI_FLAG, 0, 0, &force_name,
      "write the .scn text even to a name that does not end in .scn "
      "(without it, `out.png' is refused)"},
@@ -68,18 +69,19 @@ static void report_dropped(unsigned dropped, const char *out)
         {RT_SCN_DROPPED_TRANSPARENCY,
          "the facets' transparency and refractive index"},
         {RT_SCN_DROPPED_LENS, "the lens (aperture and focal distance)"},
-        {RT_SCN_DROPPED_DIFFUSE,
-         "diffuse weights other than 1 - k - t (no .scn record holds them)"},
+        {RT_SCN_DROPPED_DIFFUSE, "diffuse weights other than 1 - k - t"},
+        {RT_SCN_DROPPED_HIGHLIGHTS, "the facets' highlights (s and p)"},
+        {RT_SCN_DROPPED_NORMALS,
+         "the vertex normals (smooth facets become flat)"},
     };
     char shown[1024];
     cli_printable(strcmp(out, "-") ? out : "<stdout>", shown, sizeof shown);
     for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++)
         if (dropped & kinds[i].bit)
-            fprintf(stderr, "rt-convert: %s: warning: dropped %s%s\n", shown,
-                    kinds[i].what,
-                    kinds[i].bit == RT_SCN_DROPPED_DIFFUSE
-                        ? ""
-                        : " (--extended keeps them)");
+            fprintf(stderr,
+                    "rt-convert: %s: warning: dropped %s (--extended keeps "
+                    "them)\n",
+                    shown, kinds[i].what);
 }
 
 /* Whether `out` may receive .scn text: "-", a name ending in .scn (any
@@ -144,6 +146,7 @@ int main(int argc, char **argv)
     rt_scene_get_info(scene, &info);
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, "rt-convert: %s\n", rt_scene_warning(scene, i)->message);
+    cli_print_up_note(stderr, "rt-convert", in, scene);
     code = cli_refuse_input_as_output("rt-convert", out, scene, in,
                                       "the scene")
                ? EXIT_BAD_INPUT

@@ -19,6 +19,7 @@
 #include "cli.h"
 #include "cli_explain.h"
 #include "cli_export.h"
+#include "cli_text.h"
 #include "raytrace/raytrace.h"
 
 #define EXIT_BAD_INPUT 1
@@ -59,9 +60,10 @@ static void print_check(const char *path, const rt_scene *scene)
     printf("  image      %d x %d\n", info.width, info.height);
     printf("  vertices   %d\n", info.vertex_count);
     printf("  facets     %d (%d can be hit, %d reflective, %d "
-           "transparent)\n",
+           "transparent, %d smooth, %d with highlights)\n",
            info.facet_count, info.live_facet_count,
-           info.reflective_facet_count, info.transparent_facet_count);
+           info.reflective_facet_count, info.transparent_facet_count,
+           info.smooth_facet_count, info.highlight_facet_count);
     printf("  camera     O (%g, %g, %g), A (%g, %g, %g)%s\n",
            info.camera.observer.x, info.camera.observer.y,
            info.camera.observer.z, info.camera.screen_center.x,
@@ -81,6 +83,11 @@ static void print_check(const char *path, const rt_scene *scene)
     }
     printf("  background %d %d %d\n", info.background.r, info.background.g,
            info.background.b);
+    char up[160];
+    int said = cli_up_axis_text(scene, up, sizeof up);
+    if (said)
+        printf("  up axis    %s%s\n", up,
+               said == 1 ? "; --up-axis picks another" : "");
     printf("  warnings   %d\n", info.warning_count);
     for (int i = 0; i < info.warning_count; i++)
         printf("  %s\n", rt_scene_warning(scene, i)->message);

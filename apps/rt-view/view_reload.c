@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_text.h"
+
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
@@ -144,6 +146,7 @@ int view_app__finish_load(view_app *app)
     for (int i = 0; i < info.warning_count; i++)
         fprintf(stderr, VIEW_APP_PROGRAM ": %s\n",
                 rt_scene_warning(scene, i)->message);
+    cli_print_up_note(stderr, VIEW_APP_PROGRAM, shown, scene);
     view_session *session = new_session(app, scene, shown);
     if (session == NULL) {
         free(shown);

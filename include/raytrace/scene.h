@@ -39,6 +39,24 @@
 extern "C" {
 #endif
 
+/* The up axis of the automatic camera of the formats that hold no view
+ * (OBJ, PLY; docs/formats.md, "The automatic camera"), and what decided it
+ * (rt_scene_info.up_cue). */
+typedef enum rt_up_axis {
+    RT_UP_AUTO = 0,             /* the file's cue, else +y */
+    RT_UP_X, RT_UP_Y, RT_UP_Z,
+    RT_UP_NEG_X, RT_UP_NEG_Y, RT_UP_NEG_Z
+} rt_up_axis;
+
+typedef enum rt_up_cue {
+    RT_UP_CUE_NONE = 0,         /* the file has its own camera */
+    RT_UP_CUE_DEFAULT,          /* nothing said: +y, OBJ's usual up */
+    RT_UP_CUE_COMMENT,          /* a comment names it (up_cue_line) */
+    RT_UP_CUE_EXPORTER,         /* the exporter a comment names writes it
+                                   by default (up_cue_line) */
+    RT_UP_CUE_OPTION            /* rt_load_options.up_axis */
+} rt_up_cue;
+
 /* Limits the loader enforces (docs/scene-format.md). */
 #define RT_MAX_IMAGE_SIDE 16384
 
@@ -150,6 +168,10 @@ typedef struct rt_scene_info {
     /* Since 0.4: */
     int smooth_facet_count; /* live facets with a normal at each corner */
     int highlight_facet_count;  /* live facets with a highlight s > 0 */
+    rt_up_axis up_axis;     /* the automatic camera's up; RT_UP_AUTO when
+                               the file has its own camera */
+    rt_up_cue up_cue;       /* what chose it */
+    int up_cue_line;        /* the comment's line, for a comment's cue */
 } rt_scene_info;
 
 /*
@@ -192,6 +214,10 @@ typedef struct rt_scene_desc {
                                normalised): a facet whose three corners
                                have one is smooth; a zero vector stands
                                for none; others must be finite */
+    rt_up_axis up_axis;     /* reported by rt_scene_info (a reader's
+                               automatic camera); RT_UP_AUTO: none */
+    rt_up_cue up_cue;
+    int up_cue_line;
 } rt_scene_desc;
 
 /*
@@ -315,6 +341,10 @@ typedef struct rt_load_options {
                                    rt_resolve_in_folder for rt_scene_load,
                                    no file at all for a parse from memory */
     void *resolve_user;         /* passed to resolve */
+    /* Since 0.4: */
+    rt_up_axis up_axis;         /* the automatic camera's up (OBJ, PLY);
+                                   RT_UP_AUTO: from the file's cue, else
+                                   +y (docs/formats.md) */
 } rt_load_options;
 
 /* Sets size to sizeof(rt_load_options) and the defaults above.  NULL:
@@ -476,16 +506,20 @@ RT_API int rt_scene_occluded(const rt_scene *scene, rt_vec3 from, rt_vec3 to,
 
 /* What a handout .scn file cannot hold (rt_scene_write_scn's *dropped,
  * bits): lights beyond the first, transparency and refractive indices, a
- * lens, diffuse weights other than 1 - k - t (as NFF's Kd). */
+ * lens, diffuse weights other than 1 - k - t (as NFF's Kd), and since 0.4
+ * vertex normals and highlights. */
 #define RT_SCN_DROPPED_LIGHTS 1u
 #define RT_SCN_DROPPED_TRANSPARENCY 2u
 #define RT_SCN_DROPPED_LENS 4u
 #define RT_SCN_DROPPED_DIFFUSE 8u
+#define RT_SCN_DROPPED_NORMALS 16u
+#define RT_SCN_DROPPED_HIGHLIGHTS 32u
 
 /*
  * Writes `scene` as a .scn file to the sink: the handout's records only,
- * or with `extended` also the optional lens, transparency and further-light
- * records (docs/scene-format.md).  Numbers are written with 17 significant
+ * or with `extended` also the optional lens, transparency, diffuse weight,
+ * highlight, vertex normal and further-light values (docs/scene-format.md),
+ * each only where the scene needs it.  Numbers are written with 17 significant
  * digits, so reading the file back gives the same doubles and the same
  * picture.  *dropped (may be NULL) receives the RT_SCN_DROPPED_ bits of
  * what the file could not hold.  Returns RT_OK, RT_ERR_IO (the sink

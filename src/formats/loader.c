@@ -62,6 +62,10 @@ static rt_status check_options(const rt_load_options *o, const char *name,
     if (vector != NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
                              "expected finite coordinates for %s", vector);
+    if (!(o->up_axis >= RT_UP_AUTO && o->up_axis <= RT_UP_NEG_Z))
+        return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
+                             "an up axis of %d: expected an rt_up_axis",
+                             (int)o->up_axis);
     if (o->light_count < 0)
         return rt__error_set(error, RT_ERR_ARGUMENT, name, 0, 0,
                              "a light count of %d: expected 0 (the file's "
@@ -90,7 +94,7 @@ static rt_status take_options(const rt_load_options *in, rt_load_options *out,
     TAKE(format) TAKE(tessellation) TAKE(width) TAKE(height)
     TAKE(look_from_given) TAKE(look_at_given) TAKE(up_given) TAKE(fov_given)
     TAKE(look_from) TAKE(look_at) TAKE(up) TAKE(fov) TAKE(lights)
-    TAKE(light_count) TAKE(cancel) TAKE(resolve) TAKE(resolve_user)
+    TAKE(light_count) TAKE(cancel) TAKE(resolve) TAKE(resolve_user) TAKE(up_axis)
 #undef TAKE
     return check_options(out, name, error);
 }

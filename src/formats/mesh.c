@@ -5,17 +5,20 @@
  */
 #include "formats/mesh.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "base/exact.h"
 #include "base/vecmath.h"
 #include "formats/framing.h"
 
 /* The automatic view (docs/formats.md): from the front (+z), to the right
- * (+x) and above (+y, OBJ's usual up), the horizontal field of view. */
+ * (+x) and above (+y, OBJ's usual up), the horizontal field of view; for
+ * another up axis the same view turned (mesh_frame). */
 #define VIEW_X 0.5
 #define VIEW_Y 0.5
 #define VIEW_Z 1.0
@@ -101,6 +104,160 @@ const char *rt__mesh_face_remark(rt_face_outcome outcome, char *buffer,
 }
 
 /* ---------------------------------------------------------------- the view */
+
+/* The model's right, up and front (towards the camera) for an up axis:
+ * +y gives x, y, z (the view of every earlier release, bit for bit);
+ * +z the usual z-up frame, seen from -y; the others alike, each frame
+ * right-handed (right = up x front). */
+static void mesh_frame(rt_up_axis axis, rt_vec3 *right, rt_vec3 *up,
+                       rt_vec3 *front)
+{
+    switch (axis) {
+    case RT_UP_X:     *up = v3(1, 0, 0);  *front = v3(0, 0, 1);  break;
+    case RT_UP_NEG_X: *up = v3(-1, 0, 0); *front = v3(0, 0, 1);  break;
+    case RT_UP_NEG_Y: *up = v3(0, -1, 0); *front = v3(0, 0, 1);  break;
+    case RT_UP_Z:     *up = v3(0, 0, 1);  *front = v3(0, -1, 0); break;
+    case RT_UP_NEG_Z: *up = v3(0, 0, -1); *front = v3(0, 1, 0);  break;
+    default:          *up = v3(0, 1, 0);  *front = v3(0, 0, 1);  break;
+    }
+    *right = v3_cross(*up, *front);
+}
+
+const char *rt__mesh_up_name(rt_up_axis axis)
+{
+    static const char *const names[] = {"+y", "+x", "+y", "+z",
+                                        "-x", "-y", "-z"};
+    return axis >= RT_UP_AUTO && axis <= RT_UP_NEG_Z ? names[axis] : "+y";
+}
+
+static int word_char(int c)
+{
+    return isalnum(c) || c == '_';
+}
+
+/* An axis named at text[at] ("z", "+z", "-Y"), followed by no letter or
+ * digit: its value, its length in *length; RT_UP_AUTO for none. */
+static rt_up_axis axis_at(const char *text, size_t n, size_t at,
+                          size_t *length)
+{
+    int negative = 0;
+    size_t i = at;
+    if (i < n && (text[i] == '+' || text[i] == '-'))
+        negative = text[i++] == '-';
+    if (i >= n)
+        return RT_UP_AUTO;
+    int c = tolower((unsigned char)text[i]);
+    if ((c != 'x' && c != 'y' && c != 'z') ||
+        (i + 1 < n && isalnum((unsigned char)text[i + 1])))
+        return RT_UP_AUTO;
+    *length = i + 1 - at;
+    rt_up_axis axis = c == 'x' ? RT_UP_X : c == 'y' ? RT_UP_Y : RT_UP_Z;
+    return negative ? (rt_up_axis)(axis + 3) : axis;
+}
+
+/* The up axis a comment names: "Z-up", "+z up", "up axis: Y", "up=-z",
+ * "up_axis Z" (any case); RT_UP_AUTO for none. */
+static rt_up_axis comment_axis(const char *text, size_t n)
+{
+    for (size_t i = 0; i + 1 < n; i++) {
+        if (tolower((unsigned char)text[i]) != 'u' ||
+            tolower((unsigned char)text[i + 1]) != 'p' ||
+            (i > 0 && isalnum((unsigned char)text[i - 1])) ||
+            (i + 2 < n && isalpha((unsigned char)text[i + 2]) &&
+             tolower((unsigned char)text[i + 2]) != 'a'))
+            continue;
+        /* before: "z-up", "+Z up", "Y_up" */
+        size_t j = i;
+        while (j > 0 && (text[j - 1] == ' ' || text[j - 1] == '-' ||
+                         text[j - 1] == '_') && i - j < 2)
+            j--;
+        if (j < i && j > 0) {
+            size_t start = j - 1, length;
+            if (start > 0 && (text[start - 1] == '+' || text[start - 1] == '-'))
+                start--;
+            if ((start == 0 || !word_char((unsigned char)text[start - 1])) &&
+                axis_at(text, n, start, &length) != RT_UP_AUTO &&
+                start + length == j)
+                return axis_at(text, n, start, &length);
+        }
+        /* after: "up z", "up: +z", "up axis = Y", "up_axis Z" */
+        size_t k = i + 2;
+        if (k + 4 <= n && (text[k] == '_' || text[k] == '-' ||
+                           text[k] == ' ') &&
+            strncasecmp(text + k + 1, "axis", 4) == 0)
+            k += 5;
+        else if (k + 4 <= n && strncasecmp(text + k, "axis", 4) == 0)
+            k += 4;
+        else if (k < n && isalpha((unsigned char)text[k]))
+            continue;
+        while (k < n && (text[k] == ' ' || text[k] == '\t' || text[k] == ':' ||
+                         text[k] == '=' || text[k] == '_'))
+            k++;
+        size_t length;
+        rt_up_axis axis = axis_at(text, n, k, &length);
+        if (axis != RT_UP_AUTO)
+            return axis;
+    }
+    return RT_UP_AUTO;
+}
+
+static int contains(const char *text, size_t n, const char *word)
+{
+    size_t w = strlen(word);
+    for (size_t i = 0; i + w <= n; i++)
+        if (strncasecmp(text + i, word, w) == 0)
+            return 1;
+    return 0;
+}
+
+void rt__mesh_up(const char *text, size_t length, int ply,
+                 const rt_load_options *options, rt_scene_desc *d)
+{
+    d->up_axis = RT_UP_Y;
+    d->up_cue = RT_UP_CUE_DEFAULT;
+    d->up_cue_line = 0;
+    if (options->up_axis != RT_UP_AUTO) {
+        d->up_axis = options->up_axis;
+        d->up_cue = RT_UP_CUE_OPTION;
+        return;
+    }
+    int exporter_line = 0;
+    size_t at = 0;
+    for (int line = 1; line <= RT_MESH_CUE_LINES && at < length; line++) {
+        const char *start = text + at;
+        const char *end = memchr(start, '\n', length - at);
+        size_t n = end ? (size_t)(end - start) : length - at;
+        at += n + 1;
+        size_t skip = 0;
+        while (skip < n && (start[skip] == ' ' || start[skip] == '\t'))
+            skip++;
+        if (ply) {
+            if (n - skip >= 10 && memcmp(start + skip, "end_header", 10) == 0)
+                break;
+            if (n - skip < 8 || memcmp(start + skip, "comment ", 8) != 0)
+                continue;
+            skip += 8;
+        } else if (skip == n || start[skip] != '#') {
+            continue;
+        }
+        rt_up_axis axis = comment_axis(start + skip, n - skip);
+        if (axis != RT_UP_AUTO) {
+            d->up_axis = axis;
+            d->up_cue = RT_UP_CUE_COMMENT;
+            d->up_cue_line = line;
+            return;
+        }
+        if (exporter_line == 0 && contains(start + skip, n - skip, "blender"))
+            exporter_line = line;
+    }
+    if (exporter_line > 0) {
+        /* Blender writes OBJ with +y up and PLY with +z up unless told
+         * otherwise (its exporters' default axes). */
+        d->up_axis = ply ? RT_UP_Z : RT_UP_Y;
+        d->up_cue = RT_UP_CUE_EXPORTER;
+        d->up_cue_line = exporter_line;
+    }
+}
 
 /* fmax and fmin for finite values, as glibc gives them (the first argument
  * on a tie, so that the sign of a zero is the same), without the call:
@@ -196,8 +353,12 @@ rt_status rt__mesh_auto_view(const char *name, const rt_vec3 *vertices,
     double radius = v3_length(v3_sub(v3_scale(hi, 0.5), v3_scale(lo, 0.5)));
     if (!(radius > 0.0))
         radius = fmax(1.0, v3_max_abs(center) * 1e-3);
-    rt_vec3 view = v3_normalize(v3(VIEW_X, VIEW_Y, VIEW_Z));
-    rt_vec3 right = v3_normalize(v3_cross(v3(0, 1, 0), view));
+    rt_vec3 axis_right, axis_up, axis_front;
+    mesh_frame(d->up_axis, &axis_right, &axis_up, &axis_front);
+    rt_vec3 view = v3_normalize(v3_add(
+        v3_add(v3_scale(axis_right, VIEW_X), v3_scale(axis_up, VIEW_Y)),
+        v3_scale(axis_front, VIEW_Z)));
+    rt_vec3 right = v3_normalize(v3_cross(axis_up, view));
     rt_vec3 image_up = v3_cross(view, right);
     /* A vertex at (x, y) across the view and z towards the camera is
      * inside the image when |x| <= (D - z) tan_x and |y| <= (D - z) tan_y,
@@ -233,7 +394,7 @@ rt_status rt__mesh_auto_view(const char *name, const rt_vec3 *vertices,
     free(order);
     d->observer = v3_add(center, v3_scale(view, distance));
     d->screen_center = center;
-    d->screen_right = rt__frame_right(center, v3_neg(view), v3(0, 1, 0),
+    d->screen_right = rt__frame_right(center, v3_neg(view), axis_up,
                                       distance * tan_x);
     if (!(v3_max_abs(d->observer) <= RT_MAX_COORDINATE) ||
         !(v3_max_abs(d->screen_right) <= RT_MAX_COORDINATE))

@@ -49,10 +49,28 @@ rt_status rt__mesh_face(rt_triangulator *t, const rt_vec3 *vertices,
 const char *rt__mesh_face_remark(rt_face_outcome outcome, char *buffer,
                                  size_t size);
 
+/* The lines of a file looked at for a comment naming the up axis. */
+#define RT_MESH_CUE_LINES 64
+
+/*
+ * The up axis of the automatic camera into d->up_axis, d->up_cue and
+ * d->up_cue_line (docs/formats.md, "The automatic camera"): the options'
+ * up_axis when given; else one named by a comment among the first
+ * RT_MESH_CUE_LINES lines of text (`#` lines for OBJ, `comment` lines of a
+ * PLY header: "Z-up", "up axis: z", ...); else the default of an exporter
+ * a comment names (Blender: +y for OBJ, +z for PLY); else +y.  O(lines).
+ */
+void rt__mesh_up(const char *text, size_t length, int ply,
+                 const rt_load_options *options, rt_scene_desc *d);
+
+/* "+x", "+y", "+z", "-x", "-y" or "-z" ("+y" for RT_UP_AUTO). */
+const char *rt__mesh_up_name(rt_up_axis axis);
+
 /*
  * The automatic camera and light of a mesh (docs/formats.md): the image
  * options->width x options->height (a missing side from the other, 512
- * without either), seen from the direction (0.5, 0.5, 1) at the nearest
+ * without either), seen from the direction (0.5, 0.5, 1) in the frame of
+ * d->up_axis (set by rt__mesh_up first: right, up, front) at the nearest
  * distance where every vertex of the facets (every vertex when there is no
  * facet) is inside the image with a 5% margin, the picture centred; one
  * white light above and to the left of the camera, stored in *light and

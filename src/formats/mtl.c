@@ -25,7 +25,7 @@
 typedef struct mtl_state {
     double kd[3], ks[3];
     int illum;
-    double dissolve, tr, ni;
+    double dissolve, tr, ni, ns;
     int has_d, has_tr;
     int material;               /* its index in r->materials; -1: none */
     int line;                   /* of its `newmtl` */
@@ -40,6 +40,7 @@ static void mtl_defaults(mtl_state *m)
     m->dissolve = 1.0;
     m->tr = 0.0;
     m->ni = 1.0;
+    m->ns = 0.0;
     m->has_d = m->has_tr = 0;
 }
 
@@ -62,8 +63,17 @@ static int mirror_model(int illum)
     return illum >= 3 && illum <= 7;
 }
 
+/* The illumination models with a highlight: 2 "highlight on" and every
+ * model above it (whose formulas in the MTL specification all have the
+ * Ks highlight term); 0 and 1 have none. */
+static int highlight_model(int illum)
+{
+    return illum >= 2;
+}
+
 /* The facet the block gives its material (docs/formats.md): colour Kd,
- * k = max(Ks) for a mirror model, t = 1 - d (or Tr), n = Ni, d = 1 - k - t. */
+ * k = max(Ks) for a mirror model, t = 1 - d (or Tr), n = Ni, d = 1 - k - t,
+ * and for a model with a highlight s = max(Ks), p = max(1, Ns). */
 static void finish_block(reader *r, const char *library, mtl_state *m)
 {
     if (m->material < 0)
@@ -87,6 +97,10 @@ static void finish_block(reader *r, const char *library, mtl_state *m)
         f->reflection = 1.0 - f->transparency;
     }
     f->refractive_index = m->ni;
+    if (highlight_model(m->illum)) {
+        f->highlight = fmax(0.0, fmax(m->ks[0], fmax(m->ks[1], m->ks[2])));
+        f->highlight_exponent = fmax(1.0, m->ns);
+    }
     m->material = -1;
 }
 
@@ -177,7 +191,7 @@ static int mtl_value(reader *r, const lexer *x, const char *library,
 static int mtl_ignored(const token *k)
 {
     static const char *const words[] = {
-        "Ka", "Ke", "Ns", "Tf", "sharpness", "bump", "disp", "decal",
+        "Ka", "Ke", "Tf", "sharpness", "bump", "disp", "decal",
         "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor"};
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (rt__token_is(k, words[i]))
@@ -193,7 +207,8 @@ static rt_status mtl_statement(reader *r, lexer *x, const char *library,
     double v[3];
     int colour = rt__token_is(k, "Kd") || rt__token_is(k, "Ks");
     if (colour || rt__token_is(k, "illum") || rt__token_is(k, "d") ||
-        rt__token_is(k, "Tr") || rt__token_is(k, "Ni")) {
+        rt__token_is(k, "Tr") || rt__token_is(k, "Ni") ||
+        rt__token_is(k, "Ns")) {
         if (rt__obj_rest(x, colour ? 4 : 0) != 0)
             return RT_ERR_NOMEM;
         k = &x->tokens[0];
@@ -228,6 +243,9 @@ static rt_status mtl_statement(reader *r, lexer *x, const char *library,
                               "expected a refractive index Ni > 0, found %g; "
                               "1 is used", v[0]);
         }
+    } else if (rt__token_is(k, "Ns")) {
+        if (mtl_value(r, x, library, v))
+            m->ns = v[0];
     } else if (rt__token_is(k, "map_Kd")) {
         rt__obj_warn_once(r, library, k,
                           "are ignored: textures are not drawn, the colour "

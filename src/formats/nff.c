@@ -400,6 +400,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
     d.height = p->height;
     d.background = p->background;
     d.vertices = p->mesh.vertices;
+    d.normals = p->mesh.normals;
     d.vertex_count = p->mesh.vertex_count;
     d.facets = p->mesh.facets;
     d.facet_count = p->mesh.facet_count;

@@ -19,7 +19,7 @@ typedef rt_token token;
 
 /* One warning of each kind per file. */
 enum {
-    ONCE_HITHER, ONCE_SHINE, ONCE_NORMALS, ONCE_INSIDE, ONCE_COLOR,
+    ONCE_HITHER, ONCE_NORMALS, ONCE_INSIDE, ONCE_COLOR,
     ONCE_KT, ONCE_MATERIAL, ONCE_IRREGULAR, ONCE_ASPECT, ONCE_VIEW,
     ONCE_COUNT
 };
@@ -63,7 +63,8 @@ typedef struct parser {
     int material_count, material_capacity;
     primitive *primitives;
     int primitive_count, primitive_capacity;
-    rt_vec3 *points;        /* a polygon's vertices */
+    rt_vec3 *points;        /* a polygon's vertices, then a patch's
+                               normals (room for 2 point_capacity) */
     int point_capacity;
     rt_tess_mesh mesh;
 } parser;

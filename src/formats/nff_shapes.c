@@ -28,11 +28,11 @@ rt_status rt__nff_material(parser *p, const token *f)
     rt_facet_desc m;
     memset(&m, 0, sizeof m);
     double kd, ks, shine, tr, index;
-    token kd_t, ks_t, tr_t, index_t, shine_t;
+    token kd_t, ks_t, tr_t, index_t;
     if ((status = rt__nff_color(p, "the colour", &m.color)) != RT_OK ||
         (status = rt__nff_number(p, "`Kd`", &kd, &kd_t)) != RT_OK ||
         (status = rt__nff_number(p, "`Ks`", &ks, &ks_t)) != RT_OK ||
-        (status = rt__nff_number(p, "`Shine`", &shine, &shine_t)) != RT_OK ||
+        (status = rt__nff_number(p, "`Shine`", &shine, NULL)) != RT_OK ||
         (status = rt__nff_number(p, "`T`", &tr, &tr_t)) != RT_OK ||
         (status = rt__nff_number(p, "the index of refraction", &index,
                                  &index_t)) != RT_OK)
@@ -50,10 +50,6 @@ rt_status rt__nff_material(parser *p, const token *f)
                             "an index of refraction > 0 for a transmitting "
                             "material (T > 0)");
     (void)f;
-    rt__nff_warn_once(
-        p, ONCE_SHINE, &shine_t,
-        "`Shine` (the Phong exponent) has no place in the rendering "
-        "model, which has no highlights: ignored");
     if (ks + tr > 1) {
         char text[200];
         double sum = ks + tr;
@@ -81,6 +77,11 @@ rt_status rt__nff_material(parser *p, const token *f)
     m.refractive_index = tr > 0 ? index : 1.0;
     m.diffuse = kd;
     m.diffuse_given = 1;
+    /* Ks is the mirror weight and the highlight's (both of Whitted's
+     * specular terms), Shine the highlight's exponent; without a highlight
+     * the exponent stays 1. */
+    m.highlight = m.reflection;
+    m.highlight_exponent = m.highlight > 0 ? fmax(1.0, shine) : 1.0;
     p->materials[p->material_count++] = m;
     return RT_OK;
 }
@@ -234,12 +235,14 @@ rt_status rt__nff_polygon(parser *p, const token *entity, int patch)
         return rt__nff_fail(p, RT_ERR_LIMIT, &count_t, expected);
     }
     if (n > p->point_capacity) {
-        rt_vec3 *grown = realloc(p->points, (size_t)n * sizeof *grown);
+        /* (a patch's normals after its points, in the same block) */
+        rt_vec3 *grown = realloc(p->points, 2 * (size_t)n * sizeof *grown);
         if (grown == NULL)
             return rt__nff_out_of_memory(p);
         p->points = grown;
         p->point_capacity = n;
     }
+    rt_vec3 *normals = patch ? p->points + n : NULL;
     for (int i = 0; i < n; i++) {
         if (i % RT_LOAD_POLL == RT_LOAD_POLL - 1 &&
             rt__load_cancelled(p->options))
@@ -248,15 +251,15 @@ rt_status rt__nff_polygon(parser *p, const token *entity, int patch)
             RT_OK)
             return status;
         if (patch) {
-            rt_vec3 normal;
             token t;
-            if ((status = rt__nff_triple(p, "a vertex normal", 0, &normal,
+            if ((status = rt__nff_triple(p, "a vertex normal", 0, &normals[i],
                                          &t)) != RT_OK)
                 return status;
-            rt__nff_warn_once(
-                p, ONCE_NORMALS, &t,
-                "the normals of `pp` patches are ignored (the model's "
-                "facets are flat)");
+            if (normals[i].x == 0 && normals[i].y == 0 && normals[i].z == 0)
+                rt__nff_warn_once(
+                    p, ONCE_NORMALS, &t,
+                    "a zero vertex normal in a `pp` patch: the triangles at "
+                    "that corner are flat (the first is here)");
         }
     }
     if (n > MAX_NONCONVEX_VERTICES &&
@@ -274,8 +277,8 @@ rt_status rt__nff_polygon(parser *p, const token *entity, int patch)
         return rt__nff_fail(p, RT_ERR_LIMIT, &count_t,
                             "at most 16777216 facets in all");
     int irregular = 0;
-    if (rt__tess_polygon(&p->mesh, p->points, n, &p->materials[m],
-                         entity->line, &irregular) != 0)
+    if (rt__tess_patch(&p->mesh, p->points, normals, n, &p->materials[m],
+                       entity->line, &irregular) != 0)
         return rt__nff_out_of_memory(p);
     if (irregular)
         rt__nff_warn_once(

@@ -103,11 +103,20 @@ static rt_status vertex(reader *r)
                       "at most %d vertices", INT_MAX / 2);
     if (room == 0)
         return rt__obj_out_of_memory(r);
+    if (r->position_of != NULL &&
+        rt__obj_grow((void **)&r->position_of, &r->position_capacity,
+                     r->obj_vertex_count, sizeof *r->position_of, 64) <= 0)
+        return rt__obj_out_of_memory(r);
+    if (r->position_of != NULL)
+        r->position_of[r->obj_vertex_count] = r->vertex_count;
     r->vertices[r->vertex_count++] = v3(c[0], c[1], c[2]);
+    r->obj_vertex_count++;
+    if (!rt__obj_vertex_added(r))
+        return rt__obj_out_of_memory(r);
     return RT_OK;
 }
 
-/* `vt` and `vn`: numbers, counted for the faces' references, not used. */
+/* `vt`: numbers, counted for the faces' references, not used. */
 static rt_status attribute(reader *r, int *count, int least, int most)
 {
     lexer *x = &r->lex;
@@ -140,12 +149,13 @@ static rt_status attribute(reader *r, int *count, int least, int most)
 
 /*
  * Reads one index of a face reference at t->text[*at...] into a 0-based
- * index among `count` ("vertex", "texture coordinate", "normal").  With
- * `out` NULL (texture coordinates and normals, which are not used) an
- * index out of range is a warning, not a refusal; 0 is refused always.
+ * index among `count` ("vertex", "texture coordinate", "normal") in *out
+ * (may be NULL).  For texture coordinates and normals (`lenient`) an index
+ * out of range is a warning, not a refusal, and *out is -1; 0 is refused
+ * always.
  */
 static rt_status index_at(reader *r, const token *t, size_t *at, int count,
-                          const char *what, int *out)
+                          const char *what, int lenient, int *out)
 {
     size_t i = *at;
     int negative = 0;
@@ -167,16 +177,20 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
     if (value == 0 || resolved < 0 || resolved >= count) {
         char buffer[RT_TOKEN_SHOWN_SIZE];
         token part = {t->text + *at, i - *at, t->line, t->column + column};
-        if (out == NULL && value != 0) {
-            /* Texture coordinates and normals are not used: exporters
-             * that leave them out but keep the references still render. */
+        if (lenient && value != 0) {
+            /* Exporters that leave texture coordinates or normals out but
+             * keep the references still render. */
             const char *key = what[0] == 't' ? "@vt" : "@vn";
             if (rt__obj_first_time(r, key, strlen(key)) > 0)
                 rt__obj_warn(r, r->name, part.line, part.column,
-                             "`%s` refers to no %s read so far; %s indices "
-                             "are not used, this one is ignored (said once)",
-                             rt__token_shown(&part, buffer), what, what);
+                             "`%s` refers to no %s read so far; it is "
+                             "ignored%s (said once)",
+                             rt__token_shown(&part, buffer), what,
+                             what[0] == 't' ? ""
+                                            : " and the face is flat");
             *at = i;
+            if (out != NULL)
+                *out = -1;
             return RT_OK;
         }
         if (count == 0)
@@ -198,24 +212,28 @@ static rt_status index_at(reader *r, const token *t, size_t *at, int count,
     return RT_OK;
 }
 
-/* One vertex of a face: v, v/vt, v//vn or v/vt/vn. */
-static rt_status face_vertex(reader *r, const token *t, int *out)
+/* One vertex of a face: v, v/vt, v//vn or v/vt/vn; its `v` (0-based)
+ * into *out, its `vn` or -1 into *normal. */
+static rt_status face_vertex(reader *r, const token *t, int *out,
+                             int *normal)
 {
     size_t at = 0;
-    rt_status status = index_at(r, t, &at, r->vertex_count, "vertex", out);
+    *normal = -1;
+    rt_status status = index_at(r, t, &at, r->obj_vertex_count, "vertex", 0,
+                                out);
     if (status != RT_OK || at == t->length)
         return status;
     at++;                                       /* the first '/' */
     if (at < t->length && t->text[at] != '/') {
         status = index_at(r, t, &at, r->texture_count, "texture coordinate",
-                          NULL);
+                          1, NULL);
         if (status != RT_OK || at == t->length)
             return status;
     }
     if (at == t->length || t->text[at] != '/' || ++at == t->length)
         return refuse(r, RT_ERR_SYNTAX, t, 0,
                       "a face vertex `v`, `v/vt`, `v//vn` or `v/vt/vn`");
-    status = index_at(r, t, &at, r->normal_count, "normal", NULL);
+    status = index_at(r, t, &at, r->normal_count, "normal", 1, normal);
     if (status == RT_OK && at != t->length)
         return refuse(r, RT_ERR_SYNTAX, t, 0,
                       "a face vertex `v`, `v/vt`, `v//vn` or `v/vt/vn`");
@@ -278,7 +296,16 @@ static rt_status read_corners(reader *r, int *n)
             return refuse(r, RT_ERR_LIMIT, &t, 0, "fewer corners");
         if (room == 0)
             return rt__obj_out_of_memory(r);
-        rt_status status = face_vertex(r, &t, &r->polygon[(*n)++]);
+        if (r->slot != NULL &&
+            rt__obj_grow((void **)&r->corner_normals,
+                         &r->corner_normal_capacity, *n,
+                         sizeof *r->corner_normals, 16) <= 0)
+            return rt__obj_out_of_memory(r);
+        int normal;
+        rt_status status = face_vertex(r, &t, &r->polygon[*n], &normal);
+        if (r->slot != NULL)
+            r->corner_normals[*n] = normal;
+        (*n)++;
         if (status != RT_OK)
             return status;
     }
@@ -299,6 +326,9 @@ static rt_status face(reader *r)
                              "expected at least 3 vertices for the face, "
                              "found %d", n);
     }
+    status = rt__obj_corners(r, &n);
+    if (status != RT_OK)
+        return status;
     face_sink sink = {r, keyword.line};
     rt_face_outcome outcome;
     status = rt__mesh_face(&r->triangulator, r->vertices, r->polygon, n,
@@ -330,9 +360,11 @@ static void release_arrays(void *user)
     free(r->vertices);
     free(r->facets);
     free(r->facet_lines);
+    free(r->scene_normals);
     r->vertices = NULL;
     r->facets = NULL;
     r->facet_lines = NULL;
+    r->scene_normals = NULL;
 }
 
 /* ---------------------------------------------------------------- reading */
@@ -350,13 +382,8 @@ static rt_status statement(reader *r)
         return face(r);
     if (rt__token_is(k, "vt"))
         return attribute(r, &r->texture_count, 1, 3);
-    if (rt__token_is(k, "vn")) {
-        if (r->normal_count == 0)
-            rt__obj_warn(r, r->name, k->line, k->column,
-                         "vertex normals (`vn`) are ignored: facets are "
-                         "shaded flat (said once)");
-        return attribute(r, &r->normal_count, 3, 3);
-    }
+    if (rt__token_is(k, "vn"))
+        return rt__obj_normal(r);
     if (rt__token_is(k, "o") || rt__token_is(k, "g") ||
         rt__token_is(k, "s"))
         return RT_OK;
@@ -389,7 +416,7 @@ static rt_status read_obj(reader *r, rt_scene **scene)
                                   &r->self_library, &r->more_refused,
                                   &r->bad_values,   &r->lowered,
                                   &r->no_name,      &r->no_argument,
-                                  &r->no_library_name};
+                                  &r->no_library_name, &r->bad_normal};
     for (size_t i = 0; i < sizeof summaries / sizeof summaries[0]; i++)
         rt__obj_say(r, summaries[i]);
     if (r->facet_count == 0)
@@ -401,6 +428,9 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     rt_light light;
+    rt__mesh_up(r->lex.text.start,
+                (size_t)(r->lex.text.end - r->lex.text.start), 0, r->options,
+                &d);
     status = rt__mesh_auto_view(r->name, r->vertices, r->vertex_count,
                                 r->facets, r->facet_count, r->options, &d,
                                 &light, r->error);
@@ -410,6 +440,11 @@ static rt_status read_obj(reader *r, rt_scene **scene)
     d.vertex_count = r->vertex_count;
     d.facets = r->facets;
     d.facet_count = r->facet_count;
+    int failed;
+    r->scene_normals = rt__obj_normals(r, &failed);
+    if (failed)
+        return rt__obj_out_of_memory(r);
+    d.normals = r->scene_normals;
     rt_reading reading = {r->name, r->facet_lines, &r->notes, r->options,
                           NULL,    NULL,           release_arrays, r};
     return rt__reader_finish(&d, &reading, scene, r->error);
@@ -445,6 +480,7 @@ rt_status rt__obj_parse(const char *text, size_t length, const char *name,
     rt__tri_init(&r.triangulator, budget, options->cancel);
     status = read_obj(&r, scene);
     rt__obj_free_materials(&r);
+    rt__obj_free_normals(&r);
     rt__tri_free(&r.triangulator);
     rt__obj_lexer_close(&r.lex);
     release_arrays(&r);

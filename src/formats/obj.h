@@ -100,9 +100,27 @@ typedef struct reader {
     lexer lex;
     rt_triangulator triangulator;
     long statements;            /* read so far, OBJ and MTL */
-    rt_vec3 *vertices;
+    rt_vec3 *vertices;          /* the scene's: the `v` positions, and the
+                                   copies a vertex used with another
+                                   normal needs (obj_normals.c) */
     int vertex_count, vertex_capacity;
+    int obj_vertex_count;       /* `v` statements read so far */
     int texture_count, normal_count;
+    /* vertex normals (obj_normals.c): none of these exists before the
+     * first `vn`, so a file without normals costs what it always did */
+    rt_vec3 *normal_values;     /* each `vn`, unit, or zero when unusable */
+    int normal_capacity;
+    int *slot;                  /* per vertex: its `vn` (-1 none, -2 not
+                                   used yet) */
+    int slot_capacity;
+    int *position_of;           /* per `v`: where it is in vertices[];
+                                   NULL while that is its number */
+    int position_capacity;
+    struct obj_pair *pairs;     /* (v, vn) -> the copy, open addressing */
+    int pair_count, pair_capacity;
+    int *corner_normals;        /* per corner of the face being read */
+    rt_vec3 *scene_normals;     /* the description's, at the end */
+    int corner_normal_capacity;
     rt_facet_desc *facets;
     int *facet_lines;
     int facet_count, facet_capacity;
@@ -127,6 +145,7 @@ typedef struct reader {
     counted fanned, over_budget, no_area, few_corners;
     counted self_library, more_refused, bad_values, lowered, no_name;
     counted no_argument, no_library_name;
+    counted bad_normal;         /* `vn` of zero length or not finite */
 } reader;
 
 void rt__obj_warn(reader *r, const char *file, int line, int column,
@@ -164,6 +183,19 @@ rt_status rt__obj_poll(reader *r);
  * second on when they stay on one line (names may hold spaces), else the
  * second alone.  Needs rt__obj_rest(x, 1) first. */
 void rt__obj_statement_name(const lexer *x, const char **text, size_t *length);
+
+/* obj_normals.c: the vertex normals (docs/formats.md, OBJ, "Vertex
+ * normals").  rt__obj_normal reads a `vn`; rt__obj_corners turns the face's
+ * corners (polygon[i]: a `v`, 0-based; corner_normals[i]: a `vn` or -1)
+ * into positions in vertices[], copying a vertex used with another normal
+ * than its first (corners repeating the one before are dropped first, *n
+ * their new count); rt__obj_normals gives the scene's array (NULL: none, or
+ * out of memory: *failed); rt__obj_free_normals frees what they hold. */
+rt_status rt__obj_normal(reader *r);
+int rt__obj_vertex_added(reader *r);     /* 1, or 0 out of memory */
+rt_status rt__obj_corners(reader *r, int *n);
+rt_vec3 *rt__obj_normals(reader *r, int *failed);
+void rt__obj_free_normals(reader *r);
 
 /* mtl.c: `mtllib` and `usemtl`, and the materials at the end. */
 rt_status rt__obj_read_libraries(reader *r);

@@ -354,10 +354,10 @@ static rt_status element(reader *r, const ply_element *e)
         r->vertices = malloc(n * sizeof *r->vertices);
         if (r->h.vertex_colours)
             r->colours = malloc(3 * n);
-        if (r->h.has_normals && r->keep_normals)
+        if (r->h.has_normals)
             r->normals = malloc(n * sizeof *r->normals);
         if (r->vertices == NULL || (r->h.vertex_colours && !r->colours) ||
-            (r->h.has_normals && r->keep_normals && !r->normals))
+            (r->h.has_normals && !r->normals))
             return out_of_memory(r);
     } else if (e->kind == KIND_FACE && e->count > 0) {
         r->facet_capacity = (int)e->count;
@@ -474,6 +474,26 @@ static void say(reader *r)
                       "background");
 }
 
+/* A vertex normal that is not finite (a binary NaN or infinity) is none
+ * (zero, as a zero normal is), with one warning for them all. */
+static void finite_normals(reader *r)
+{
+    int bad = 0, first = -1;
+    for (int i = 0; r->normals != NULL && i < r->vertex_count; i++) {
+        rt_vec3 *n = &r->normals[i];
+        if (isfinite(n->x) && isfinite(n->y) && isfinite(n->z))
+            continue;
+        if (bad++ == 0)
+            first = i;
+        *n = (rt_vec3){0.0, 0.0, 0.0};
+    }
+    if (bad > 0)
+        rt__notes_add(&r->notes, r->name, 0, 0,
+                      "vertex %d: its normal is not finite, so it has none "
+                      "(its facets are flat)%s", first,
+                      bad > 1 ? " (and more like it)" : "");
+}
+
 static rt_status read_ply(reader *r, rt_scene **scene)
 {
     rt_status status = rt__ply_header_read(r->text, r->length, r->name, &r->h,
@@ -499,11 +519,13 @@ static rt_status read_ply(reader *r, rt_scene **scene)
                       rt__ply_offset(r), (size_t)(r->end - r->at));
     }
     say(r);
+    finite_normals(r);
     if (r->notes.failed)
         return out_of_memory(r);
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
     rt_light light;
+    rt__mesh_up(r->text, r->length, 1, r->options, &d);
     status =
         rt__mesh_auto_view(r->name, r->vertices, r->vertex_count, r->facets,
                            r->facet_count, r->options, &d, &light, r->error);
@@ -513,6 +535,7 @@ static rt_status read_ply(reader *r, rt_scene **scene)
     d.vertex_count = r->vertex_count;
     d.facets = r->facets;
     d.facet_count = r->facet_count;
+    d.normals = r->normals;
     rt_reading reading = {r->name,    r->facet_lines, &r->notes,
                           r->options, NULL,           NULL,
                           release_arrays, r};

@@ -203,8 +203,7 @@ typedef struct reader {
     rt_vec3 *vertices;
     int vertex_count;
     unsigned char *colours;     /* 3 a vertex, when the vertices have them */
-    rt_vec3 *normals;           /* when kept (keep_normals): none yet */
-    int keep_normals;           /* issue 30 shades with them; 0 until then */
+    rt_vec3 *normals;           /* when the vertices have nx, ny, nz */
     rt_facet_desc *facets;
     int *facet_lines;           /* ASCII only: each facet's line */
     int facet_count, facet_capacity;

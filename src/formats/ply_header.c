@@ -429,10 +429,6 @@ static rt_status end_header(parser *p, const words *w)
         }
         say_skipped(p, e);
     }
-    if (h->has_normals)
-        rt__notes_add(p->notes, p->name, 0, 0,
-                      "the vertex normals (nx, ny, nz) are ignored: facets "
-                      "are shaded flat");
     return RT_OK;
 }
 

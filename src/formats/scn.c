@@ -6,8 +6,8 @@
  * (comments and blank lines are skipped; lexer.h), knows the line and
  * column of every token, and stops at the first broken rule of the format
  * with a message "name:line:column: expected ..., found ...".  The values
- * themselves (coordinates, k, t, n, the lens, the camera, the number of
- * lights) are the builder's to judge: it reports a refusal as data, and
+ * themselves (coordinates, k, t, n, d, s, p, the lens, the camera, the
+ * number of lights) are the builder's to judge: it reports a refusal as data, and
  * locate() finds the token of the record and value it names.  Before
  * allocating for a count the reader checks that the file has that many
  * lines left, so a hostile count cannot make it allocate more than the
@@ -25,7 +25,7 @@
 #include "formats/lexer.h"
 #include "formats/reader.h"
 
-#define MAX_VALUES 10       /* the longest record: the screen with a lens */
+#define MAX_VALUES 12       /* the longest record: a facet with highlights */
 
 /* The grammar of .scn over the lexer: a record is a line, its values
  * separated by blanks and/or one comma. */
@@ -242,10 +242,11 @@ static rt_status lens_values(parser *p, double *aperture, double *focal)
     return status;
 }
 
-/* The optional `t [, n]` of a facet record (values 7 and 8), judged by
- * the builder but for n = 0: a description's 0 stands for 1, which a file
- * says by leaving n out. */
-static rt_status transparency(parser *p, rt_facet_desc *f)
+/* The optional `t [, n [, d [, s, p]]]` of a facet record (values 7 to
+ * 11), judged by the builder but for n = 0 and p = 0: a description's 0
+ * stands for 1, which a file says by leaving the value out.  s comes only
+ * with p. */
+static rt_status facet_options(parser *p, rt_facet_desc *f)
 {
     rt_status status = RT_OK;
     if (p->value_count > 7)
@@ -255,7 +256,69 @@ static rt_status transparency(parser *p, rt_facet_desc *f)
         if (status == RT_OK && f->refractive_index == 0.0)
             status = fail_at(p, RT_ERR_RANGE, RT_RULE_N, &p->values[8]);
     }
+    if (status == RT_OK && p->value_count > 9) {
+        status = number(p, 9, &f->diffuse);
+        f->diffuse_given = 1;
+    }
+    if (status == RT_OK && p->value_count == 11) {
+        const rt_token *last = &p->values[10];
+        return rt__error_set(p->error, RT_ERR_SYNTAX, p->name, p->record_line,
+                             last->column + (int)last->length,
+                             "expected the highlight exponent `p` after the "
+                             "highlight weight `s`, found the end of the "
+                             "line");
+    }
+    if (status == RT_OK && p->value_count > 11) {
+        status = number(p, 10, &f->highlight);
+        if (status == RT_OK)
+            status = number(p, 11, &f->highlight_exponent);
+        if (status == RT_OK && f->highlight_exponent == 0.0)
+            status = fail_at(p, RT_ERR_RANGE, RT_RULE_P, &p->values[11]);
+    }
     return status;
+}
+
+/*
+ * A vertex record `x, y, z [, nx, ny, nz]` into vertex i; a normal, which
+ * must not be zero (the description's zero stands for none, which a file
+ * says by leaving it out), goes to *normals, allocated (zeroed) for
+ * `count` vertices at the first.
+ */
+static rt_status vertex_record(parser *p, int i, int count, rt_vec3 *vertex,
+                               rt_vec3 **normals)
+{
+    static const char what[] = "a vertex `x, y, z [, nx, ny, nz]`";
+    rt_status status = expect_values(p, 3, 6, what);
+    if (status == RT_OK)
+        status = point(p, 0, vertex);
+    if (status != RT_OK || p->value_count == 3)
+        return status;
+    /* Something that is not a number is named before the count. */
+    for (int j = 3; j < p->value_count; j++) {
+        double ignored;
+        if ((status = number(p, j, &ignored)) != RT_OK)
+            return status;
+    }
+    if (p->value_count < 6)
+        return fail_at(p, RT_ERR_SYNTAX,
+                       "3 values for a vertex `x, y, z`, or 6 with its "
+                       "normal `x, y, z, nx, ny, nz`",
+                       &p->values[3]);
+    rt_vec3 n;
+    if ((status = point(p, 3, &n)) != RT_OK)
+        return status;
+    if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+        return fail_at(p, RT_ERR_RANGE,
+                       "a non-zero vertex normal `nx, ny, nz`",
+                       &p->values[3]);
+    if (*normals == NULL) {
+        *normals = calloc((size_t)count, sizeof **normals);
+        if (*normals == NULL)
+            return rt__error_set(p->error, RT_ERR_NOMEM, p->name, 0, 0,
+                                 "out of memory");
+    }
+    (*normals)[i] = n;
+    return RT_OK;
 }
 
 /* The token of value `value` (from 0, commas not counted) of the record
@@ -301,12 +364,17 @@ static int locate(void *user, const rt_refusal *r, rt_token *token)
         return record_value(p, 1, r->field == RT_FIELD_APERTURE ? 8 : 9,
                             token);
     case RT_ITEM_VERTEX:
-        return record_value(p, vertices + r->index, r->part, token);
+        return record_value(p, vertices + r->index,
+                            (r->field == RT_FIELD_NORMAL ? 3 : 0) + r->part,
+                            token);
     case RT_ITEM_FACET: {
         int value = r->field == RT_FIELD_CORNER ? r->part
                     : r->field == RT_FIELD_K    ? 3
                     : r->field == RT_FIELD_T    ? 7
                     : r->field == RT_FIELD_N    ? 8
+                    : r->field == RT_FIELD_D    ? 9
+                    : r->field == RT_FIELD_S    ? 10
+                    : r->field == RT_FIELD_P    ? 11
                                                 : -1;
         return value >= 0 && record_value(p, facets + r->index, value, token);
     }
@@ -329,6 +397,7 @@ static int locate(void *user, const rt_refusal *r, rt_token *token)
  * the scene's records are made, before its kernel. */
 typedef struct scn_arrays {
     rt_vec3 *vertices;
+    rt_vec3 *normals;       /* NULL until a vertex has one */
     rt_facet_desc *facets;
     int *facet_lines;
 } scn_arrays;
@@ -337,9 +406,11 @@ static void release_arrays(void *user)
 {
     scn_arrays *a = user;
     free(a->vertices);
+    free(a->normals);
     free(a->facets);
     free(a->facet_lines);
     a->vertices = NULL;
+    a->normals = NULL;
     a->facets = NULL;
     a->facet_lines = NULL;
 }
@@ -350,7 +421,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
     rt_status status;
     rt_scene_desc d;
     memset(&d, 0, sizeof d);
-    scn_arrays a = {NULL, NULL, NULL};
+    scn_arrays a = {NULL, NULL, NULL, NULL};
     rt_light *lights = NULL;
 
     TRY(expect_record(p, 3, "the observer `x, y, z`"));
@@ -368,11 +439,10 @@ static rt_status parse(parser *p, const rt_load_options *options,
                         sizeof *a.vertices);
     if (a.vertices == NULL)
         goto nomem;
-    for (int i = 0; i < d.vertex_count; i++) {
-        TRY(expect_record(p, 3, "a vertex `x, y, z`"));
-        TRY(point(p, 0, &a.vertices[i]));
-    }
+    for (int i = 0; i < d.vertex_count; i++)
+        TRY(vertex_record(p, i, d.vertex_count, &a.vertices[i], &a.normals));
     d.vertices = a.vertices;
+    d.normals = a.normals;
 
     TRY(count(p, "facet", &d.facet_count));
     p->facet_count = d.facet_count;
@@ -383,8 +453,9 @@ static rt_status parse(parser *p, const rt_load_options *options,
         goto nomem;
     for (int i = 0; i < d.facet_count; i++) {
         rt_facet_desc *f = &a.facets[i];
-        TRY(expect_values(p, 7, 9,
-                          "a facet `a, b, c, k, R, G, B [, t [, n]]`"));
+        TRY(expect_values(p, 7, 12,
+                          "a facet `a, b, c, k, R, G, B [, t [, n [, d "
+                          "[, s, p]]]]`"));
         for (int j = 0; j < 3; j++) {
             int vertex = 0;
             TRY(integer(p, j, 1, d.vertex_count, "a vertex index", &vertex));
@@ -392,7 +463,7 @@ static rt_status parse(parser *p, const rt_load_options *options,
         }
         TRY(number(p, 3, &f->reflection));
         TRY(color(p, 4, &f->color));
-        TRY(transparency(p, f));
+        TRY(facet_options(p, f));
         a.facet_lines[i] = p->record_line;
     }
     d.facets = a.facets;

@@ -4,7 +4,9 @@
  *
  * Every number is printed with 17 significant digits, which reads back as
  * the same double: a scene converted and read again renders the same bytes
- * as the scene itself.  What the course's records cannot hold is reported
+ * as the scene itself.  The vertex normals written are the scene's unit
+ * ones, which the builder keeps as they are when read again (it leaves a
+ * vector of unit length to within rounding alone).  What the course's records cannot hold is reported
  * to the caller (RT_SCN_DROPPED_ bits) rather than approximated silently.
  */
 #include <stdarg.h>
@@ -74,8 +76,16 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
     else if (c->aperture > 0)
         lost |= RT_SCN_DROPPED_LENS;
     put(&o, "\n%d\n", info.vertex_count);
-    for (int i = 0; i < info.vertex_count; i++)
-        put_point(&o, rt_scene_vertex(scene, i), "\n");
+    for (int i = 0; i < info.vertex_count; i++) {
+        rt_vec3 n = rt_scene_vertex_normal(scene, i);
+        int normal = n.x != 0.0 || n.y != 0.0 || n.z != 0.0;
+        put_point(&o, rt_scene_vertex(scene, i),
+                  normal && extended ? ", " : "\n");
+        if (normal && extended)
+            put_point(&o, n, "\n");
+        else if (normal)
+            lost |= RT_SCN_DROPPED_NORMALS;
+    }
     put(&o, "%d\n", info.facet_count);
     for (int i = 0; i < info.facet_count; i++) {
         rt_facet_info f = {.size = sizeof f};
@@ -83,13 +93,25 @@ rt_status rt_scene_write_scn(const rt_scene *scene, int extended,
         put(&o, "%d, %d, %d, %.17g, %d, %d, %d", f.vertex[0] + 1,
             f.vertex[1] + 1, f.vertex[2] + 1, f.reflection, f.color.r,
             f.color.g, f.color.b);
+        /* The optional values go as far as the last one needed: t, n
+         * for glass, then d when it is not 1 - k - t, then s, p. */
         int glass = f.transparency > 0 || f.refractive_index != 1.0;
-        if (glass && extended)
-            put(&o, ", %.17g, %.17g", f.transparency, f.refractive_index);
-        else if (glass)
-            lost |= RT_SCN_DROPPED_TRANSPARENCY;
-        if (!scn_diffuse(&f))
-            lost |= RT_SCN_DROPPED_DIFFUSE;
+        int diffuse = !scn_diffuse(&f);
+        int highlight = f.highlight != 0.0 || f.highlight_exponent != 1.0;
+        if (extended) {
+            if (glass || diffuse || highlight)
+                put(&o, ", %.17g, %.17g", f.transparency,
+                    f.refractive_index);
+            if (diffuse || highlight)
+                put(&o, ", %.17g", f.diffuse);
+            if (highlight)
+                put(&o, ", %.17g, %.17g", f.highlight,
+                    f.highlight_exponent);
+        } else {
+            lost |= (glass ? RT_SCN_DROPPED_TRANSPARENCY : 0u) |
+                    (diffuse ? RT_SCN_DROPPED_DIFFUSE : 0u) |
+                    (f.highlight != 0.0 ? RT_SCN_DROPPED_HIGHLIGHTS : 0u);
+        }
         put(&o, "\n");
     }
     put(&o, "%d, %d, %d\n", info.background.r, info.background.g,

@@ -21,6 +21,16 @@
  * warning.
  *
  * Polygons go to the readers' one triangulator (triangulate.h).
+ *
+ * Every vertex of a curved surface carries the exact normal of the surface
+ * there (tessellate.h): a sphere's is the unit point it was scaled from; a
+ * cone's, at azimuth phi, is normalise(h rho + (r0 - r1) w), rho = u cos phi
+ * + v sin phi the radial direction, w the unit axis and h the height (the
+ * side's generator is h w + (r1 - r0) rho, and this is perpendicular to it
+ * and to the circle's tangent).  A cone's point end (radius 0) has no one
+ * normal: it is one vertex per segment, at the same point, with the normal
+ * of the segment's middle generator.  The positions are those the surface
+ * had before it had normals, computed the same way.
  */
 #include "formats/tessellate.h"
 
@@ -43,6 +53,7 @@
 void rt__tess_mesh_free(rt_tess_mesh *mesh)
 {
     free(mesh->vertices);
+    free(mesh->normals);
     free(mesh->facets);
     free(mesh->facet_lines);
     memset(mesh, 0, sizeof *mesh);
@@ -82,6 +93,15 @@ int rt__tess_reserve(rt_tess_mesh *mesh, double vertices, double facets)
     if (grow((void **)&mesh->vertices, &mesh->vertex_capacity, nv,
              sizeof *mesh->vertices, (double)INT_MAX) != 0)
         return -1;
+    if (mesh->normals != NULL && mesh->normal_capacity < mesh->vertex_capacity) {
+        rt_vec3 *normals = realloc(mesh->normals,
+                                   (size_t)mesh->vertex_capacity *
+                                       sizeof *mesh->normals);
+        if (normals == NULL)
+            return -1;
+        mesh->normals = normals;
+        mesh->normal_capacity = mesh->vertex_capacity;
+    }
     int lines_capacity = mesh->facet_capacity;
     if (grow((void **)&mesh->facets, &mesh->facet_capacity, nf,
              sizeof *mesh->facets, (double)RT_TESS_MAX_FACETS) != 0)
@@ -100,8 +120,33 @@ int rt__tess_reserve(rt_tess_mesh *mesh, double vertices, double facets)
     return 0;
 }
 
+/* The mesh's normals, made (zero for the vertices it has) for every
+ * vertex it has room for: 0, or -1 when out of memory.  Called after
+ * rt__tess_reserve, which keeps them as large as the vertices. */
+static int keep_normals(rt_tess_mesh *mesh)
+{
+    if (mesh->normals != NULL)
+        return 0;
+    size_t room = mesh->vertex_capacity > 0 ? (size_t)mesh->vertex_capacity : 1;
+    mesh->normals = calloc(room, sizeof *mesh->normals);
+    if (mesh->normals == NULL)
+        return -1;
+    mesh->normal_capacity = (int)room;
+    return 0;
+}
+
 static int add_vertex(rt_tess_mesh *mesh, rt_vec3 p)
 {
+    if (mesh->normals != NULL)
+        mesh->normals[mesh->vertex_count] = (rt_vec3){0.0, 0.0, 0.0};
+    mesh->vertices[mesh->vertex_count] = p;
+    return mesh->vertex_count++;
+}
+
+/* A vertex with its normal (keep_normals called). */
+static int add_normal_vertex(rt_tess_mesh *mesh, rt_vec3 p, rt_vec3 n)
+{
+    mesh->normals[mesh->vertex_count] = n;
     mesh->vertices[mesh->vertex_count] = p;
     return mesh->vertex_count++;
 }
@@ -271,16 +316,23 @@ int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
                     int line)
 {
     if (rt__tess_reserve(mesh, rt__tess_sphere_vertex_count(bands),
-                         rt__tess_sphere_facet_count(bands)) != 0)
+                         rt__tess_sphere_facet_count(bands)) != 0 ||
+        keep_normals(mesh) != 0)
         return -1;
     int m = 2 * bands;
-    int north = add_vertex(mesh, v3_add(center, v3(0, 0, radius)));
+    /* the normals face as the facets are wound */
+    double side = inward ? -1.0 : 1.0;
+    int north = add_normal_vertex(mesh, v3_add(center, v3(0, 0, radius)),
+                                  v3(0, 0, side));
     int first = mesh->vertex_count;     /* ring i (1..bands-1), point j */
     for (int i = 1; i < bands; i++)
-        for (int j = 0; j < m; j++)
-            add_vertex(mesh, v3_add(center, v3_scale(unit_point(bands, i, j),
-                                                     radius)));
-    int south = add_vertex(mesh, v3_add(center, v3(0, 0, -radius)));
+        for (int j = 0; j < m; j++) {
+            rt_vec3 unit = unit_point(bands, i, j);
+            add_normal_vertex(mesh, v3_add(center, v3_scale(unit, radius)),
+                              v3_scale(unit, side));
+        }
+    int south = add_normal_vertex(mesh, v3_add(center, v3(0, 0, -radius)),
+                                  v3(0, 0, -side));
 #define RING(i, j) (first + ((i) - 1) * m + ((j) % m))
     for (int j = 0; j < m; j++)
         add_surface_facet(mesh, facet, line, north, RING(1, j),
@@ -303,6 +355,16 @@ int rt__tess_sphere(rt_tess_mesh *mesh, rt_vec3 center, double radius,
     return 0;
 }
 
+/* The unit normal of a cone's side at azimuth phi (the comment at the top),
+ * times `side` (-1: facing inward). */
+static rt_vec3 cone_normal(rt_vec3 u, rt_vec3 v, rt_vec3 w, double height,
+                           double narrowing, double phi, double side)
+{
+    rt_vec3 rho = v3_add(v3_scale(u, cos(phi)), v3_scale(v, sin(phi)));
+    rt_vec3 n = v3_add(v3_scale(rho, height), v3_scale(w, narrowing));
+    return v3_scale(v3_normalize(n), side);
+}
+
 double rt__tess_cone_facet_count(int segments, double r0, double r1)
 {
     return r0 > 0 && r1 > 0 ? 2.0 * segments : (double)segments;
@@ -314,7 +376,8 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
 {
     int n = segments;
     if (rt__tess_reserve(mesh, 2.0 * n,
-                         rt__tess_cone_facet_count(n, r0, r1)) != 0)
+                         rt__tess_cone_facet_count(n, r0, r1)) != 0 ||
+        keep_normals(mesh) != 0)
         return -1;
     rt_vec3 w = v3_normalize(v3_sub(apex, base));
     /* u perpendicular to w, from the axis least aligned with it */
@@ -323,24 +386,32 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
                                                                    : v3(0, 0, 1);
     rt_vec3 u = v3_normalize(v3_cross(w, e));
     rt_vec3 v = v3_cross(w, u);         /* (u, v, w) right-handed */
+    double height = v3_length(v3_sub(apex, base));
+    double side = inward ? -1.0 : 1.0;
+    /* A circle's points, or at a point end (radius 0) one copy of the
+     * point per segment, its normal at the segment's middle. */
     int b0 = mesh->vertex_count;
-    if (r0 > 0)
-        for (int j = 0; j < n; j++) {
-            double phi = 2.0 * PI * j / n;
-            add_vertex(mesh, v3_add(base, v3_add(v3_scale(u, r0 * cos(phi)),
-                                                 v3_scale(v, r0 * sin(phi)))));
-        }
-    else
-        add_vertex(mesh, base);
+    for (int j = 0; j < n; j++) {
+        double phi = 2.0 * PI * j / n;
+        double mid = 2.0 * PI * (j + 0.5) / n;
+        rt_vec3 at = r0 > 0 ? v3_add(base, v3_add(v3_scale(u, r0 * cos(phi)),
+                                                  v3_scale(v, r0 * sin(phi))))
+                            : base;
+        add_normal_vertex(mesh, at,
+                          cone_normal(u, v, w, height, r0 - r1,
+                                      r0 > 0 ? phi : mid, side));
+    }
     int a0 = mesh->vertex_count;
-    if (r1 > 0)
-        for (int j = 0; j < n; j++) {
-            double phi = 2.0 * PI * j / n;
-            add_vertex(mesh, v3_add(apex, v3_add(v3_scale(u, r1 * cos(phi)),
-                                                 v3_scale(v, r1 * sin(phi)))));
-        }
-    else
-        add_vertex(mesh, apex);
+    for (int j = 0; j < n; j++) {
+        double phi = 2.0 * PI * j / n;
+        double mid = 2.0 * PI * (j + 0.5) / n;
+        rt_vec3 at = r1 > 0 ? v3_add(apex, v3_add(v3_scale(u, r1 * cos(phi)),
+                                                  v3_scale(v, r1 * sin(phi))))
+                            : apex;
+        add_normal_vertex(mesh, at,
+                          cone_normal(u, v, w, height, r0 - r1,
+                                      r1 > 0 ? phi : mid, side));
+    }
     for (int j = 0; j < n; j++) {
         int k = (j + 1) % n;
         if (cancelled(mesh, 2L * j - 2, 2L * j))
@@ -351,9 +422,11 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
             add_surface_facet(mesh, facet, line, b0 + j, a0 + k, a0 + j,
                               inward);
         } else if (r0 > 0) {
-            add_surface_facet(mesh, facet, line, b0 + j, b0 + k, a0, inward);
+            add_surface_facet(mesh, facet, line, b0 + j, b0 + k, a0 + j,
+                              inward);
         } else {
-            add_surface_facet(mesh, facet, line, b0, a0 + k, a0 + j, inward);
+            add_surface_facet(mesh, facet, line, b0 + j, a0 + k, a0 + j,
+                              inward);
         }
     }
     return 0;
@@ -393,11 +466,23 @@ int rt__tess_polygon_convex(const rt_vec3 *points, int n)
 int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
                      const rt_facet_desc *facet, int line, int *irregular)
 {
-    if (rt__tess_reserve(mesh, n, n - 2) != 0)
+    return rt__tess_patch(mesh, points, NULL, n, facet, line, irregular);
+}
+
+int rt__tess_patch(rt_tess_mesh *mesh, const rt_vec3 *points,
+                   const rt_vec3 *normals, int n, const rt_facet_desc *facet,
+                   int line, int *irregular)
+{
+    if (rt__tess_reserve(mesh, n, n - 2) != 0 ||
+        (normals != NULL && keep_normals(mesh) != 0))
         return -1;
     int first = mesh->vertex_count;
-    for (int i = 0; i < n; i++)
-        add_vertex(mesh, points[i]);
+    for (int i = 0; i < n; i++) {
+        if (normals != NULL)
+            add_normal_vertex(mesh, points[i], normals[i]);
+        else
+            add_vertex(mesh, points[i]);
+    }
     if (n == 3) {
         if (rt__triangle_has_area(points[0], points[1], points[2]))
             add_facet(mesh, facet, line, first, first + 1, first + 2, 0);

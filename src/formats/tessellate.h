@@ -5,7 +5,11 @@
  * facets is farther from the true surface than `tolerance` times its radius
  * (measured along the radius), and every facet is wound counter-clockwise
  * seen from outside (outward normal (b - a) x (c - a)) unless asked to face
- * inward.  A curved surface emits no zero-area facet (it counts them in
+ * inward.  Every vertex of a curved surface carries the surface's exact unit
+ * normal there, facing as the facets are wound (a cone's point end is one
+ * vertex per segment, each with the normal of its segment's middle); a
+ * patch's vertices carry the normals given.  A curved surface emits no
+ * zero-area facet (it counts them in
  * the mesh instead), and polls the mesh's cancellation flag as it goes.
  */
 #ifndef RAYTRACE_TESSELLATE_H
@@ -39,6 +43,9 @@ double rt__tess_budget(size_t bytes);
 typedef struct rt_tess_mesh {
     rt_vec3 *vertices;
     int vertex_count, vertex_capacity;
+    rt_vec3 *normals;       /* NULL until a vertex has a normal; then one a
+                               vertex (zero: none), as rt_scene_desc's */
+    int normal_capacity;
     rt_facet_desc *facets;
     int *facet_lines;
     int facet_count, facet_capacity;
@@ -111,6 +118,12 @@ int rt__tess_cone(rt_tess_mesh *mesh, rt_vec3 base, double r0, rt_vec3 apex,
  * 0, or -1 out of memory. */
 int rt__tess_polygon(rt_tess_mesh *mesh, const rt_vec3 *points, int n,
                      const rt_facet_desc *facet, int line, int *irregular);
+
+/* The same with a normal at each vertex (as given; NULL: none), which the
+ * triangles keep at their corners (NFF's `pp`). */
+int rt__tess_patch(rt_tess_mesh *mesh, const rt_vec3 *points,
+                   const rt_vec3 *normals, int n, const rt_facet_desc *facet,
+                   int line, int *irregular);
 
 /* Whether the polygon is convex in the plane of its normal (collinear
  * vertices allowed). */

@@ -64,6 +64,28 @@ static int copy_geometry(const rt_scene *loaded, const rt_scene_info *info,
     return 1;
 }
 
+/* What of the model beyond the handout the facets and vertices use (the
+ * handout's facet has k and a colour, d = 1 - k, and flat normals): bits
+ * 1 a diffuse weight of its own, 2 a highlight, 4 a vertex normal. */
+static int model_extensions(const rt_scene *loaded, const rt_scene_info *info)
+{
+    int used = 0;
+    for (int i = 0; i < info->facet_count; i++) {
+        rt_facet_info f = {.size = sizeof f};
+        rt_scene_facet(loaded, i, &f);
+        if (f.diffuse != 1.0 - f.reflection - f.transparency)
+            used |= 1;
+        if (f.highlight != 0.0 || f.highlight_exponent != 1.0)
+            used |= 2;
+    }
+    for (int i = 0; i < info->vertex_count && !(used & 4); i++) {
+        rt_vec3 n = rt_scene_vertex_normal(loaded, i);
+        if (n.x != 0.0 || n.y != 0.0 || n.z != 0.0)
+            used |= 4;
+    }
+    return used;
+}
+
 int parse(char *fname, scene *s)
 {
     if (s != NULL)
@@ -84,15 +106,20 @@ int parse(char *fname, scene *s)
 
     rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(loaded, &info);
+    int used = model_extensions(loaded, &info);
     if (info.light_count > 1 || info.transparent_facet_count > 0 ||
-        info.camera.aperture > 0.0) {
+        info.camera.aperture > 0.0 || used != 0) {
         fprintf(stderr,
-                "%s: uses extensions beyond the handout (%s%s%s); the "
-                "course's scene has one light, no transparency and a pinhole "
-                "camera: render it with rt-export\n",
+                "%s: uses extensions beyond the handout (%s%s%s%s%s%s); the "
+                "course's scene has one light, no transparency, a pinhole "
+                "camera, d = 1 - k, no highlights and flat facets: render "
+                "it with rt-export\n",
                 fname, info.light_count > 1 ? "several lights " : "",
                 info.transparent_facet_count > 0 ? "transparent facets " : "",
-                info.camera.aperture > 0.0 ? "a lens aperture" : "");
+                info.camera.aperture > 0.0 ? "a lens aperture " : "",
+                used & 1 ? "diffuse weights " : "",
+                used & 2 ? "highlights " : "",
+                used & 4 ? "vertex normals" : "");
         rt_scene_destroy(loaded);
         return RT_ERR_FORMAT;
     }

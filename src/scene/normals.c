@@ -3,6 +3,7 @@
  * "Smooth shading and highlights"): copied from a description and
  * normalised, which facets they make smooth, and their accessor.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -12,11 +13,18 @@
 
 /* v / |v| for a finite non-zero v, scaled first by its largest
  * component so that neither tiny nor huge vectors lose their length;
- * the zero vector stays zero. */
+ * the zero vector stays zero.  A v already of unit length to within
+ * rounding (|v.v - 1| <= 8 DBL_EPSILON; what this function returns is
+ * within 4) is kept as given, so that normalising is idempotent: a
+ * scene written with its unit normals (rt_scene_write_scn) reads back
+ * with the same bits. */
 static rt_vec3 unit_normal(rt_vec3 v)
 {
     double m = v3_max_abs(v);
     if (m == 0.0)
+        return v;
+    if (m <= 1.0 &&
+        fabs(v.x * v.x + v.y * v.y + v.z * v.z - 1.0) <= 8 * DBL_EPSILON)
         return v;
     rt_vec3 w = {v.x / m, v.y / m, v.z / m};
     double length = sqrt(w.x * w.x + w.y * w.y + w.z * w.z);

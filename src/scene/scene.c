@@ -459,6 +459,8 @@ rt_status rt__scene_build_releasing(const rt_scene_desc *d, const char *name,
         s->camera.aperture = d->aperture;
     if (d->focal_distance > 0.0)
         s->camera.focal_distance = d->focal_distance;
+    s->up.axis = d->up_axis, s->up.cue = d->up_cue;
+    s->up.line = d->up_cue_line;
 
     /* The reader's warnings, then the builder's, stored as they come. */
     rt_notes warnings;
@@ -584,7 +586,8 @@ void rt_scene_get_info(const rt_scene *s, rt_scene_info *info)
             .light_count = s->light_count,
             .transparent_facet_count = s->transparent_count,
             .smooth_facet_count = s->smooth_count,
-            .highlight_facet_count = s->highlight_count};
+            .highlight_facet_count = s->highlight_count, .up_axis = s->up.axis,
+            .up_cue = s->up.cue, .up_cue_line = s->up.line};
     rt__sized_fill(info, &full, sizeof full);
 }
 

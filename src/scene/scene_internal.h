@@ -73,6 +73,11 @@ struct rt_scene {
     int reflective_count;   /* live facets with k > 0 */
     int transparent_count;  /* live facets with t > 0 */
     int smooth_count;       /* live facets with three vertex normals */
+    struct {                /* the reader's automatic camera (info) */
+        rt_up_axis axis;
+        rt_up_cue cue;
+        int line;
+    } up;
     int highlight_count;    /* live facets with s > 0 */
     rt_scene_source *sources;   /* the files the load read (names owned) */
     int source_count;
