@@ -52,7 +52,7 @@ everywhere:
 - total internal reflection: POV-Ray adds the internally reflected ray
   unweighted; we weight it by t;
 - a highlight with phong_size >= 60 is cut where R·L <= 0.0008 (below
-  1e-186: invisible);
+  1e-185: invisible);
 - the lens (a screen record's aperture and focus) is not carried over:
   POV-Ray's focal_blur samples differently (a warning says so);
 - d > 0 with t = 1 cannot be written (POV-Ray's diffuse vanishes with the
