@@ -5,7 +5,7 @@
 #   tools/bench/povray-times.sh BUILD_DIR [SCENE.scn ...]
 #
 # Default scenes: ../shared/spd-scenes/*.scn.  Each is converted by
-# tools/bench/scn2pov.py (one mesh of triangles, one light, max_trace_level =
+# tools/bench/scn2pov.py (the same triangles, every light, max_trace_level =
 # depth + 1) and rendered by both at SIZE (default 400x400) with 2 threads;
 # the table gives POV-Ray's "Trace Time" (its start-up and
 # parsing excluded) and rt-export's render time (--stats) with brute force
