@@ -105,7 +105,7 @@ static void json_escape(sink *k, const char *text)
     while (*c) {
         size_t length;
         long code = decode(c, &length);
-        char escape[16];
+        char escape[24];   /* "\\u" and up to 16 hex digits of a long */
         if (code == INVALID) {
             emit(k, "\\ufffd", 6);
         } else if (code == '"' || code == '\\') {
