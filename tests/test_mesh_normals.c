@@ -425,8 +425,10 @@ START_TEST(the_up_axis_comes_from_a_comment_an_exporter_or_the_option)
                       "case %zu: axis %d cue %d line %d", i,
                       (int)info.up_axis, (int)info.up_cue, info.up_cue_line);
         /* the image's up is the model's */
-        rt_vec3 u = info.camera.up, e = {0, 0, 0};
-        (&e.x)[(cases[i].axis - 1) % 3] = cases[i].axis > RT_UP_Z ? -1 : 1;
+        rt_vec3 u = info.camera.up;
+        double sign = cases[i].axis > RT_UP_Z ? -1 : 1, axis[3] = {0, 0, 0};
+        axis[(cases[i].axis - 1) % 3] = sign;
+        rt_vec3 e = {axis[0], axis[1], axis[2]};
         double along = (u.x * e.x + u.y * e.y + u.z * e.z) /
                        sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
         ck_assert_msg(along > 0.8, "case %zu: the image's up leans %g", i,
