@@ -57,8 +57,8 @@ configure_package_config_file(
   "${PROJECT_BINARY_DIR}/raytraceConfig.cmake"
   INSTALL_DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")
 # Compatible versions follow the soname (src/CMakeLists.txt): before 1.0 a
-# minor release may break the API and ABI, so find_package(raytrace 0.4)
-# takes any 0.4.x and no 0.3 or 0.5; from 1.0 on, the same major version.
+# minor release may break the API and ABI, so find_package(raytrace 0.5)
+# takes any 0.5.x and no 0.4 or 0.6; from 1.0 on, the same major version.
 if(PROJECT_VERSION_MAJOR EQUAL 0)
   set(_rt_compatibility SameMinorVersion)
 else()

@@ -203,11 +203,17 @@ RT_API rt_rgb8 rt_debug_facet_color(int index);
 /*
  * Writes view `view` of the render with `options` (NULL: defaults) into
  * `image`, of the size rt_render would write (regions apply); `light` is the
- * light of RT_VIEW_SHADOW and RT_VIEW_NS (ignored by the others).  Same
- * statuses as rt_render but RT_ERR_CANCELLED, plus RT_ERR_ARGUMENT for an
- * unknown view, a light outside 0..light_count-1, or an image whose stride
- * is less than 3 x its width.  It runs on the calling
- * thread and ignores on_row, cancel and stats.  Thread-safe as rt_render.
+ * light of RT_VIEW_SHADOW and RT_VIEW_NS (ignored by the others).  Since
+ * 0.5 a view is a render like rt_render's: on options->threads, rows taken
+ * dynamically, on_row called for each finished row (for RT_VIEW_DEPTH,
+ * whose greys depend on the whole image, once every row's t is known and
+ * the rows are written), options->cancel polled before each pixel, and
+ * options->stats filled with what the view traced (camera rays; the
+ * shadow, reflection and refraction rays of each pixel's first sample's
+ * tree).  Same statuses as rt_render (RT_ERR_CANCELLED included: the rows
+ * not reported hold what they held), plus RT_ERR_ARGUMENT for an unknown
+ * view, a light outside 0..light_count-1, or an image whose stride is
+ * less than 3 x its width.  Thread-safe as rt_render.
  */
 RT_API rt_status rt_render_view(const rt_scene *scene,
                                 const rt_render_options *options,

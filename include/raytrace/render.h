@@ -282,6 +282,17 @@ typedef struct rt_render_options {
                                image holds just it, and its pixels are those
                                the whole image has there, byte for byte.
                                Zero (the default): the whole image */
+    /* Since 0.5: */
+    const rt_camera *camera;    /* NULL (the default): the scene's camera;
+                                   else this one (rt_scene_look makes one),
+                                   its width and height the image's default
+                                   size, its aperture and focal distance the
+                                   lens's; read during the call only.  Its
+                                   vectors must be finite, AB and AC
+                                   non-zero, O off the screen (else
+                                   RT_ERR_ARGUMENT).  Renders, views and
+                                   explanations with other cameras reuse
+                                   the scene's kernel and accelerator */
 } rt_render_options;
 
 /* Sets size to sizeof(rt_render_options) and the defaults: max_depth 5,

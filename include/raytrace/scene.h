@@ -479,6 +479,42 @@ RT_API const rt_warning *rt_scene_warning(const rt_scene *scene, int i);
  * Thread-safe. */
 RT_API rt_ray rt_camera_ray(const rt_camera *camera, int i, int j);
 
+/*
+ * Since 0.5: a view of a scene, as rt-export's --look-from, --look-at, --up
+ * and --fov give it when all four are given (docs/rendering-model.md, "The
+ * camera"; docs/viewer.md, "Moving the camera").
+ */
+typedef struct rt_look {
+    rt_vec3 look_from;      /* the observer O, scene units */
+    rt_vec3 look_at;        /* the screen centre A */
+    rt_vec3 up;             /* up in the image: any length, not along A - O */
+    double fov;             /* horizontal field of view in degrees, in
+                               (0, 180) */
+} rt_look;
+
+/*
+ * The camera `scene` would have had, had it been loaded with the four view
+ * options of `look` (rt_load_options' look_from, look_at, up and fov, all
+ * given), bit for bit: observer O = look_from, screen centre A = look_at, B =
+ * A + |AO| tan(fov / 2) unit((A - O) x up), then the camera of those three
+ * points; the scene's image size, aperture and focal distance (|AO| of the
+ * new camera unless the file set one).  *screen_point (may be NULL)
+ * receives that B: the third point of a .scn file's first line that gives
+ * this camera.  Returns RT_OK, or RT_ERR_ARGUMENT with the reason in
+ * *error (may be NULL) for a NULL argument, a point that is not finite, a
+ * fov outside (0, 180), look_at equal to look_from or up along the view;
+ * *camera is then untouched.  Thread-safe.
+ */
+RT_API rt_status rt_scene_look(const rt_scene *scene, const rt_look *look,
+                               rt_camera *camera, rt_vec3 *screen_point,
+                               rt_error *error);
+
+/* The look of `camera`: from its observer at its screen centre, up along
+ * its up half-height AC, fov 2 atan(|AB| / |AO|) in degrees.  rt_scene_look
+ * of it gives the same view (to rounding: not the same bits).  NULL
+ * arguments: no-op.  Thread-safe. */
+RT_API void rt_camera_get_look(const rt_camera *camera, rt_look *look);
+
 /* A ray-facet intersection. */
 typedef struct rt_hit {
     double t;               /* ray parameter: origin + t * direction */
