@@ -31,6 +31,7 @@
 
 static double scale = 1.0;      /* --scale */
 static int watch;               /* --watch */
+static int stats;               /* --stats */
 
 static const cli_option view_options[] = {
     {"scale", 0, "F", CLI_NUMBER_CLOSED, VIEW_MIN_SCALE, VIEW_MAX_SCALE,
@@ -41,6 +42,11 @@ static const cli_option view_options[] = {
     {"watch", 0, NULL, CLI_FLAG, 0, 0, &watch,
      "reload and render the scene whenever its file changes (looked at "
      "every 250 ms)"},
+    {"stats", 0, NULL, CLI_FLAG, 0, 0, &stats,
+     "after each render, print on stderr how long it took to the end of "
+     "each pass (1/8, 1/4, 1/2 of the resolution, full), when its first "
+     "frame was shown, and the rays it cast; for a render cancelled by a "
+     "restart, the pass it reached"},
     CLI_OPTIONS_END,
 };
 
@@ -55,9 +61,11 @@ static const cli_option view_options[] = {
 
 static const cli_program program = {
     PROGRAM, "[SCENE]",
-    "Shows SCENE in a window while it renders; each finished row appears at\n"
-    "once.  The title shows the scene, the progress and the elapsed time,\n"
-    "then the total time.  Without SCENE the window waits for a scene file\n"
+    "Shows SCENE in a window while it renders, coarse to fine: at 1/8, 1/4\n"
+    "and 1/2 of the resolution, then in full (then with --samples), each\n"
+    "row appearing as soon as a pass finishes it.  The title shows the\n"
+    "scene, the pass, the progress and the elapsed time, then the total\n"
+    "time.  Without SCENE the window waits for a scene file\n"
     "dropped on it.  The window needs a display (X11 or Wayland);\n"
     "rt-export renders without one.",
     "\nWithout -o or --format, S saves PNG.  -o OUT is a file (not `-').\n"
@@ -85,7 +93,9 @@ static const cli_program program = {
     "  right click, Esc  clear the explanation\n"
     "  N normal, D depth, F facet index, L shadow term E (again: next\n"
     "          light), B bounces, I N.S (again: next light): debug views\n"
-    "          of the same render, named in the title; V or 0: the picture\n"
+    "          of the same render, named in the title, rendered like the\n"
+    "          picture (coarse to fine, cancelled by the next key); V or\n"
+    "          0: the picture (at once when it had finished)\n"
     "  H, F1   the keys" TEXT_IN_WINDOW_HELP "\n"
     "  Q, Esc  quit at once (Esc when nothing is explained; a render or a\n"
     "          load in progress is cancelled)\n"
@@ -181,5 +191,6 @@ int main(int argc, char **argv)
     options.watch = watch;
     options.view = (int)s.view;
     options.view_light = s.view_light;
+    options.stats = stats ? stderr : NULL;
     return run_viewer(&options, s.operand_count ? s.operands[0] : NULL);
 }

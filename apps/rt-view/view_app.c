@@ -105,12 +105,10 @@ void view_app__start_render(view_app *app)
     if (app->session == NULL)
         return;
     app->message[0] = '\0';
-    if (view_session_start(app->session) != RT_OK)
-        view_app__show_message(app, "cannot start the rendering thread");
-    /* The explanation and the debug view were of the render before. */
+    /* The debug view shown (or the picture), rendered again. */
+    view_app__show_view(app);
+    /* The explanation was of the render before. */
     view_app__clear_explanation(app);
-    if (app->view)
-        view_app__show_view(app);
 }
 
 view_app *view_app_create(const view_app_options *options, char *error,

@@ -28,6 +28,7 @@
 #define VIEW_APP_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "raytrace/raytrace.h"
 #include "view_explain.h"
@@ -60,6 +61,10 @@ typedef struct view_app_options {
     view_load_func load_scene;  /* how a scene is read (on the load's
                                    worker): NULL, view_scene_load; the
                                    tests pass loaders that block */
+    FILE *stats;                /* --stats: after each render, a line with
+                                   the time of each pass and the rays
+                                   (view_session_options.stats); NULL:
+                                   none */
 } view_app_options;
 
 typedef struct view_app view_app;

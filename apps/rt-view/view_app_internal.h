@@ -78,8 +78,11 @@ int view_app__finish_load(view_app *app);
 /* Clears the explanation and the help, if shown. */
 void view_app__clear_explanation(view_app *app);
 
-/* Renders debug view app->view into the window (or shows the picture
- * again for 0).  Returns 1, or 0 with the reason shown. */
+/* Starts the session on debug view app->view (0: the picture, which
+ * shows at once when it finished before with the same depth and camera):
+ * rendered on its worker, coarse to fine, as the picture is.  A light
+ * the scene does not have falls back to the picture.  Returns 1, or 0
+ * with the reason shown. */
 int view_app__show_view(view_app *app);
 
 /* "normal view", "depth view", ...: how the title names an rt_debug_view

@@ -31,16 +31,11 @@ const char view_app_keys_help[] =
     "S save   R reload   + - depth\n"
     "H, F1    this help  Q quit\n";
 
-/* How the title and the messages name each view (an rt_debug_view). */
-static const char *const view_names[] = {
-    "", "normal view", "depth view", "facet view", "shadow view",
-    "bounces view", "N.S view", "shading normal view",
-};
-
+/* How the title and the messages name each view (the session's names;
+ * the picture has none in the title). */
 const char *view_app__view_name(int view)
 {
-    return view >= 0 && view <= RT_VIEW_SHADING_NORMAL ? view_names[view]
-                                                       : "";
+    return view == 0 ? "" : view_session_view_name(view);
 }
 
 static void change_depth(view_app *app, int delta)
@@ -130,47 +125,49 @@ const view_explanation *view_app_explanation(const view_app *app)
     return app->explanation.text ? &app->explanation : NULL;
 }
 
-/* Renders debug view app->view into the window (or the picture again). */
+/* Renders debug view app->view (or the picture) in the session, on its
+ * worker: the same passes, progress and cancellation as the picture. */
 int view_app__show_view(view_app *app)
 {
     if (app->session == NULL)
         return 0;
     app->redraw = 1;
-    if (app->view == 0)
-        return view_window_show_image(app->window, NULL);
-    const rt_scene *scene = view_session_scene(app->session);
-    rt_render_options options = view_app__render_options(app, scene);
-    const rt_image *picture = view_session_image(app->session);
-    rt_image image;
-    rt_error error;
-    memset(&error, 0, sizeof error);
-    rt_status status = rt_image_init(&image, picture->width, picture->height,
-                                     NULL);
-    if (status == RT_OK) {
-        status = rt_render_view(scene, &options, (rt_debug_view)app->view,
-                                app->view_light, &image, &error);
-        if (status == RT_OK)
-            view_window_show_image(app->window, &image);
-        rt_image_release(&image);
-    }
-    if (status != RT_OK) {
-        char message[sizeof app->message];
-        snprintf(message, sizeof message, "cannot show the %s: %s",
-                 view_names[app->view],
-                 error.message[0] ? error.message : rt_status_string(status));
+    char message[sizeof app->message] = "";
+    if (view_session_set_view(app->session, app->view, app->view_light) !=
+        RT_OK) {
+        rt_scene_info info = {.size = sizeof info};
+        rt_scene_get_info(view_session_scene(app->session), &info);
+        snprintf(message, sizeof message,
+                 "cannot show the %s: the scene has no light %d (its "
+                 "lights are 0..%d)",
+                 view_app__view_name(app->view), app->view_light,
+                 info.light_count - 1);
         app->view = 0;
-        view_window_show_image(app->window, NULL);
-        view_app__show_message(app, message);
-        return 0;
+        view_session_set_view(app->session, 0, 0);
     }
+    if (view_session_start(app->session) != RT_OK)
+        view_app__show_message(app, "cannot start the rendering thread");
+    else if (message[0])
+        view_app__show_message(app, message);
     view_app__update_title(app);
-    return 1;
+    return message[0] == '\0';
 }
 
 int view_app_set_view(view_app *app, int view, int light)
 {
     if (view < 0 || view > RT_VIEW_SHADING_NORMAL)
         return 0;
+    if (app->session) {
+        /* The same view again goes on (or stays) as it is. */
+        view_progress progress;
+        view_session_get_progress(app->session, &progress);
+        int per_light = view == RT_VIEW_SHADOW || view == RT_VIEW_NS;
+        if (progress.view == view && app->view == view &&
+            (!per_light || progress.light == light) &&
+            (progress.state == VIEW_RENDERING ||
+             progress.state == VIEW_DONE))
+            return 1;
+    }
     app->view = view;
     app->view_light = light;
     int shown = view_app__show_view(app);

@@ -53,6 +53,7 @@ static view_session *new_session(view_app *app, rt_scene *scene,
     options.render = view_app__render_options(app, scene);
     options.notify = view_app__wake;
     options.notify_user = app;
+    options.stats = app->options.stats;
     view_session *session;
     rt_error error;
     memset(&error, 0, sizeof error);

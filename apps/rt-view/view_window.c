@@ -1,7 +1,9 @@
 /*
  * view_window.c - the SDL window, renderer and texture that show a
- * view_session (see view_window.h).  Only finished rows are uploaded, each
- * once; the rest of the texture holds the placeholder checker.
+ * view_session (see view_window.h).  Only the rows a pass changed are
+ * uploaded, copied out of the session under its lock a band at a time;
+ * until the first pass reaches a row the texture holds the placeholder
+ * checker there.
  */
 #include "view_window.h"
 
@@ -28,6 +30,7 @@ static const char *const font_paths[] = {
 #define FONT_POINTS 13
 #endif
 #define MARK_SIZE 7         /* side of the square marking a hit, in pixels */
+#define STAGING_ROWS 64     /* rows copied out of the session at a time */
 
 struct view_window {
     SDL_Window *window;
@@ -35,9 +38,12 @@ struct view_window {
     SDL_Texture *texture;       /* image-sized, RGB24; NULL when detached */
     int width, height;          /* of the texture */
     view_session *session;
-    unsigned generation;        /* of the picture in the texture */
+    unsigned generation;        /* of the rows last uploaded */
     int *rows;                  /* scratch for take_finished_rows */
-    int still;                  /* showing a still image, not the session */
+    unsigned char *staging;     /* STAGING_ROWS rows copied for upload */
+    int unshown;                /* rows of `generation` uploaded, no frame
+                                   presented with them yet */
+    unsigned shown_generation;  /* the last render a frame was shown of */
     view_projection projection; /* of the overlay's rays */
     view_segment *segments;     /* the overlay's rays; NULL: none */
     int segment_count;
@@ -185,11 +191,13 @@ static void detach(view_window *window)
     if (window->texture)
         SDL_DestroyTexture(window->texture);
     free(window->rows);
+    free(window->staging);
     window->texture = NULL;
     window->rows = NULL;
+    window->staging = NULL;
     window->session = NULL;
     window->width = window->height = 0;
-    window->still = 0;
+    window->unshown = 0;
 }
 
 void view_window_destroy(view_window *window)
@@ -239,11 +247,13 @@ int view_window_attach(view_window *window, view_session *session,
         return 1;
     const rt_image *image = view_session_image(session);
     window->rows = malloc(sizeof *window->rows * (size_t)image->height);
+    window->staging = malloc((size_t)image->width * 3 * STAGING_ROWS);
     window->texture = SDL_CreateTexture(window->renderer,
                                         SDL_PIXELFORMAT_RGB24,
                                         SDL_TEXTUREACCESS_STATIC,
                                         image->width, image->height);
-    if (window->rows == NULL || window->texture == NULL) {
+    if (window->rows == NULL || window->staging == NULL ||
+        window->texture == NULL) {
         snprintf(error, error_size, "cannot show a %dx%d image: %s",
                  image->width, image->height,
                  window->texture ? "out of memory" : SDL_GetError());
@@ -256,6 +266,7 @@ int view_window_attach(view_window *window, view_session *session,
     view_progress progress;
     view_session_get_progress(session, &progress);
     window->generation = progress.generation;
+    window->shown_generation = progress.generation;
     fill_placeholder(window);
     return 1;
 }
@@ -267,31 +278,39 @@ int view_window_sync(view_window *window)
     unsigned generation;
     int count = view_session_take_finished_rows(
         window->session, window->rows, window->height, &generation);
-    int changed = 0;
-    if (window->still) {
-        /* view_window_show_image(NULL) shows them later. */
-        window->generation = generation;
-        return 0;
-    }
-    if (generation != window->generation) {
-        fill_placeholder(window);
-        window->generation = generation;
-        changed = 1;
-    }
-    const rt_image *image = view_session_image(window->session);
+    /* A new render keeps the old pixels until its passes replace them. */
+    window->generation = generation;
+    size_t pitch = (size_t)window->width * 3;
     for (int i = 0; i < count;) {
         int first = window->rows[i];
         int run = 1;
-        while (i + run < count && window->rows[i + run] == first + run)
+        while (i + run < count && run < STAGING_ROWS &&
+               window->rows[i + run] == first + run)
             run++;
-        SDL_Rect rect = {0, first, window->width, run};
-        SDL_UpdateTexture(window->texture, &rect,
-                          rt_image_pixel(image, 0, first),
-                          (int)image->stride);
+        if (view_session_copy_rows(window->session, first, run,
+                                   window->staging, pitch)) {
+            SDL_Rect rect = {0, first, window->width, run};
+            SDL_UpdateTexture(window->texture, &rect, window->staging,
+                              (int)pitch);
+        }
         i += run;
-        changed = 1;
     }
-    return changed;
+    if (count > 0)
+        window->unshown = 1;
+    return count > 0;
+}
+
+/* After a frame is presented: tells the session when the first frame of
+ * its render was shown (--stats). */
+static void note_shown(view_window *window)
+{
+    if (window->session == NULL || !window->unshown)
+        return;
+    window->unshown = 0;
+    if (window->shown_generation == window->generation)
+        return;
+    window->shown_generation = window->generation;
+    view_session_note_shown(window->session, window->generation);
 }
 
 /* Clips the segment (x0, y0)-(x1, y1) to `box` (Liang-Barsky), so that
@@ -404,6 +423,7 @@ void view_window_draw(view_window *window)
 {
     render(window);
     SDL_RenderPresent(window->renderer);
+    note_shown(window);
 }
 
 int view_window_read(view_window *window, rt_image *out)
@@ -419,6 +439,7 @@ int view_window_read(view_window *window, rt_image *out)
                                   SDL_PIXELFORMAT_RGB24, out->pixels,
                                   (int)out->stride) == 0;
     SDL_RenderPresent(window->renderer);
+    note_shown(window);
     if (!ok)
         rt_image_release(out);
     return ok;
@@ -456,34 +477,6 @@ int view_window_display(const view_window *window)
 {
     int display = SDL_GetWindowDisplayIndex(window->window);
     return display < 0 ? 0 : display;
-}
-
-int view_window_show_image(view_window *window, const rt_image *image)
-{
-    if (window->session == NULL)
-        return 0;
-    if (image != NULL) {
-        if (image->width != window->width || image->height != window->height)
-            return 0;
-        SDL_UpdateTexture(window->texture, NULL, image->pixels,
-                          (int)image->stride);
-        window->still = 1;
-        return 1;
-    }
-    /* Back to the session's picture: the checker, then every row finished
-     * so far (those taken while the still image was shown included). */
-    window->still = 0;
-    fill_placeholder(window);
-    const rt_image *picture = view_session_image(window->session);
-    for (int y = 0; y < window->height; y++) {
-        if (!view_session_row_done(window->session, y))
-            continue;
-        SDL_Rect rect = {0, y, window->width, 1};
-        SDL_UpdateTexture(window->texture, &rect,
-                          rt_image_pixel(picture, 0, y),
-                          (int)picture->stride);
-    }
-    return 1;
 }
 
 int view_window_set_overlay(view_window *window,

@@ -2,13 +2,17 @@
  * view_window.h - the viewer's presenter: an SDL window showing a
  * view_session's image as it is rendered.
  *
- * The window keeps a streaming texture of the image's size.  When attached
- * to a session it fills the texture with a dark checker (the placeholder for
+ * The window keeps a texture of the image's size.  When attached to a
+ * session it fills the texture with a dark checker (the placeholder for
  * rows not rendered yet); view_window_sync then uploads only the rows the
- * session reports finished since the last sync (one SDL_UpdateTexture per
- * run of adjacent rows), and starts again from the checker when the session
- * was restarted.  Drawing scales the texture to the window, keeping the
- * image's aspect ratio (letterboxed), so the window may be resized freely.
+ * session reports changed since the last sync, by any pass of its render
+ * (copied out under the session's lock, one SDL_UpdateTexture per run of
+ * adjacent rows).  A restart of the session keeps what the texture shows
+ * until the new render's passes replace it: the checker is only seen
+ * before a session's first pass.  Drawing scales the texture to the
+ * window, keeping the image's aspect ratio (letterboxed), so the window
+ * may be resized freely.  The first frame presented with rows of a render
+ * is reported to the session (view_session_note_shown, for --stats).
  *
  * Threading: SDL rendering is main-thread only, so every function here is
  * for the thread that initialised SDL's video subsystem.
@@ -65,7 +69,7 @@ void view_window_destroy(view_window *window);
 int view_window_attach(view_window *window, view_session *session,
                        char *error, size_t error_size);
 
-/* Uploads the rows finished since the last sync; returns non-zero when the
+/* Uploads the rows changed since the last sync; returns non-zero when the
  * picture changed (draw it). */
 int view_window_sync(view_window *window);
 
@@ -100,12 +104,6 @@ int view_window_display(const view_window *window);
  * keeping the aspect ratio (each side at least 1). */
 void view_fit_size(int width, int height, int max_width, int max_height,
                    int *out_width, int *out_height);
-
-/* Shows `image` (of the session image's size) instead of the session's
- * picture until called with NULL, which shows the picture again with every
- * row finished meanwhile.  Returns 0 when nothing is attached or the size
- * differs. */
-int view_window_show_image(view_window *window, const rt_image *image);
 
 /* The rays drawn over the picture (copied; count 0 or segments NULL: none),
  * projected with `projection`.  Returns 0 when out of memory (none then). */
