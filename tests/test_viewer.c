@@ -7,12 +7,14 @@
  *
  * What is checked: the finished window shows exactly rt-export's image; a
  * frame taken while rendering shows finished rows exactly and the
- * placeholder everywhere else; cancelling stops the render well under a
- * second and leaves no thread; restarting starts from the placeholder; and
- * the small pure helpers (window fitting, save path, rescaling, errors,
- * numbered names).  The app around them has test_viewer_app.c, the click
- * overlay and the debug views test_viewer_overlay.c; what they share is in
- * support/viewer.h.
+ * placeholder everywhere else (on images small enough to have one pass:
+ * test_viewer_progressive.c has the coarse passes); cancelling stops the
+ * render well under a second and leaves no thread; a session's first
+ * render starts from the placeholder, a restart keeps the old pixels until
+ * the new render replaces them; and the small pure helpers (window
+ * fitting, save path, rescaling, errors, numbered names).  The app around
+ * them has test_viewer_app.c, the click overlay and the debug views
+ * test_viewer_overlay.c; what they share is in support/viewer.h.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -192,6 +194,8 @@ static void wait_paused(gate *g)
     ck_assert_msg(result == 0, "the render never notified");
 }
 
+/* 96 x 72 is under VIEW_COARSE_MIN_PIXELS: one pass, each row shown once,
+ * final. */
 START_TEST(intermediate_frames_show_only_finished_rows)
 {
     rt_scene *reference_scene = heavy_scene(300, 96, 72);
@@ -286,16 +290,16 @@ START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
     view_session_get_progress(session, &progress);
     ck_assert_int_eq(progress.state, VIEW_CANCELLED);
     ck_assert_int_eq(progress.status, RT_ERR_CANCELLED);
-    ck_assert_int_lt(progress.rows_done, progress.rows_total);
+    ck_assert_int_lt(progress.rows_final, progress.rows_total);
     char text[96];
     view_progress_describe(&progress, text, sizeof text);
     ck_assert_msg(strncmp(text, "cancelled at ", 13) == 0, "%s", text);
 
-    /* Rows it reports finished stay; nothing else is marked. */
+    /* Rows it reports final stay; nothing else is marked. */
     int marked = 0;
     for (int y = 0; y < progress.rows_total; y++)
         marked += view_session_row_done(session, y);
-    ck_assert_int_eq(marked, progress.rows_done);
+    ck_assert_int_eq(marked, progress.rows_final);
 
     view_session_destroy(session);
     ck_assert_int_eq(rt_test_settled_thread_count(threads_before, 0.2),
@@ -321,10 +325,11 @@ START_TEST(destroying_a_rendering_session_joins_its_thread)
 }
 END_TEST
 
-START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
+START_TEST(restart_keeps_the_old_pixels_until_the_new_render_replaces_them)
 {
     rt_scene *reference_scene = heavy_scene(400, 80, 60);
     rt_image expected = rt_test_render(reference_scene, 2, 1);
+    rt_image before = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
     rt_scene_destroy(reference_scene);
 
     view_window *window = rt_test_view_window_open(80, 60);
@@ -332,9 +337,17 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
                                                  NULL,
                                                  NULL);
     ck_assert(view_window_attach(window, session, NULL, 0));
+    /* A session's first render starts from the checker. */
+    rt_image frame = rt_test_view_window_read(window);
+    for (int y = 0; y < frame.height; y++)
+        ck_assert(rt_test_view_row_is_placeholder(&frame, y));
+    rt_image_release(&frame);
     ck_assert_int_eq(view_session_start(session), RT_OK);
-    rt_test_view_wait(session);
+    ck_assert_int_eq(rt_test_view_wait(session), VIEW_DONE);
     view_window_sync(window);
+    frame = rt_test_view_window_read(window);
+    rt_test_assert_same_image(&frame, &before, "viewer-before-restart");
+    rt_image_release(&frame);
 
     /* A depth change takes effect at the next start. */
     ck_assert_int_eq(view_session_set_depth(session, -1), RT_ERR_ARGUMENT);
@@ -349,15 +362,17 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
     ck_assert_int_eq(progress.generation, 2);
     ck_assert_int_eq(progress.max_depth, 2);
 
-    /* The frame after a restart shows only the new render's rows. */
+    /* The frame after a restart shows the new render's rows and the old
+     * render everywhere else: no checker (80 x 60 has one pass, so every
+     * row the new render reached is final). */
     view_window_sync(window);
-    rt_image frame = rt_test_view_window_read(window);
+    frame = rt_test_view_window_read(window);
     for (int y = 0; y < frame.height; y++) {
         if (view_session_row_done(session, y))
             ck_assert(row_equals(&frame, &expected, y));
         else
-            ck_assert_msg(rt_test_view_row_is_placeholder(&frame, y),
-                          "row %d kept the old render", y);
+            ck_assert_msg(row_equals(&frame, &before, y),
+                          "row %d is neither the new render nor the old", y);
     }
     rt_image_release(&frame);
 
@@ -372,6 +387,7 @@ START_TEST(restart_goes_back_to_the_placeholder_and_renders_again)
     view_session_destroy(session);
     rt_test_view_window_close(window);
     rt_image_release(&expected);
+    rt_image_release(&before);
 }
 END_TEST
 
@@ -575,7 +591,7 @@ static Suite *viewer_suite(void)
     tcase_add_test(window, finished_window_equals_library_render_for_each_scene);
     tcase_add_test(window, intermediate_frames_show_only_finished_rows);
     tcase_add_test(window,
-                   restart_goes_back_to_the_placeholder_and_renders_again);
+                   restart_keeps_the_old_pixels_until_the_new_render_replaces_them);
     suite_add_tcase(suite, window);
 
     TCase *session = tcase_create("session");

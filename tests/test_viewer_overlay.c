@@ -346,8 +346,12 @@ START_TEST(debug_view_keys_change_what_the_window_shows)
     rt_image picture = rt_test_view_window_read(window);
     view_app_key(app, SDLK_n, 0);
     ck_assert_ptr_nonnull(strstr(view_app_title(app), "normal view"));
+    /* The view renders on the session's worker, as the picture does: once
+     * it is done, the window shows the library's normal view. */
+    view_session *session = view_app_session(app);
+    ck_assert_int_eq(rt_test_view_wait(session), VIEW_DONE);
+    view_window_sync(window);
     rt_image normals = rt_test_view_window_read(window);
-    /* The window shows the library's normal view. */
     rt_image expected;
     ck_assert_int_eq(rt_image_init(&expected, picture.width, picture.height,
                                    NULL), RT_OK);
@@ -358,8 +362,15 @@ START_TEST(debug_view_keys_change_what_the_window_shows)
     rt_image_release(&expected);
     view_app_key(app, SDLK_l, 0);
     ck_assert_ptr_nonnull(strstr(view_app_title(app), "shadow view of light 0"));
+    /* V cancels the shadow view under way; the picture, finished before,
+     * is shown again at once, without rendering. */
     view_app_key(app, SDLK_v, 0);
     ck_assert_ptr_null(strstr(view_app_title(app), "shadow view"));
+    view_progress progress;
+    view_session_get_progress(session, &progress);
+    ck_assert_int_eq(progress.state, VIEW_DONE);
+    ck_assert_int_eq(progress.view, 0);
+    view_window_sync(window);
     rt_image again = rt_test_view_window_read(window);
     rt_test_assert_same_image(&again, &picture, "viewer-the picture again");
     rt_image_release(&picture);
