@@ -36,60 +36,6 @@
 #include "view_scene.h"
 #include "viewer.h"
 
-/*
- * A scene slow to render: `count` small reflective triangles scattered in
- * front of a large floor (brute force tests every facet for every ray).
- * Same camera as scenes/two-facets.scn.
- */
-static rt_scene *heavy_scene(int count, int width, int height)
-{
-    rt_vec3 *vertices = malloc(sizeof *vertices * (size_t)(3 * count + 3));
-    rt_facet_desc *facets = malloc(sizeof *facets * (size_t)(count + 1));
-    ck_assert(vertices != NULL && facets != NULL);
-    rt_test_rng rng = {12345};
-    for (int i = 0; i < count; i++) {
-        double p[3];
-        for (int c = 0; c < 3; c++)
-            p[c] = rt_test_rng_uniform(&rng);
-        rt_vec3 centre = {-8 + 16 * p[0], -6 + 12 * p[1], 0.5 + 1.5 * p[2]};
-        vertices[3 * i] = (rt_vec3){centre.x - 0.2, centre.y - 0.1, centre.z};
-        vertices[3 * i + 1] = (rt_vec3){centre.x + 0.2, centre.y - 0.1,
-                                        centre.z + 0.1};
-        vertices[3 * i + 2] = (rt_vec3){centre.x, centre.y + 0.2, centre.z};
-        facets[i] = (rt_facet_desc){{3 * i, 3 * i + 1, 3 * i + 2},
-                                    0.3,
-                                    {(unsigned char)(i * 37),
-                                     (unsigned char)(i * 91), 200}};
-    }
-    vertices[3 * count] = (rt_vec3){-30, -30, 0};
-    vertices[3 * count + 1] = (rt_vec3){30, -30, 0};
-    vertices[3 * count + 2] = (rt_vec3){0, 40, 0};
-    facets[count] = (rt_facet_desc){{3 * count, 3 * count + 1, 3 * count + 2},
-                                    0.5,
-                                    {180, 180, 180}};
-    rt_scene_desc desc = {
-        .observer = {0, 0, 10},
-        .screen_center = {0, 0, 5},
-        .screen_right = {4, 0, 5},
-        .width = width,
-        .height = height,
-        .vertices = vertices,
-        .vertex_count = 3 * count + 3,
-        .facets = facets,
-        .facet_count = count + 1,
-        .background = {30, 30, 60},
-        .lights = &(rt_light){{-3, 2, 20}, {255, 255, 255}},
-        .light_count = 1,
-    };
-    rt_scene *scene = NULL;
-    rt_error error;
-    rt_status status = rt_scene_create(&desc, &scene, &error);
-    free(vertices);
-    free(facets);
-    ck_assert_msg(status == RT_OK, "%s", error.message);
-    return scene;
-}
-
 static int row_equals(const rt_image *a, const rt_image *b, int y)
 {
     return memcmp(rt_image_pixel(a, 0, y), rt_image_pixel(b, 0, y),
@@ -198,7 +144,7 @@ static void wait_paused(gate *g)
  * final. */
 START_TEST(intermediate_frames_show_only_finished_rows)
 {
-    rt_scene *reference_scene = heavy_scene(300, 96, 72);
+    rt_scene *reference_scene = rt_test_view_heavy_scene(300, 96, 72);
     rt_image expected = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
     rt_scene_destroy(reference_scene);
 
@@ -207,7 +153,7 @@ START_TEST(intermediate_frames_show_only_finished_rows)
     ck_assert_int_eq(sem_init(&g.resume, 0, 0), 0);
     view_window *window = rt_test_view_window_open(expected.width,
                                                    expected.height);
-    view_session *session = rt_test_view_session(heavy_scene(300, 96, 72), 2,
+    view_session *session = rt_test_view_session(rt_test_view_heavy_scene(300, 96, 72), 2,
                                                  gate_notify, &g);
     ck_assert(view_window_attach(window, session, NULL, 0));
 
@@ -262,7 +208,7 @@ END_TEST
 START_TEST(cancel_stops_the_render_promptly_and_leaves_no_thread)
 {
     int threads_before = rt_test_baseline_thread_count();
-    view_session *session = rt_test_view_session(heavy_scene(2000, 48, 1500), 0,
+    view_session *session = rt_test_view_session(rt_test_view_heavy_scene(2000, 48, 1500), 0,
                                                  NULL, NULL);
     ck_assert_int_eq(view_session_start(session), RT_OK);
 
@@ -311,7 +257,7 @@ START_TEST(destroying_a_rendering_session_joins_its_thread)
 {
     int threads_before = rt_test_baseline_thread_count();
     for (int i = 0; i < 5; i++) {
-        view_session *session = rt_test_view_session(heavy_scene(1500, 64, 400),
+        view_session *session = rt_test_view_session(rt_test_view_heavy_scene(1500, 64, 400),
                                                      i % 3, NULL, NULL);
         ck_assert_int_eq(view_session_start(session), RT_OK);
         rt_test_sleep_ms(i * 7);
@@ -327,13 +273,13 @@ END_TEST
 
 START_TEST(restart_keeps_the_old_pixels_until_the_new_render_replaces_them)
 {
-    rt_scene *reference_scene = heavy_scene(400, 80, 60);
+    rt_scene *reference_scene = rt_test_view_heavy_scene(400, 80, 60);
     rt_image expected = rt_test_render(reference_scene, 2, 1);
     rt_image before = rt_test_render(reference_scene, RT_DEFAULT_DEPTH, 1);
     rt_scene_destroy(reference_scene);
 
     view_window *window = rt_test_view_window_open(80, 60);
-    view_session *session = rt_test_view_session(heavy_scene(400, 80, 60), 0,
+    view_session *session = rt_test_view_session(rt_test_view_heavy_scene(400, 80, 60), 0,
                                                  NULL,
                                                  NULL);
     ck_assert(view_window_attach(window, session, NULL, 0));
@@ -393,7 +339,7 @@ END_TEST
 
 START_TEST(taking_rows_returns_each_finished_row_once_in_order)
 {
-    view_session *session = rt_test_view_session(heavy_scene(50, 32, 300), 0,
+    view_session *session = rt_test_view_session(rt_test_view_heavy_scene(50, 32, 300), 0,
                                                  NULL,
                                                  NULL);
     const rt_image *image = view_session_image(session);

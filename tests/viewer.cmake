@@ -11,9 +11,11 @@ if(TARGET raytrace_viewer)
   raytrace_set_warnings(raytrace_test_viewer_support)
   # The session and the window (test_viewer), the app (test_viewer_app:
   # one test runs rt-view without a display), the click overlay and debug
-  # views (test_viewer_overlay).  One test compares with the image
-  # rt-export writes (RT_EXPORT_PATH, RT_VIEW_PATH: raytrace_add_suite).
-  foreach(family "" _app _overlay)
+  # views (test_viewer_overlay), the passes coarse to fine, the debug views
+  # and cameras of a session (test_viewer_progressive).  One test compares
+  # with the image rt-export writes (RT_EXPORT_PATH, RT_VIEW_PATH:
+  # raytrace_add_suite).
+  foreach(family "" _app _overlay _progressive)
     raytrace_add_suite(test_viewer${family} LIBS raytrace_test_viewer_support)
     set_tests_properties(test_viewer${family} PROPERTIES
       ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")

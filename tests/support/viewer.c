@@ -11,6 +11,7 @@
 #include <SDL.h>
 
 #include "clock.h"
+#include "rng.h"
 
 int rt_test_view_row_is_placeholder(const rt_image *frame, int y)
 {
@@ -128,4 +129,56 @@ const rt_image *rt_test_view_app_image(view_app *app)
     ck_assert_ptr_nonnull(session);
     ck_assert_int_eq(rt_test_view_wait(session), VIEW_DONE);
     return view_session_image(session);
+}
+
+/*
+ * A scene slow to render (see viewer.h).
+ */
+rt_scene *rt_test_view_heavy_scene(int count, int width, int height)
+{
+    rt_vec3 *vertices = malloc(sizeof *vertices * (size_t)(3 * count + 3));
+    rt_facet_desc *facets = malloc(sizeof *facets * (size_t)(count + 1));
+    ck_assert(vertices != NULL && facets != NULL);
+    rt_test_rng rng = {12345};
+    for (int i = 0; i < count; i++) {
+        double p[3];
+        for (int c = 0; c < 3; c++)
+            p[c] = rt_test_rng_uniform(&rng);
+        rt_vec3 centre = {-8 + 16 * p[0], -6 + 12 * p[1], 0.5 + 1.5 * p[2]};
+        vertices[3 * i] = (rt_vec3){centre.x - 0.2, centre.y - 0.1, centre.z};
+        vertices[3 * i + 1] = (rt_vec3){centre.x + 0.2, centre.y - 0.1,
+                                        centre.z + 0.1};
+        vertices[3 * i + 2] = (rt_vec3){centre.x, centre.y + 0.2, centre.z};
+        facets[i] = (rt_facet_desc){{3 * i, 3 * i + 1, 3 * i + 2},
+                                    0.3,
+                                    {(unsigned char)(i * 37),
+                                     (unsigned char)(i * 91), 200}};
+    }
+    vertices[3 * count] = (rt_vec3){-30, -30, 0};
+    vertices[3 * count + 1] = (rt_vec3){30, -30, 0};
+    vertices[3 * count + 2] = (rt_vec3){0, 40, 0};
+    facets[count] = (rt_facet_desc){{3 * count, 3 * count + 1, 3 * count + 2},
+                                    0.5,
+                                    {180, 180, 180}};
+    rt_scene_desc desc = {
+        .observer = {0, 0, 10},
+        .screen_center = {0, 0, 5},
+        .screen_right = {4, 0, 5},
+        .width = width,
+        .height = height,
+        .vertices = vertices,
+        .vertex_count = 3 * count + 3,
+        .facets = facets,
+        .facet_count = count + 1,
+        .background = {30, 30, 60},
+        .lights = &(rt_light){{-3, 2, 20}, {255, 255, 255}},
+        .light_count = 1,
+    };
+    rt_scene *scene = NULL;
+    rt_error error;
+    rt_status status = rt_scene_create(&desc, &scene, &error);
+    free(vertices);
+    free(facets);
+    ck_assert_msg(status == RT_OK, "%s", error.message);
+    return scene;
 }

@@ -20,6 +20,12 @@
  * measure: a render here takes milliseconds). */
 #define RT_TEST_VIEW_WAIT_SECONDS 60.0
 
+/* A scene slow to render: `count` small reflective triangles scattered in
+ * front of a large floor (slower still with RT_ACCEL_NONE: every ray
+ * tests every facet), for a width x height image.  Same camera as
+ * scenes/two-facets.scn. */
+rt_scene *rt_test_view_heavy_scene(int count, int width, int height);
+
 /* Whether row `y` of `frame` is the placeholder a render starts from. */
 int rt_test_view_row_is_placeholder(const rt_image *frame, int y);
 
