@@ -686,6 +686,20 @@ START_TEST(progress_and_reports_name_the_pass)
     ck_assert_str_eq(text, "render 4 (shadow view of light 1): cancelled in "
                            "1/4 (41 of 480 rows) after 1.50 s; 1/8 in 6.0 "
                            "ms; 1.23 M rays");
+    r.rays = 99999;
+    r.passes_done = 0;
+    r.rows_reached = 0;
+    r.state = VIEW_FAILED;
+    snprintf(r.error, sizeof r.error, "the camera is degenerate");
+    view_render_report_describe(&r, text, sizeof text);
+    ck_assert_str_eq(text, "render 4 (shadow view of light 1): failed in "
+                           "1/8 (0 of 480 rows) after 1.50 s: the camera is "
+                           "degenerate; 99999 rays");
+    r.kept = 1;
+    r.view = 0;
+    view_render_report_describe(&r, text, sizeof text);
+    ck_assert_str_eq(text, "render 4 (picture): the picture finished before, "
+                           "shown again at once");
 }
 END_TEST
 

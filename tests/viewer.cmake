@@ -56,9 +56,17 @@ if(TARGET raytrace_rt_view)
     set_tests_properties(viewer_xvfb_fifo PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
       SKIP_RETURN_CODE 77 TIMEOUT 300)
+    # A slow scene's picture, then its normal view, rendered off the event
+    # loop: N during the render, then Escape, which exits at once
+    # (tests/viewer_xvfb_progressive.sh).
+    add_test(NAME viewer_xvfb_progressive
+      COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb_progressive.sh")
+    set_tests_properties(viewer_xvfb_progressive PROPERTIES
+      ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
     # One X server test at a time: each starts its own Xvfb, and two
     # starting at once under a loaded machine raced for a display.
-    set_tests_properties(viewer_xvfb viewer_xvfb_fifo PROPERTIES
-      RESOURCE_LOCK xvfb)
+    set_tests_properties(viewer_xvfb viewer_xvfb_fifo viewer_xvfb_progressive
+      PROPERTIES RESOURCE_LOCK xvfb)
   endif()
 endif()

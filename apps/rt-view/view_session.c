@@ -821,5 +821,8 @@ void view_render_report_describe(const view_render_report *report,
     if (report->shown_seconds >= 0)
         append(buffer, size, &used, "; first shown at %s",
                describe_seconds(report->shown_seconds, time, sizeof time));
-    append(buffer, size, &used, "; %.2f M rays", report->rays / 1e6);
+    if (report->rays < 100000)
+        append(buffer, size, &used, "; %" PRIu64 " rays", report->rays);
+    else
+        append(buffer, size, &used, "; %.2f M rays", report->rays / 1e6);
 }

@@ -279,10 +279,13 @@ void view_progress_describe(const view_progress *progress, char *buffer,
                             size_t size);
 
 /* The --stats line of a render, without the program's name or a newline:
- * "render 3 (picture): 1/8 in 6 ms, 1/4 in 18 ms, 1/2 in 61 ms, full in
- * 0.84 s; first shown at 9 ms; 1.23 M rays", or for a cancelled render
+ * the time from its start to the end of each pass (under 10 ms to 0.1 ms,
+ * under 1 s in ms, else in s with two decimals), to the first frame shown,
+ * and the rays (in millions from 100,000 on, else exactly):
+ * "render 3 (picture): 1/8 in 6.0 ms, 1/4 in 18 ms, 1/2 in 61 ms, full in
+ * 840 ms; first shown at 9.0 ms; 1.23 M rays"; for a cancelled render
  * "render 4 (normal view): cancelled in 1/4 (41 of 480 rows) after 25 ms;
- * 1/8 in 6 ms; ...". */
+ * 1/8 in 6.0 ms; ...", a failed one "failed in ...: REASON". */
 void view_render_report_describe(const view_render_report *report,
                                  char *buffer, size_t size);
 
