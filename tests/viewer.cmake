@@ -34,6 +34,11 @@ if(TARGET raytrace_viewer)
   raytrace_add_suite(test_viewer_load LIBS raytrace_test_viewer_support)
   set_tests_properties(test_viewer_load PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+  # The camera's moves (view_camera.c, view_move.c): the arithmetic, C's
+  # text read back bit for bit, and the app's drags, wheel and keys.
+  raytrace_add_suite(test_view_camera LIBS raytrace_test_viewer_support)
+  set_tests_properties(test_view_camera PROPERTIES
+    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()
 
 # The click overlay on a real X server: rt-view under Xvfb, driven by
