@@ -59,9 +59,17 @@ if(TARGET raytrace_rt_view)
     set_tests_properties(viewer_xvfb_fifo PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
       SKIP_RETURN_CODE 77 TIMEOUT 300)
+    # The camera moved with the mouse: a drag and the wheel change the
+    # picture, and C's rt-export options give S's image byte for byte
+    # (tests/viewer_xvfb_move.sh).
+    add_test(NAME viewer_xvfb_move
+      COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb_move.sh")
+    set_tests_properties(viewer_xvfb_move PROPERTIES
+      ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_EXPORT=$<TARGET_FILE:raytrace_rt_export>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
     # One X server test at a time: each starts its own Xvfb, and two
     # starting at once under a loaded machine raced for a display.
-    set_tests_properties(viewer_xvfb viewer_xvfb_fifo PROPERTIES
-      RESOURCE_LOCK xvfb)
+    set_tests_properties(viewer_xvfb viewer_xvfb_fifo viewer_xvfb_move
+      PROPERTIES RESOURCE_LOCK xvfb)
   endif()
 endif()
