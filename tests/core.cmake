@@ -17,7 +17,8 @@ foreach(suite
     test_api_edges
     test_api_accessors
     test_shading
-    test_smooth)
+    test_smooth
+    test_look)
   raytrace_add_suite(${suite})
 endforeach()
 # The accessors' bad calls, tests/test_api_accessors.c: in a debug build

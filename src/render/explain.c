@@ -171,7 +171,7 @@ static void sum_subtrees(rt_ray_node *nodes, size_t count)
  * through the kernel's recorder callbacks. */
 static rt_status record_pixel(const rt_frame *frame, tree_builder *r, int x,
                               int y, int sample, rt_color *value,
-                              rt_error *error)
+                              rt_counters *counted, rt_error *error)
 {
     r->count = 0;
     r->truncated = 0;
@@ -181,9 +181,9 @@ static rt_status record_pixel(const rt_frame *frame, tree_builder *r, int x,
                                         record_miss, record_shadow};
     rt_frame recording = *frame;
     recording.settings.recorder = &recorder;
-    rt_counters counters = {0};
-    *value = rt__frame_pixel(&recording, x, y, sample, &counters);
-    if (counters.out_of_memory || r->out_of_memory)
+    rt_counters mine = {0}, *counters = counted != NULL ? counted : &mine;
+    *value = rt__frame_pixel(&recording, x, y, sample, counters);
+    if (counters->out_of_memory || r->out_of_memory)
         return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
                              "out of memory for the ray tree of pixel "
                              "%d,%d", x, y);
@@ -216,7 +216,8 @@ rt_status rt_explain_pixel(const rt_scene *scene,
     tree_builder r = {.scene = scene};
     rt_color value = {0, 0, 0};
     if (status == RT_OK)
-        status = record_pixel(&frame, &r, x, y, sample, &value, error);
+        status = record_pixel(&frame, &r, x, y, sample, &value, NULL, error);
+    rt__frame_release(&frame);
     rt_ray_tree *t = NULL;
     if (status == RT_OK && (t = malloc(sizeof *t)) == NULL)
         status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
@@ -343,6 +344,62 @@ static void view_pixel(const tree_builder *r, rt_debug_view view,
     }
 }
 
+/* One debug view rendered as a job of rows (render.c): what every thread
+ * reads, and for RT_VIEW_DEPTH the t of every pixel until the greys are
+ * known. */
+typedef struct view_job {
+    const rt_scene *scene;
+    rt_debug_view view;
+    int light;
+    int max_depth;          /* the render's, for RT_VIEW_BOUNCES */
+    int width;
+    double *depth;          /* RT_VIEW_DEPTH: t per pixel, -1 for none */
+} view_job;
+
+static void view_thread_end(void *user, void *thread)
+{
+    (void)user;
+    tree_builder *r = thread;
+    if (r != NULL)
+        free(r->nodes);
+    free(r);
+}
+
+/* A row of the view: each pixel's first sample recorded, then coloured
+ * (or its t kept, for the depth view). */
+static int view_row(void *user, const rt_frame *frame, int row,
+                    unsigned char *out, const rt_stop *stop,
+                    rt_counters *counters, void **thread)
+{
+    view_job *v = user;
+    tree_builder *r = *thread;
+    if (r == NULL) {
+        if ((r = calloc(1, sizeof *r)) == NULL) {
+            counters->out_of_memory = 1;
+            return 0;
+        }
+        r->scene = v->scene;
+        *thread = r;
+    }
+    for (int x = 0; x < v->width; x++) {
+        if (rt__stop_now(stop))
+            return 0;
+        rt_color value;
+        if (record_pixel(frame, r, x, row, 0, &value, counters, NULL) !=
+                RT_OK ||
+            r->count == 0) {
+            counters->out_of_memory = 1;
+            return 0;
+        }
+        if (v->depth != NULL)
+            v->depth[(size_t)row * (size_t)v->width + (size_t)x] =
+                r->nodes[0].hit ? r->nodes[0].t : -1;
+        else
+            view_pixel(r, v->view, v->light, v->max_depth, &out[3 * x]);
+    }
+    return 1;
+}
+
 /* Depth: t of each camera hit, then near (255) .. far (0). */
 static void depth_view(const double *t, rt_image *image, int width,
                        int height)
@@ -384,41 +441,32 @@ rt_status rt_render_view(const rt_scene *scene,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "light %d: the scene has lights 0..%d", light,
                              scene->light_count - 1);
-    rt_frame frame;
-    int width, height, samples;
-    rt_status status = rt__frame_setup(scene, options, &frame, &width,
-                                       &height, &samples, error);
+    rt_render_plan plan;
+    rt_status status = rt__render_take(scene, options, &plan, error);
     if (status != RT_OK)
         return status;
-    if (image->width != width || image->height != height)
-        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
-                             "the image is %d x %d but the render writes "
-                             "%d x %d", image->width, image->height, width,
-                             height);
-    int max_depth = frame.settings.max_depth;
-    double *depth = NULL;
+    int width = plan.width, height = plan.height;
+    view_job v = {scene, view, light, plan.options.max_depth, width, NULL};
     if (view == RT_VIEW_DEPTH &&
-        (depth = malloc((size_t)width * (size_t)height * sizeof *depth)) ==
-            NULL)
-        status = rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
-                               "out of memory for a depth view");
-    tree_builder r = {.scene = scene};
-    for (int y = 0; status == RT_OK && y < height; y++) {
-        unsigned char *row = rt_image_pixel(image, 0, y);
-        for (int x = 0; status == RT_OK && x < width; x++) {
-            rt_color value;
-            status = record_pixel(&frame, &r, x, y, 0, &value, error);
-            if (status != RT_OK || r.count == 0)
+        (v.depth = malloc((size_t)width * (size_t)height *
+                          sizeof *v.depth)) == NULL)
+        return rt__error_set(error, RT_ERR_NOMEM, NULL, 0, 0,
+                             "out of memory for a depth view");
+    /* Only the bounces view reads more than the camera ray's hit and its
+     * shadow rays: the others trace no reflection or refraction. */
+    const rt_row_work work = {view_row, view_thread_end, &v,
+                              view != RT_VIEW_DEPTH};
+    status = rt__render_job(scene, options, 0, height, image, &work,
+                            view == RT_VIEW_BOUNCES ? -1 : 0, error);
+    if (status == RT_OK && v.depth != NULL) {
+        depth_view(v.depth, image, width, height);
+        for (int y = 0; y < height && plan.options.on_row != NULL; y++)
+            if (!plan.options.on_row(plan.options.user, y)) {
+                status = rt__error_set(error, RT_ERR_CANCELLED, NULL, 0, 0,
+                                       "the render was cancelled");
                 break;
-            if (depth != NULL)
-                depth[y * width + x] = r.nodes[0].hit ? r.nodes[0].t : -1;
-            else
-                view_pixel(&r, view, light, max_depth, &row[3 * x]);
-        }
+            }
     }
-    if (status == RT_OK && depth != NULL)
-        depth_view(depth, image, width, height);
-    free(depth);
-    free(r.nodes);
+    free(v.depth);
     return status;
 }

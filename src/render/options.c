@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "base/sized.h"
+#include "base/vecmath.h"
 #include "render_internal.h"
 #include "scene/scene_internal.h"
 
@@ -48,7 +49,7 @@ static rt_status take_options(const rt_render_options *in,
     TAKE(max_depth) TAKE(threads) TAKE(precision) TAKE(fast_inv_sqrt)
     TAKE(samples) TAKE(sampling) TAKE(on_row) TAKE(cancel) TAKE(user)
     TAKE(stats) TAKE(kernel) TAKE(accel) TAKE(aperture) TAKE(focal_distance)
-    TAKE(width) TAKE(height) TAKE(region)
+    TAKE(width) TAKE(height) TAKE(region) TAKE(camera)
 #undef TAKE
     return RT_OK;
 }
@@ -63,8 +64,10 @@ static rt_status image_size(const rt_scene *scene,
     if (scene == NULL || options == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "no scene or no render options");
-    int w = options->width != 0 ? options->width : scene->camera.width;
-    int h = options->height != 0 ? options->height : scene->camera.height;
+    const rt_camera *camera =
+        options->camera != NULL ? options->camera : &scene->camera;
+    int w = options->width != 0 ? options->width : camera->width;
+    int h = options->height != 0 ? options->height : camera->height;
     if (w < 1 || w > RT_MAX_IMAGE_SIDE || h < 1 || h > RT_MAX_IMAGE_SIDE)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "an image of %d x %d pixels: each side must be "
@@ -199,14 +202,47 @@ rt_status rt__render_take(const rt_scene *scene,
     rt_status status = take_options(options, &plan->options, error);
     if (status != RT_OK)
         return status;
+    /* The camera is copied: the caller's need only live through the
+     * call's checks, and the frame reads the plan's. */
+    plan->camera = plan->options.camera != NULL ? *plan->options.camera
+                                                : scene->camera;
+    plan->options.camera = &plan->camera;
     return image_size(scene, &plan->options, &plan->full_width,
                       &plan->full_height, &plan->width, &plan->height,
                       error);
 }
 
+/* A caller's camera: finite, with a screen (AB, AC non-zero) that the
+ * observer is not on. */
+static rt_status check_camera(const rt_camera *c, rt_error *error)
+{
+    rt_vec3 v[4] = {c->observer, c->screen_center, c->right, c->up};
+    for (int i = 0; i < 4; i++)
+        if (!isfinite(v[i].x) || !isfinite(v[i].y) || !isfinite(v[i].z))
+            return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                                 "the render's camera has a coordinate that "
+                                 "is not finite");
+    if (v3_max_abs(c->right) == 0.0 || v3_max_abs(c->up) == 0.0 ||
+        v3_max_abs(v3_sub(c->observer, c->screen_center)) == 0.0)
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the render's camera is degenerate: expected "
+                             "AB and AC non-zero and O off the screen "
+                             "(see rt_scene_look)");
+    if (!(c->aperture >= 0.0) || !isfinite(c->aperture) ||
+        !(c->focal_distance > 0.0) || !isfinite(c->focal_distance))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the render's camera has a lens of aperture "
+                             "%g and focus %g: expected a >= 0 and f > 0",
+                             c->aperture, c->focal_distance);
+    return RT_OK;
+}
+
 rt_status rt__render_check(rt_render_plan *plan, rt_error *error)
 {
-    rt_status status = check_options(&plan->options, error);
+    rt_status status = check_camera(&plan->camera, error);
+    if (status != RT_OK)
+        return status;
+    status = check_options(&plan->options, error);
     if (status != RT_OK)
         return status;
     plan->grid = sample_grid(plan->options.samples, error);

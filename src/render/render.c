@@ -37,6 +37,7 @@ typedef struct job {
     const rt_render_options *options;
     rt_frame frame;
     rt_image *image;
+    const rt_row_work *work;    /* NULL: the picture */
     int row_end;
     atomic_int next_row;
     atomic_int cancelled;
@@ -69,15 +70,24 @@ static void worker(void *argument)
     job *j = argument;
     rt_counters counters = {0};
     const rt_stop stop = {&j->cancelled, j->options->cancel};
+    const rt_row_work *work = j->work;
+    void *thread = NULL;
     for (;;) {
         int row = atomic_fetch_add(&j->next_row, 1);
         if (row >= j->row_end)
             break;
-        if (!rt__frame_row(&j->frame, row, rt_image_pixel(j->image, 0, row),
-                           &stop, &counters))
+        unsigned char *out = rt_image_pixel(j->image, 0, row);
+        if (work != NULL ? !work->row(work->user, &j->frame, row, out, &stop,
+                                      &counters, &thread)
+                         : !rt__frame_row(&j->frame, row, out, &stop,
+                                          &counters)) {
+            if (counters.out_of_memory)
+                atomic_store(&j->cancelled, 1);
             break;
+        }
         counters.pixels += (uint64_t)j->frame.width;
-        if (j->options->on_row != NULL) {
+        if (j->options->on_row != NULL &&
+            (work == NULL || work->report_rows)) {
             pthread_mutex_lock(&j->callback_lock);
             int go_on = atomic_load(&j->cancelled) ||
                         j->options->on_row(j->options->user, row);
@@ -88,6 +98,8 @@ static void worker(void *argument)
             }
         }
     }
+    if (work != NULL && work->thread_end != NULL)
+        work->thread_end(work->user, thread);
     pthread_mutex_lock(&j->stats_lock);
     add_counters(&j->totals, &counters);
     pthread_mutex_unlock(&j->stats_lock);
@@ -198,22 +210,28 @@ static rt_status prepare_octree(rt_frame *f, const rt_scene *scene,
     return status;
 }
 
+static int same_point(rt_vec3 a, rt_vec3 b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
 rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
                             const rt_render_plan *plan,
                             const rt_cancel *cancel, rt_error *error)
 {
     const rt_render_options *options = &plan->options;
     memset(f, 0, sizeof *f);
+    const rt_camera *camera = &plan->camera;
     double aperture = options->aperture >= 0.0 ? options->aperture
-                                               : scene->camera.aperture;
+                                               : camera->aperture;
     double focal_distance = options->focal_distance > 0.0
                                 ? options->focal_distance
-                                : scene->camera.focal_distance;
+                                : camera->focal_distance;
     if (!isfinite(aperture) || !isfinite(focal_distance))
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "a lens of aperture %g and focus %g: expected "
                              "finite numbers", aperture, focal_distance);
-    f->camera = scene->camera;
+    f->camera = *camera;
     f->x0 = options->region.x0;
     f->y0 = options->region.y0;
     f->width = plan->width;
@@ -221,15 +239,15 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
     f->stratified = options->sampling == RT_SAMPLING_STRATIFIED;
     f->aperture = aperture;
     f->focal_distance = focal_distance;
-    f->view_axis = v3_normalize(v3_sub(scene->camera.screen_center,
-                                       scene->camera.observer));
-    f->lens_right = v3_normalize(scene->camera.right);
-    f->lens_up = v3_normalize(scene->camera.up);
+    f->view_axis = v3_normalize(v3_sub(camera->screen_center,
+                                       camera->observer));
+    f->lens_right = v3_normalize(camera->right);
+    f->lens_up = v3_normalize(camera->up);
     f->settings = (rt_trace_settings){options->max_depth,
                                       options->fast_inv_sqrt != 0,
                                       options->kernel, NULL, 0, NULL, 0};
-    rt_status status = rt_scene_check_precision(scene, options->precision,
-                                                error);
+    rt_status status = rt__scene_check_precision_with(
+        scene, camera, options->precision, error);
     if (status != RT_OK)
         return status;
     /* The float kernel is built by the first float render and kept with
@@ -250,13 +268,28 @@ rt_status rt__frame_prepare(rt_frame *f, const rt_scene *scene,
         !f->settings.kdtree) {
         if (rt__kernel_prepare_blocks(f->kernel) != RT_OK)
             return rt__render_out_of_memory(error);
-        f->settings.eye = rt__scene_eye(scene, options->precision);
+        /* The scene's eye serves its own observer; another camera's is
+         * made for this frame and released with it. */
+        if (same_point(camera->observer, scene->camera.observer)) {
+            f->settings.eye = rt__scene_eye(scene, options->precision);
+        } else {
+            f->own_eye = rt__kernel_eye_create(f->kernel, camera->observer);
+            f->settings.eye = f->own_eye;
+        }
         if (f->settings.eye == NULL)
             return rt__render_out_of_memory(error);
     }
     f->camera.width = plan->full_width;
     f->camera.height = plan->full_height;
     return RT_OK;
+}
+
+void rt__frame_release(rt_frame *frame)
+{
+    if (frame->own_eye != NULL)
+        rt__kernel_eye_destroy(frame->kernel, frame->own_eye);
+    frame->own_eye = NULL;
+    frame->settings.eye = NULL;
 }
 
 rt_status rt__frame_setup(const rt_scene *scene,
@@ -306,8 +339,17 @@ static rt_status check_image(const rt_render_plan *plan, int row_begin,
 }
 
 rt_status rt_render_rows(const rt_scene *scene,
+                         const rt_render_options *options, int row_begin,
+                         int row_end, rt_image *image, rt_error *error)
+{
+    return rt__render_job(scene, options, row_begin, row_end, image, NULL,
+                          -1, error);
+}
+
+rt_status rt__render_job(const rt_scene *scene,
                          const rt_render_options *caller_options,
                          int row_begin, int row_end, rt_image *image,
+                         const rt_row_work *work, int max_depth,
                          rt_error *error)
 {
     if (scene == NULL || image == NULL)
@@ -325,11 +367,13 @@ rt_status rt_render_rows(const rt_scene *scene,
 
     double start = rt__clock_seconds();
     job j = {.scene = scene, .options = options, .image = image,
-             .row_end = row_end};
+             .work = work, .row_end = row_end};
     status = rt__frame_prepare(&j.frame, scene, &plan, options->cancel,
                                error);
     if (status != RT_OK)
         return status;
+    if (max_depth >= 0)
+        j.frame.settings.max_depth = max_depth;
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
     pthread_mutex_init(&j.callback_lock, NULL);
@@ -338,13 +382,14 @@ rt_status rt_render_rows(const rt_scene *scene,
     rt__workers_run(n > 1 ? rt__scene_workers(scene) : NULL, n, worker, &j);
     pthread_mutex_destroy(&j.callback_lock);
     pthread_mutex_destroy(&j.stats_lock);
+    rt__frame_release(&j.frame);
 
     if (options->stats != NULL)
         fill_stats(&j, rt__clock_seconds() - start, options->stats);
-    if (atomic_load(&j.cancelled))
-        return cancelled(error);
     if (j.totals.out_of_memory)
         return rt__render_out_of_memory(error);
+    if (atomic_load(&j.cancelled))
+        return cancelled(error);
     return RT_OK;
 }
 

@@ -19,7 +19,10 @@
 
 /* A render's options once taken and checked, with what they imply. */
 typedef struct rt_render_plan {
-    rt_render_options options;  /* the caller's, defaults beyond its size */
+    rt_render_options options;  /* the caller's, defaults beyond its size;
+                                   options.camera points at `camera` */
+    rt_camera camera;           /* the render's: the caller's copy (checked
+                                   by rt__render_check), else the scene's */
     int full_width, full_height;    /* the whole image */
     int width, height;          /* the output image: the region's */
     int grid;                   /* samples per side of a pixel */
@@ -53,7 +56,8 @@ rt_status rt__render_out_of_memory(rt_error *error);
 /* What the pixel loops read of one render, set up once per call and then
  * only read, by every thread. */
 typedef struct rt_frame {
-    rt_camera camera;       /* the scene's, at the render's image size */
+    rt_camera camera;       /* the render's (rt_render_plan.camera), at
+                               the render's image size */
     int x0, y0;             /* the region's top-left pixel in that image */
     int width;              /* the output image's width: the region's */
     int grid;               /* samples per side of a pixel */
@@ -66,6 +70,8 @@ typedef struct rt_frame {
     const rt_kernel *kernel;    /* the scene's, in the render's precision */
     rt_trace_settings settings;
     rt_octree_info octree;  /* when settings.octree */
+    rt_kernel_eye *own_eye; /* the eye of a camera other than the scene's,
+                               made for this frame (rt__frame_release) */
 } rt_frame;
 
 /*
@@ -80,6 +86,11 @@ typedef struct rt_frame {
 rt_status rt__frame_prepare(rt_frame *frame, const rt_scene *scene,
                             const rt_render_plan *plan,
                             const rt_cancel *cancel, rt_error *error);
+
+/* Frees what rt__frame_prepare made for this frame alone (the eye of a
+ * camera other than the scene's); every frame prepared, successfully or
+ * not, is released.  Idempotent. */
+void rt__frame_release(rt_frame *frame);
 
 /* The frame of a render of `scene` with `options` (NULL: the defaults),
  * taken, checked and prepared as rt_render does it (the same statuses and
@@ -122,5 +133,35 @@ int rt__frame_row(const rt_frame *frame, int row, unsigned char *out,
  * all its samples as rendered; else that one sample. */
 rt_color rt__frame_pixel(const rt_frame *frame, int x, int y, int sample,
                          rt_counters *counters);
+
+/* ---- jobs of rows (render.c) ---------------------------------------- */
+
+/*
+ * What a job of rows computes in each row, when it is not the picture
+ * (rt__frame_row): a debug view's pixels (explain.c).  `row` renders row
+ * `row` of the output image into `out`, polling `stop` before each pixel
+ * and adding its work to *counters; 0 when it stopped (or ran out of
+ * memory: counters->out_of_memory set).  *thread is the calling thread's
+ * own state, NULL at its first row; `thread_end` (may be NULL) frees it
+ * when the thread leaves the job.  With `report_rows` 0, on_row is not
+ * called by the job (the caller reports the rows itself once written).
+ */
+typedef struct rt_row_work {
+    int (*row)(void *user, const rt_frame *frame, int row, unsigned char *out,
+               const rt_stop *stop, rt_counters *counters, void **thread);
+    void (*thread_end)(void *user, void *thread);
+    void *user;
+    int report_rows;
+} rt_row_work;
+
+/* rt_render_rows with `work` in each row (NULL: the picture) and the
+ * frame's depth replaced by `max_depth` when it is >= 0 (a view that reads
+ * only the camera ray's hit traces no bounce).  The same checks, threads,
+ * cancellation, statistics and statuses. */
+rt_status rt__render_job(const rt_scene *scene,
+                         const rt_render_options *options, int row_begin,
+                         int row_end, rt_image *image,
+                         const rt_row_work *work, int max_depth,
+                         rt_error *error);
 
 #endif /* RAYTRACE_RENDER_INTERNAL_H */

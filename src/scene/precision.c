@@ -27,10 +27,18 @@ rt_status rt_scene_check_precision(const rt_scene *scene,
     if (scene == NULL)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected a scene");
+    return rt__scene_check_precision_with(scene, &scene->camera, precision,
+                                          error);
+}
+
+rt_status rt__scene_check_precision_with(const rt_scene *scene,
+                                         const rt_camera *c,
+                                         rt_precision precision,
+                                         rt_error *error)
+{
     rt_status status = rt__precision_check(precision, error);
     if (status != RT_OK || precision == RT_PRECISION_DOUBLE)
         return status;
-    const rt_camera *c = &scene->camera;
     double largest = fmax(v3_max_abs(c->observer),
                           v3_max_abs(v3_add(c->screen_center,
                                             v3_add(v3_abs(c->right),

@@ -459,6 +459,7 @@ rt_status rt__scene_build_releasing(const rt_scene_desc *d, const char *name,
         s->camera.aperture = d->aperture;
     if (d->focal_distance > 0.0)
         s->camera.focal_distance = d->focal_distance;
+    s->focus_given = d->focal_distance > 0.0;
     s->up.axis = d->up_axis, s->up.cue = d->up_cue;
     s->up.line = d->up_cue_line;
 

@@ -46,6 +46,8 @@ int rt__scene_facet_smooth(const struct rt_scene *s,
 struct rt_scene {
     char *name;
     rt_camera camera;
+    int focus_given;            /* the file set the focal distance (else
+                                   |AO|, which rt_scene_look recomputes) */
     rt_vec3 *vertices;
     rt_vec3 *vertex_normals;    /* NULL when no vertex has a normal; else
                                    per vertex, unit or zero (none) */
@@ -140,5 +142,12 @@ struct rt_workers *rt__scene_workers(const rt_scene *scene);
 /* RT_OK for a precision rt_precision names, else RT_ERR_ARGUMENT with the
  * reason in *error (may be NULL). */
 rt_status rt__precision_check(rt_precision precision, rt_error *error);
+
+/* rt_scene_check_precision of `scene` seen through `camera` (the scene's,
+ * or a render's own: rt_render_options.camera). */
+rt_status rt__scene_check_precision_with(const rt_scene *scene,
+                                         const rt_camera *camera,
+                                         rt_precision precision,
+                                         rt_error *error);
 
 #endif /* RAYTRACE_SCENE_INTERNAL_H */
