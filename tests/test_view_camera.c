@@ -30,9 +30,10 @@
 #define PI 3.14159265358979323846
 
 /* The three formats: a .scn with its camera, an NFF with its view, an OBJ
- * with the automatic camera. */
+ * with the automatic camera; and a .scn with a lens. */
 static const char *const scene_files[] = {
     "scenes/cubes.scn", "scenes/nff-sphere.nff", "tests/data/obj/cube.obj",
+    "scenes/focus.scn",         /* a lens: a, f in the screen record */
 };
 #define SCENE_FILES (int)(sizeof scene_files / sizeof *scene_files)
 

@@ -282,6 +282,36 @@ static void put_point(text *t, const char *separator, rt_vec3 p)
     put(t, "%.17g%s%.17g%s%.17g", p.x, separator, p.y, separator, p.z);
 }
 
+/* Whether the screen record needs the lens `a, f` to give `camera`: a
+ * lens, or a focal distance other than the one a file without them gets
+ * (|AO| as the library computes it: asked of a scene of no facets built
+ * from the same three points). */
+static int needs_lens(const rt_camera *camera, rt_vec3 b)
+{
+    if (camera->aperture != 0)
+        return 1;
+    rt_light light;
+    memset(&light, 0, sizeof light);
+    light.position = camera->observer;
+    rt_scene_desc desc;
+    memset(&desc, 0, sizeof desc);
+    desc.observer = camera->observer;
+    desc.screen_center = camera->screen_center;
+    desc.screen_right = b;
+    desc.width = camera->width;
+    desc.height = camera->height;
+    desc.lights = &light;
+    desc.light_count = 1;
+    rt_scene *bare = NULL;
+    if (rt_scene_create(&desc, &bare, NULL) != RT_OK)
+        return 1;
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(bare, &info);
+    rt_scene_destroy(bare);
+    double plain = info.camera.focal_distance;
+    return memcmp(&plain, &camera->focal_distance, sizeof plain) != 0;
+}
+
 rt_status view_camera_describe(const rt_scene *scene, const char *name,
                                const rt_look *look, char *buffer,
                                size_t size, rt_error *error)
@@ -315,10 +345,7 @@ rt_status view_camera_describe(const rt_scene *scene, const char *name,
         put(&t, ", ");
         put_point(&t, ", ", b);
         put(&t, ", %d, %d", camera.width, camera.height);
-        /* The lens only when the default (a pinhole in focus at |AO|)
-         * would not give the same camera. */
-        double ao = length(sub(camera.screen_center, camera.observer));
-        if (camera.aperture != 0 || camera.focal_distance != ao)
+        if (needs_lens(&camera, b))
             put(&t, ", %.17g, %.17g", camera.aperture, camera.focal_distance);
         put(&t, "\n");
     }
