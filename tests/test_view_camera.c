@@ -846,6 +846,7 @@ static Suite *view_camera_suite(void)
 {
     Suite *suite = suite_create("view_camera");
     TCase *moves = tcase_create("moves");
+    tcase_set_timeout(moves, 120);  /* under valgrind */
     tcase_add_test(moves, orbit_keeps_the_target_at_the_centre_and_its_distance);
     tcase_add_test(moves,
                    orbit_yaw_turns_about_the_world_up_and_pitch_stops_short_of_it);
@@ -859,6 +860,7 @@ static Suite *view_camera_suite(void)
     tcase_add_test(moves, a_picked_point_becomes_the_target_at_the_image_centre);
     suite_add_tcase(suite, moves);
     TCase *text = tcase_create("text");
+    tcase_set_timeout(text, 120);
     tcase_add_test(text, c_text_reads_back_as_rt_export_options_bit_for_bit);
     tcase_add_test(text, c_text_reads_back_as_scn_camera_records_bit_for_bit);
     tcase_add_test(text, c_text_of_the_files_camera_needs_no_options);

@@ -111,7 +111,7 @@ static void measure(view_app *app, Uint32 window_id)
                               rect[2];
 }
 
-static void press(view_app *app, const SDL_MouseButtonEvent *button)
+static void on_press(view_app *app, const SDL_MouseButtonEvent *button)
 {
     view_move *m = &app->move;
     if (m->button)
@@ -138,7 +138,7 @@ static void press(view_app *app, const SDL_MouseButtonEvent *button)
     }
 }
 
-static void motion(view_app *app, const SDL_MouseMotionEvent *motion)
+static void on_motion(view_app *app, const SDL_MouseMotionEvent *motion)
 {
     view_move *m = &app->move;
     if (!m->button || app->session == NULL)
@@ -158,7 +158,7 @@ static void motion(view_app *app, const SDL_MouseMotionEvent *motion)
     m->pending = 1;
 }
 
-static void release(view_app *app, const SDL_MouseButtonEvent *button)
+static void on_release(view_app *app, const SDL_MouseButtonEvent *button)
 {
     view_move *m = &app->move;
     if (button->button != m->button)
@@ -173,7 +173,7 @@ static void release(view_app *app, const SDL_MouseButtonEvent *button)
         view_app__clear_explanation(app);
 }
 
-static void wheel(view_app *app, const SDL_MouseWheelEvent *wheel)
+static void on_wheel(view_app *app, const SDL_MouseWheelEvent *wheel)
 {
     view_move *m = &app->move;
     double notches = wheel->y;
@@ -189,7 +189,7 @@ static void wheel(view_app *app, const SDL_MouseWheelEvent *wheel)
 }
 
 /* The keys of the camera: 1 when `key` is one. */
-static int key(view_app *app, const SDL_KeyboardEvent *event)
+static int on_key(view_app *app, const SDL_KeyboardEvent *event)
 {
     view_move *m = &app->move;
     double steps = (event->keysym.mod & KMOD_SHIFT) ? FLY_FAST : 1;
@@ -223,19 +223,19 @@ int view_app__move_event(view_app *app, const SDL_Event *event)
     follow_scene(app);
     switch (event->type) {
     case SDL_MOUSEBUTTONDOWN:
-        press(app, &event->button);
+        on_press(app, &event->button);
         return 1;
     case SDL_MOUSEBUTTONUP:
-        release(app, &event->button);
+        on_release(app, &event->button);
         return 1;
     case SDL_MOUSEMOTION:
-        motion(app, &event->motion);
+        on_motion(app, &event->motion);
         return 1;
     case SDL_MOUSEWHEEL:
-        wheel(app, &event->wheel);
+        on_wheel(app, &event->wheel);
         return 1;
     case SDL_KEYDOWN:
-        return key(app, &event->key);
+        return on_key(app, &event->key);
     default:
         return 0;
     }
