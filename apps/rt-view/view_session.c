@@ -71,8 +71,7 @@ static void *worker_main(void *arg)
     options.on_row = on_row;
     options.user = session;
     options.cancel = session->cancel;
-    if (session->camera_given)  /* placeholder until r-prog merges */
-        options.camera = &session->camera;
+    options.camera = session->camera_given ? &session->camera : NULL;
     rt_status status = rt_render_rows(session->scene, &options, 0,
                                       session->image.height, &session->image,
                                       NULL);
