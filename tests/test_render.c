@@ -69,7 +69,6 @@ static void check_expected_image(const char *name, int samples,
     rt_render_options options;
     rt_render_options_init(&options);
     options.samples = samples;
-    rt_image actual = rt_test_render_with(scene, &options);
 
     snprintf(relative, sizeof relative, "tests/expected/%s.ppm",
              expected_name);
@@ -79,6 +78,23 @@ static void check_expected_image(const char *name, int samples,
                                    &error);
     ck_assert_msg(status == RT_OK, "scene %s has no usable expected image: %s",
                   name, error.message);
+    if (rt_test_memcheck()) {
+        /* Under valgrind (.ci/memcheck) only the middle quarter of the
+         * rows, whose pixels are the whole image's there (a region): the
+         * same code paths at a quarter of the time. */
+        int y0 = expected.height * 3 / 8, y1 = expected.height * 5 / 8;
+        options.region = (rt_region){0, y0, expected.width, y1};
+        rt_image band;
+        ck_assert(rt_image_init(&band, expected.width, y1 - y0, NULL) ==
+                  RT_OK);
+        for (int y = y0; y < y1; y++)
+            memcpy(rt_image_pixel(&band, 0, y - y0),
+                   rt_image_pixel(&expected, 0, y),
+                   (size_t)expected.width * 3);
+        rt_image_release(&expected);
+        expected = band;
+    }
+    rt_image actual = rt_test_render_with(scene, &options);
     ck_assert_msg(expected.width == actual.width &&
                       expected.height == actual.height,
                   "%s: expected %dx%d, rendered %dx%d", name, expected.width,
