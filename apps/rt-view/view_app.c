@@ -210,13 +210,16 @@ static void handle_event(view_app *app, SDL_Event *event)
         app->quit = 1;
         break;
     case SDL_KEYDOWN:
-        view_app_key(app, event->key.keysym.sym, event->key.repeat);
+        if (!view_app__move_event(app, event))
+            view_app_key(app, event->key.keysym.sym, event->key.repeat);
         break;
     case SDL_MOUSEBUTTONDOWN:
-        if (event->button.button == SDL_BUTTON_LEFT)
-            view_app_click(app, event->button.x, event->button.y);
-        else if (event->button.button == SDL_BUTTON_RIGHT)
-            view_app__clear_explanation(app);
+    case SDL_MOUSEBUTTONUP:
+    case SDL_MOUSEMOTION:
+    case SDL_MOUSEWHEEL:
+        /* drags move the camera; a click without motion explains the
+         * pixel (left) or clears (right) on its release (view_move.c) */
+        view_app__move_event(app, event);
         break;
     case SDL_DROPFILE:
         view_app_open(app, event->drop.file);
@@ -277,6 +280,7 @@ void view_app_run(view_app *app)
             while (!app->quit && SDL_PollEvent(&event))
                 handle_event(app, &event);
         }
+        view_app__apply_moves(app);  /* the turn's moves: one restart */
         view_app__take_signal(app);
         if (app->quit)
             break;

@@ -32,7 +32,17 @@ const char view_app_keys_help[] =
     "M shading normal (smooth facets)\n"
     "V, 0     the picture\n"
     "S save   R reload   + - depth\n"
-    "H, F1    this help  Q quit\n";
+    "H, F1    this help  Q quit\n"
+    "Camera\n"
+    "left drag    orbit round the target\n"
+    "right, middle or Shift+left drag  pan\n"
+    "wheel        closer / farther\n"
+    "[ ], Ctrl+wheel  field of view\n"
+    "arrows       fly (Shift: faster)\n"
+    "PgUp PgDn    fly up / down\n"
+    "double-click the target there\n"
+    "Home         the file's camera\n"
+    "C            print the camera\n";
 
 /* How the title and the messages name each view (an rt_debug_view). */
 static const char *const view_names[] = {

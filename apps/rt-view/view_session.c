@@ -18,6 +18,10 @@ struct view_session {
     rt_scene *scene;
     rt_image image;
     view_session_options options;
+    /* placeholder until r-prog merges: the camera of the render under
+     * way (the worker reads it), and the one the next start takes */
+    rt_camera camera, next_camera;
+    int camera_given, next_camera_given;
 
     pthread_t worker;
     int worker_joinable;        /* controlling thread only */
@@ -67,6 +71,7 @@ static void *worker_main(void *arg)
     options.on_row = on_row;
     options.user = session;
     options.cancel = session->cancel;
+    options.camera = session->camera_given ? &session->camera : NULL;
     rt_status status = rt_render_rows(session->scene, &options, 0,
                                       session->image.height, &session->image,
                                       NULL);
@@ -187,6 +192,8 @@ void view_session_cancel(view_session *session)
 rt_status view_session_start(view_session *session)
 {
     view_session_cancel(session);
+    session->camera = session->next_camera;  /* placeholder until r-prog */
+    session->camera_given = session->next_camera_given;
     int height = session->image.height;
     memset(session->image.pixels, 0, session->image.stride * (size_t)height);
 
@@ -220,6 +227,16 @@ rt_status view_session_set_depth(view_session *session, int max_depth)
     if (max_depth < 0 || max_depth > VIEW_MAX_DEPTH)
         return RT_ERR_ARGUMENT;
     session->options.render.max_depth = max_depth;
+    return RT_OK;
+}
+
+/* Placeholder until r-prog merges. */
+rt_status view_session_set_camera(view_session *session,
+                                  const rt_camera *camera)
+{
+    session->next_camera_given = camera != NULL;
+    if (camera)
+        session->next_camera = *camera;
     return RT_OK;
 }
 

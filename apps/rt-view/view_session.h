@@ -105,6 +105,11 @@ void view_session_request_cancel(view_session *session);
  * RT_ERR_ARGUMENT. */
 rt_status view_session_set_depth(view_session *session, int max_depth);
 
+/* Placeholder until r-prog merges: the camera the next start renders with
+ * (copied; NULL: the scene's own).  RT_OK. */
+rt_status view_session_set_camera(view_session *session,
+                                  const rt_camera *camera);
+
 /*
  * Moves the rows finished since the last call into `rows` (at most
  * `capacity` of them, in increasing order; the rest stay for the next call)
