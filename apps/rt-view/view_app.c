@@ -175,6 +175,9 @@ rt_render_options view_app__render_options(const view_app *app,
         render.width = view_scale_side(info.width, app->options.scale);
         render.height = view_scale_side(info.height, app->options.scale);
     }
+    /* A moved camera is the picture's, its explanations' and overlays'. */
+    if (app->move.moved && scene == app->move.scene)
+        render.camera = &app->move.camera;
     return render;
 }
 

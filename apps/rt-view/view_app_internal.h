@@ -91,7 +91,8 @@ void view_app__update_title(view_app *app);
 void view_app__start_render(view_app *app);
 
 /* The render options of the picture of `scene`: the app's, with --scale
- * giving the size when --size did not. */
+ * giving the size when --size did not, and the moved camera (pointing
+ * into app->move: valid until the next move) once the camera moved. */
 rt_render_options view_app__render_options(const view_app *app,
                                            const rt_scene *scene);
 
