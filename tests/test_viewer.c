@@ -418,21 +418,25 @@ END_TEST
 
 START_TEST(image_is_saved_next_to_the_scene)
 {
+    /* rt-export's default output name (the stem, whatever the extension),
+     * in the scene's folder. */
     char path[64];
-    ck_assert(view_scene_image_path("scenes/cubes.scn", ".ppm", path,
+    ck_assert(view_scene_image_path("scenes/cubes.scn", RT_IMAGE_P6, path,
                                     sizeof path));
     ck_assert_str_eq(path, "scenes/cubes.ppm");
-    ck_assert(view_scene_image_path("scenes/cubes.scn", ".png", path,
+    ck_assert(view_scene_image_path("scenes/cubes.scn", RT_IMAGE_PNG, path,
                                     sizeof path));
     ck_assert_str_eq(path, "scenes/cubes.png");
-    ck_assert(view_scene_image_path("/a.b/scene", ".ppm", path, sizeof path));
+    ck_assert(view_scene_image_path("/a.b/scene", RT_IMAGE_P6, path,
+                                    sizeof path));
     ck_assert_str_eq(path, "/a.b/scene.ppm");
-    ck_assert(view_scene_image_path("x.txt", ".ppm", path, sizeof path));
-    ck_assert_str_eq(path, "x.txt.ppm");
-    ck_assert(view_scene_image_path("dir/.scn", ".ppm", path, sizeof path));
+    ck_assert(view_scene_image_path("x.txt", RT_IMAGE_P6, path, sizeof path));
+    ck_assert_str_eq(path, "x.ppm");
+    ck_assert(view_scene_image_path("dir/.scn", RT_IMAGE_P6, path,
+                                    sizeof path));
     ck_assert_str_eq(path, "dir/.scn.ppm");
-    ck_assert(!view_scene_image_path("a-rather-long-name.scn", ".ppm", path,
-                                     8));
+    ck_assert(!view_scene_image_path("a-rather-long-name.scn", RT_IMAGE_P6,
+                                     path, 8));
 }
 END_TEST
 

@@ -10,6 +10,7 @@
  */
 #include <check.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -121,12 +122,103 @@ START_TEST(save_refuses_the_material_library_its_obj_read)
 }
 END_TEST
 
+/* Copies source file `from` into `dir` as `name`; the copy's path. */
+static const char *copy_in(const char *dir, const char *from,
+                           const char *name)
+{
+    char *text = rt_test_read_file(rt_test_source_path(from), NULL);
+    ck_assert_ptr_nonnull(text);
+    const char *path = rt_test_in_dir(dir, name);
+    rt_test_write_file(path, text);
+    free(text);
+    return path;
+}
+
+static int exists(const char *path)
+{
+    struct stat info;
+    return stat(path, &info) == 0;
+}
+
+/* An app saving in its default format (PNG when this build writes it),
+ * rendering `samples` rays a pixel on one thread, at 32 x 24. */
+static view_app *open_default_app(int samples)
+{
+    view_app_options options;
+    rt_test_view_app_options(&options);
+    options.render.width = 32;
+    options.render.height = 24;
+    options.render.samples = samples;
+    options.render.threads = 1;
+    return rt_test_view_app_open(&options);
+}
+
+START_TEST(saves_are_named_after_the_scenes_stem_whatever_its_extension)
+{
+    char *dir = rt_test_temp_dir();
+    copy_in(dir, "tests/data/obj/cube.mtl", "cube.mtl");
+    struct {
+        const char *from, *name, *stem;
+    } scenes[] = {
+        {"scenes/nff-sphere.nff", "balls-s2.nff", "balls-s2"},
+        {"tests/data/obj/cube.obj", "cube.obj", "cube"},
+        {"scenes/cubes.scn", "my.scene.scn", "my.scene"},
+    };
+    view_app_options defaults;
+    view_app_options_init(&defaults);
+    const char *extension =
+        defaults.format == RT_IMAGE_PNG ? ".png" : ".ppm";
+    for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++) {
+        char scene[4200], expected[8600], wrong[8600];
+        snprintf(scene, sizeof scene, "%s",
+                 copy_in(dir, scenes[i].from, scenes[i].name));
+        view_app *app = open_default_app(1);
+        ck_assert_msg(view_app_open(app, scene) && view_app_wait_load(app),
+                      "%s", view_app_message(app));
+        ck_assert_int_eq(rt_test_view_wait(view_app_session(app)),
+                         VIEW_DONE);
+        char path[4200];
+        for (int n = 1; n <= 2; n++) {
+            ck_assert_msg(view_app_save(app, path, sizeof path), "%s",
+                          view_app_message(app));
+            snprintf(expected, sizeof expected, "%s/%s-%d%s", dir,
+                     scenes[i].stem, n, extension);
+            ck_assert_str_eq(path, expected);
+            ck_assert(exists(expected));
+            snprintf(wrong, sizeof wrong, "%s-%d%s", scene, n, extension);
+            ck_assert_msg(!exists(wrong), "%s", wrong);
+        }
+        rt_test_view_app_close(app);
+
+        /* 1024 rays a pixel on one thread, stopped at once: surely
+         * unfinished when S is pressed. */
+        app = open_default_app(1024);
+        ck_assert(view_app_open(app, scene) && view_app_wait_load(app));
+        view_session *session = view_app_session(app);
+        view_session_cancel(session);
+        view_progress progress;
+        view_session_get_progress(session, &progress);
+        ck_assert_int_lt(progress.rows_done, progress.rows_total);
+        ck_assert(view_app_save(app, path, sizeof path));
+        snprintf(expected, sizeof expected, "%s/%s-partial-1%s", dir,
+                 scenes[i].stem, extension);
+        ck_assert_str_eq(path, expected);
+        snprintf(wrong, sizeof wrong, "%s-partial-1%s", scene, extension);
+        ck_assert_msg(!exists(wrong), "%s", wrong);
+        rt_test_view_app_close(app);
+    }
+    rt_test_remove_dir(dir);
+}
+END_TEST
+
 static Suite *outputs_suite(void)
 {
     Suite *s = suite_create("viewer_outputs");
     TCase *c = tcase_create("save");
     tcase_set_timeout(c, 120);
     tcase_add_test(c, save_refuses_an_output_that_is_the_scene);
+    tcase_add_test(c,
+                   saves_are_named_after_the_scenes_stem_whatever_its_extension);
     suite_add_tcase(s, c);
     return s;
 }

@@ -3,8 +3,11 @@
  * point maps to the image pixel under it, a pixel's camera ray projects
  * back to its centre, segments behind the observer are clipped, each ray
  * of an explanation is drawn in its colour along its projection, a
- * shadowed pixel shows its blocker, and the debug-view keys and --view
- * change what the window shows.  On SDL's dummy video driver (no display).
+ * shadowed pixel shows its blocker, a click on a pixel of several samples
+ * draws the one sample under it (regular, stratified, through a lens;
+ * Tab steps to the others) with a text panel that leaves the picture
+ * visible, and the debug-view keys and --view change what the window
+ * shows.  On SDL's dummy video driver (no display).
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -22,6 +25,7 @@
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
+#include "cli_explain.h"
 #include "testutil.h"
 #include "view_scene.h"
 #include "viewer.h"
@@ -339,6 +343,455 @@ START_TEST(a_shadowed_pixel_shows_its_blocker_in_red_over_the_image)
 }
 END_TEST
 
+/* ---- a pixel of several samples: the one under the click ---- */
+
+/* An app showing `scene` (a source path) rendered with `samples` rays a
+ * pixel (`sampling`), at width x height (0: the scene's), finished. */
+static view_app *open_sampled_app(const char *scene, int samples,
+                                  rt_sampling sampling, int width,
+                                  int height)
+{
+    view_app_options options;
+    rt_test_view_app_options(&options);
+    options.format = RT_IMAGE_P6;
+    options.render.samples = samples;
+    options.render.sampling = sampling;
+    options.render.threads = 1;
+    options.render.width = width;
+    options.render.height = height;
+    view_app *app = rt_test_view_app_open(&options);
+    ck_assert(rt_test_view_app_load(app, rt_test_source_path(scene)));
+    rt_test_view_app_image(app);
+    view_window_sync(view_app_window(app));
+    return app;
+}
+
+/* The render options the app above renders with. */
+static rt_render_options sampled_options(int samples, rt_sampling sampling,
+                                         int width, int height)
+{
+    rt_render_options options;
+    rt_render_options_init(&options);
+    options.samples = samples;
+    options.sampling = sampling;
+    options.threads = 1;
+    options.width = width;
+    options.height = height;
+    return options;
+}
+
+/* The library's tree of sample k of pixel (x, y), asked directly. */
+static rt_ray_tree *sample_tree(const view_app *app_const, int x, int y,
+                                int k, const rt_render_options *options)
+{
+    view_app *app = (view_app *)app_const;
+    rt_ray_tree *tree;
+    rt_error error;
+    ck_assert_msg(rt_explain_pixel(view_session_scene(view_app_session(app)),
+                                   options, x, y, k, &tree, &error) == RT_OK,
+                  "%s", error.message);
+    return tree;
+}
+
+/* The rays of `tree` the overlay can draw (all but shadow rays not cast),
+ * and in *cameras its camera rays. */
+static int drawable_rays(const rt_ray_tree *tree, int *cameras)
+{
+    size_t count;
+    const rt_ray_node *nodes = rt_ray_tree_nodes(tree, &count);
+    int drawable = 0;
+    *cameras = 0;
+    for (size_t i = 0; i < count; i++) {
+        drawable += !(nodes[i].kind == RT_RAY_SHADOW && !nodes[i].cast);
+        *cameras += nodes[i].kind == RT_RAY_CAMERA;
+    }
+    return drawable;
+}
+
+/* The direction of the camera ray through image point (px, py) of a w x h
+ * image of `camera`, by the rendering model's formula (pinhole), unit. */
+static rt_vec3 model_direction(const rt_camera *camera, int w, int h,
+                               double px, double py)
+{
+    double s = (2 * px - w) / w, t = (h - 2 * py) / w;
+    rt_vec3 p = {camera->screen_center.x + s * camera->right.x +
+                     t * camera->up.x,
+                 camera->screen_center.y + s * camera->right.y +
+                     t * camera->up.y,
+                 camera->screen_center.z + s * camera->right.z +
+                     t * camera->up.z};
+    rt_vec3 d = {p.x - camera->observer.x, p.y - camera->observer.y,
+                 p.z - camera->observer.z};
+    return unit(d);
+}
+
+/* The formatter's text of `tree` (rt-export's words), in a new string. */
+static char *formatted(const rt_ray_tree *tree, const char *name, int x,
+                       int y, int samples)
+{
+    char *data = NULL;
+    size_t size = 0;
+    FILE *out = open_memstream(&data, &size);
+    ck_assert_ptr_nonnull(out);
+    cli_explain_print_text(out, tree, name, x, y, samples);
+    ck_assert_int_eq(fclose(out), 0);
+    return data;
+}
+
+/* Asserts that the explanation draws sample k of its pixel: one camera
+ * ray, the library's for sample k; as many segments as that sample's
+ * tree has rays to draw, fewer than the whole pixel's; its text the
+ * formatter's for that tree. */
+static void assert_draws_sample(const view_app *app, int k,
+                                const rt_render_options *options)
+{
+    const view_explanation *e = view_app_explanation(app);
+    ck_assert_ptr_nonnull(e);
+    ck_assert_int_eq(e->sample, k);
+    rt_ray_tree *tree = sample_tree(app, e->x, e->y, k, options);
+    rt_ray_tree *whole = sample_tree(app, e->x, e->y, -1, options);
+    int cameras, whole_cameras;
+    int drawable = drawable_rays(tree, &cameras);
+    int whole_drawable = drawable_rays(whole, &whole_cameras);
+    ck_assert_int_eq(cameras, 1);
+    ck_assert_int_eq(whole_cameras, options->samples);
+    ck_assert_int_eq(e->segment_count, drawable);
+    ck_assert_int_lt(e->segment_count, whole_drawable);
+    int camera_segments = 0;
+    for (int i = 0; i < e->segment_count; i++)
+        camera_segments += e->segments[i].kind == VIEW_RAY_CAMERA;
+    ck_assert_int_eq(camera_segments, 1);
+    const rt_ray_node *ray = rt_ray_tree_nodes(tree, NULL);
+    ck_assert_int_eq(e->first.kind, RT_RAY_CAMERA);
+    ck_assert_int_eq(e->first.sample, k);
+    ck_assert_double_eq_tol(e->first.direction.x, ray[0].direction.x, 1e-12);
+    ck_assert_double_eq_tol(e->first.direction.y, ray[0].direction.y, 1e-12);
+    ck_assert_double_eq_tol(e->first.direction.z, ray[0].direction.z, 1e-12);
+    ck_assert_double_eq_tol(e->first.origin.x, ray[0].origin.x, 1e-12);
+    ck_assert_double_eq_tol(e->first.origin.y, ray[0].origin.y, 1e-12);
+    ck_assert_double_eq_tol(e->first.origin.z, ray[0].origin.z, 1e-12);
+    char *text = formatted(tree, "name", e->x, e->y, options->samples);
+    /* the same lines but the first, which names the scene */
+    ck_assert_str_eq(strchr(e->sample_text, '\n'), strchr(text, '\n'));
+    free(text);
+    rt_ray_tree_destroy(tree);
+    rt_ray_tree_destroy(whole);
+}
+
+START_TEST(a_click_with_four_samples_draws_only_the_sample_under_it)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    rt_render_options options =
+        sampled_options(4, RT_SAMPLING_REGULAR, 0, 0);
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(view_session_scene(view_app_session(app)), &info);
+    const int x = 268, y = 124;
+    /* A regular 2 x 2 grid: sample sy * 2 + sx at the centre of cell
+     * (sx, sy), the top-left quarter first (src/render/pixel.c). */
+    for (int k = 0; k < 4; k++) {
+        int sx = k % 2, sy = k / 2;
+        double px = x + (sx ? 0.8 : 0.2), py = y + (sy ? 0.7 : 0.3);
+        ck_assert(view_app_explain_at(app, px, py));
+        assert_draws_sample(app, k, &options);
+        const view_explanation *e = view_app_explanation(app);
+        ck_assert_int_eq(e->x, x);
+        ck_assert_int_eq(e->y, y);
+        /* its ray goes through the centre of its cell, as the model
+         * says */
+        rt_vec3 expected = model_direction(&info.camera, info.width,
+                                           info.height, x + (sx + 0.5) / 2,
+                                           y + (sy + 0.5) / 2);
+        rt_vec3 actual = unit(e->first.direction);
+        ck_assert_double_eq_tol(actual.x, expected.x, 1e-9);
+        ck_assert_double_eq_tol(actual.y, expected.y, 1e-9);
+        ck_assert_double_eq_tol(actual.z, expected.z, 1e-9);
+        /* the pixel's value stays the pixel's: the byte shown */
+        const unsigned char *shown =
+            rt_image_pixel(view_session_image(view_app_session(app)), x, y);
+        ck_assert_int_eq(rt_channel_to_byte(e->value.r), shown[0]);
+        ck_assert_int_eq(rt_channel_to_byte(e->value.g), shown[1]);
+        ck_assert_int_eq(rt_channel_to_byte(e->value.b), shown[2]);
+    }
+    /* The pixel's centre, equally near all four: the first. */
+    ck_assert(view_app_explain(app, x, y));
+    ck_assert_int_eq(view_app_explanation(app)->sample, 0);
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+START_TEST(the_sample_drawn_is_in_rt_exports_words)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    const int x = 268, y = 124;
+    ck_assert(view_app_explain_at(app, x + 0.8, y + 0.8));
+    const view_explanation *e = view_app_explanation(app);
+    ck_assert_int_eq(e->sample, 3);
+    char *dir = rt_test_temp_dir();
+    const char *scene = rt_test_source_path("scenes/cubes.scn");
+    const char *args[] = {scene, "--samples", "4", "--explain", "268,124",
+                          NULL};
+    rt_test_output r = rt_test_run(dir, RT_EXPORT_PATH, args);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    /* What is printed is rt-export's text for the pixel, every sample. */
+    ck_assert_str_eq(e->text, r.out);
+    /* The sample's own text: its "sample 3:" block is rt-export's, line
+     * for line (all but the first line, which names the scene, and the
+     * last, the value line: here the sample's, there the pixel's). */
+    const char *block = strstr(e->sample_text, "\nsample 3:\n");
+    ck_assert_ptr_nonnull(block);
+    const char *end = strstr(block, "\npixel value ");
+    ck_assert_ptr_nonnull(end);
+    char *lines = strndup(block, (size_t)(end - block + 1));
+    ck_assert_msg(strstr(r.out, lines) != NULL,
+                  "sample 3's lines:\n%s\nare not in rt-export's:\n%s", lines,
+                  r.out);
+    /* and only sample 3's */
+    ck_assert_ptr_null(strstr(e->sample_text, "sample 0:"));
+    ck_assert_ptr_null(strstr(e->sample_text, "sample 2:"));
+    free(lines);
+    rt_test_output_free(&r);
+    rt_test_remove_dir(dir);
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+START_TEST(tab_steps_through_the_samples_of_the_pixel)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    rt_render_options options =
+        sampled_options(4, RT_SAMPLING_REGULAR, 0, 0);
+    ck_assert(view_app_explain_at(app, 200.2, 300.2));
+    assert_draws_sample(app, 0, &options);
+    for (int k = 1; k <= 4; k++) {
+        view_app_key(app, SDLK_TAB, 0);
+        assert_draws_sample(app, k % 4, &options);
+        ck_assert_int_eq(view_app_explanation(app)->x, 200);
+        ck_assert_int_eq(view_app_explanation(app)->y, 300);
+    }
+    /* Shift+Tab: the previous one, from 0 to the last */
+    SDL_SetModState(KMOD_LSHIFT);
+    view_app_key(app, SDLK_TAB, 0);
+    SDL_SetModState(KMOD_NONE);
+    assert_draws_sample(app, 3, &options);
+    const view_explanation *e = view_app_explanation(app);
+    ck_assert_ptr_nonnull(e->panel);
+    ck_assert_msg(strstr(e->panel, "sample 3 of 4") != NULL, "%s", e->panel);
+    /* Esc clears it; Tab then does nothing */
+    view_app_key(app, SDLK_ESCAPE, 0);
+    ck_assert_ptr_null(view_app_explanation(app));
+    view_app_key(app, SDLK_TAB, 0);
+    ck_assert_ptr_null(view_app_explanation(app));
+    ck_assert(!view_app_step_sample(app, 1));
+    rt_test_view_app_close(app);
+    /* With one sample there is nothing to step to. */
+    app = open_cubes_app();
+    ck_assert(view_app_explain(app, 200, 300));
+    ck_assert_int_eq(view_app_explanation(app)->samples, 1);
+    ck_assert(!view_app_step_sample(app, 1));
+    ck_assert_int_eq(view_app_explanation(app)->sample, 0);
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+START_TEST(a_click_in_a_quarter_of_an_enlarged_pixel_draws_its_sample)
+{
+    /* A 40 x 30 picture in a 400 x 300 window: each pixel is 10 x 10
+     * window points, window point (200 + a, 150 + b) shows pixel (20, 15)
+     * at (a + 1/2, b + 1/2) / 10 of it. */
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 40, 30);
+    rt_render_options options =
+        sampled_options(4, RT_SAMPLING_REGULAR, 40, 30);
+    view_window *window = view_app_window(app);
+    int bounds[4] = {0, 0, 4000, 4000};
+    view_window_place(window, 400, 300, bounds, 1);
+    int i, j;
+    ck_assert(view_window_pixel_at(window, 205, 155, &i, &j));
+    ck_assert_int_eq(i, 20);
+    ck_assert_int_eq(j, 15);
+    const int points[4][2] = {{202, 151}, {207, 153}, {201, 158}, {209,
+                                                                   156}};
+    for (int k = 0; k < 4; k++) {
+        ck_assert(view_app_click(app, points[k][0], points[k][1]));
+        ck_assert_int_eq(view_app_explanation(app)->x, 20);
+        ck_assert_int_eq(view_app_explanation(app)->y, 15);
+        assert_draws_sample(app, k, &options);
+    }
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+/* Where `ray` (a camera ray from the observer) crosses the screen, in
+ * image coordinates of a w x h image: the model's formula inverted. */
+static void screen_point(const rt_camera *camera, int w, int h,
+                         const rt_ray_node *ray, double *px, double *py)
+{
+    rt_vec3 ao = {camera->screen_center.x - camera->observer.x,
+                  camera->screen_center.y - camera->observer.y,
+                  camera->screen_center.z - camera->observer.z};
+    const rt_vec3 d = ray->direction;
+    double along = (ao.x * ao.x + ao.y * ao.y + ao.z * ao.z) /
+                   (d.x * ao.x + d.y * ao.y + d.z * ao.z);
+    rt_vec3 pa = {camera->observer.x + along * d.x - camera->screen_center.x,
+                  camera->observer.y + along * d.y - camera->screen_center.y,
+                  camera->observer.z + along * d.z - camera->screen_center.z};
+    const rt_vec3 ab = camera->right, ac = camera->up;
+    double s = (pa.x * ab.x + pa.y * ab.y + pa.z * ab.z) /
+               (ab.x * ab.x + ab.y * ab.y + ab.z * ab.z);
+    double t = (pa.x * ac.x + pa.y * ac.y + pa.z * ac.z) /
+               (ac.x * ac.x + ac.y * ac.y + ac.z * ac.z);
+    *px = (s + 1) * w / 2;
+    *py = (h - t * w) / 2;
+}
+
+START_TEST(stratified_samples_are_chosen_by_where_their_rays_go)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 16,
+                                     RT_SAMPLING_STRATIFIED, 0, 0);
+    rt_render_options options =
+        sampled_options(16, RT_SAMPLING_STRATIFIED, 0, 0);
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(view_session_scene(view_app_session(app)), &info);
+    const int x = 150, y = 210;
+    int off_centre = 0;
+    for (int k = 0; k < 16; k++) {
+        rt_ray_tree *tree = sample_tree(app, x, y, k, &options);
+        double px, py;
+        screen_point(&info.camera, info.width, info.height,
+                     rt_ray_tree_nodes(tree, NULL), &px, &py);
+        rt_ray_tree_destroy(tree);
+        /* in its cell of the 4 x 4 grid, jittered off its centre */
+        ck_assert_int_eq((int)floor((px - x) * 4), k % 4);
+        ck_assert_int_eq((int)floor((py - y) * 4), k / 4);
+        off_centre += fabs((px - x) * 4 - (k % 4 + 0.5)) > 1e-3;
+        ck_assert(view_app_explain_at(app, px, py));
+        assert_draws_sample(app, k, &options);
+    }
+    ck_assert_int_gt(off_centre, 8);
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+START_TEST(samples_through_a_lens_are_chosen_by_their_place_in_the_pixel)
+{
+    /* focus.scn's lens (a = 0.4): camera rays leave the lens, not the
+     * observer, yet a regular sample's place in its pixel is its cell's
+     * centre. */
+    view_app *app = open_sampled_app("scenes/focus.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    rt_render_options options =
+        sampled_options(4, RT_SAMPLING_REGULAR, 0, 0);
+    rt_scene_info info = {.size = sizeof info};
+    rt_scene_get_info(view_session_scene(view_app_session(app)), &info);
+    ck_assert_double_gt(info.camera.aperture, 0);
+    const int x = 60, y = 100;
+    for (int k = 0; k < 4; k++) {
+        double px = x + (k % 2 ? 0.7 : 0.3), py = y + (k / 2 ? 0.9 : 0.1);
+        ck_assert(view_app_explain_at(app, px, py));
+        assert_draws_sample(app, k, &options);
+        const view_explanation *e = view_app_explanation(app);
+        ck_assert_double_eq_tol(e->points[k][0], x + (k % 2 + 0.5) / 2,
+                                1e-9);
+        ck_assert_double_eq_tol(e->points[k][1], y + (k / 2 + 0.5) / 2,
+                                1e-9);
+        /* off the observer: a lens ray */
+        ck_assert(fabs(e->first.origin.x - info.camera.observer.x) +
+                      fabs(e->first.origin.z - info.camera.observer.z) >
+                  1e-6);
+    }
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+/* The line of `text` starting at `line`, as a new string. */
+static char *line_copy(const char *line)
+{
+    return strndup(line, strcspn(line, "\n"));
+}
+
+START_TEST(the_panel_holds_the_samples_lines_that_fit)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    ck_assert(view_app_explain_at(app, 268.8, 124.2));
+    const view_explanation *e = view_app_explanation(app);
+    ck_assert_int_eq(e->sample, 1);
+    /* Roomy: rt-view's two lines, then every line of the sample's tree
+     * from its camera ray's hit to its terms, word for word. */
+    char *panel = view_explanation_panel(e, 200, 100);
+    ck_assert_ptr_nonnull(panel);
+    ck_assert_msg(strncmp(panel, "pixel 268,124: bytes ", 21) == 0, "%s",
+                  panel);
+    ck_assert_ptr_nonnull(strstr(panel, "\nsample 1 of 4 (Tab"));
+    const char *hit = strstr(e->sample_text, "    hits facet");
+    const char *value = strstr(e->sample_text, "\npixel value");
+    ck_assert(hit && value);
+    char *lines = strndup(hit, (size_t)(value - hit + 1));
+    ck_assert_msg(strstr(panel, lines) != NULL, "%s", panel);
+    ck_assert_ptr_null(strstr(panel, "more lines"));
+    ck_assert_ptr_null(strstr(panel, "camera ray"));
+    free(lines);
+    free(panel);
+    /* Tight: within the rows, every line but rt-view's a line of the
+     * sample's text, and the rest said to be on standard output. */
+    for (int rows = 3; rows <= 12; rows++) {
+        panel = view_explanation_panel(e, 48, rows);
+        ck_assert_ptr_nonnull(panel);
+        ck_assert_msg(view_text_rows(panel, 48) <= rows, "%d rows:\n%s",
+                      rows, panel);
+        ck_assert_ptr_nonnull(strstr(panel, "more lines on standard "
+                                            "output\n"));
+        int line_number = 0;
+        for (const char *p = panel; *p; line_number++) {
+            char *line = line_copy(p);
+            if (line_number >= 2 && strncmp(line, "... ", 4) != 0) {
+                char *within = malloc(strlen(line) + 3);
+                sprintf(within, "\n%s\n", line);
+                ck_assert_msg(strstr(e->sample_text, within) != NULL,
+                              "not the formatter's: %s", line);
+                free(within);
+            }
+            p += strlen(line);
+            p += *p == '\n';
+            free(line);
+        }
+        free(panel);
+    }
+    rt_test_view_app_close(app);
+}
+END_TEST
+
+START_TEST(the_panel_leaves_most_of_the_picture_visible)
+{
+    view_app *app = open_sampled_app("scenes/cubes.scn", 4,
+                                     RT_SAMPLING_REGULAR, 0, 0);
+    view_window *window = view_app_window(app);
+    if (!view_window_has_text(window)) {
+        rt_test_view_app_close(app);
+        return;     /* no panel in this build: the text is on stdout */
+    }
+    ck_assert(view_app_click(app, 268, 124));
+    rt_image with = rt_test_view_window_read(window);
+    view_window_set_text(window, NULL);
+    rt_image without = rt_test_view_window_read(window);
+    /* The panel darkens its rows from x = 4 (its text from x = 8; the
+     * click's rays are far to the right). */
+    int rows = 0;
+    for (int y = 0; y < with.height; y++)
+        rows += memcmp(rt_image_pixel(&with, 5, y),
+                       rt_image_pixel(&without, 5, y), 3) != 0;
+    ck_assert_int_gt(rows, 0);
+    ck_assert_msg(rows <= with.height * 2 / 5, "the panel takes %d of %d rows",
+                  rows, with.height);
+    rt_image_release(&with);
+    rt_image_release(&without);
+    rt_test_view_app_close(app);
+}
+END_TEST
+
 START_TEST(debug_view_keys_change_what_the_window_shows)
 {
     view_app *app = open_cubes_app();
@@ -416,6 +869,19 @@ static Suite *viewer_overlay_suite(void)
                    clicking_a_pixel_explains_it_starting_with_its_camera_ray);
     tcase_add_test(overlay,
                    a_shadowed_pixel_shows_its_blocker_in_red_over_the_image);
+    tcase_add_test(overlay,
+                   a_click_with_four_samples_draws_only_the_sample_under_it);
+    tcase_add_test(overlay, the_sample_drawn_is_in_rt_exports_words);
+    tcase_add_test(overlay, tab_steps_through_the_samples_of_the_pixel);
+    tcase_add_test(overlay,
+                   a_click_in_a_quarter_of_an_enlarged_pixel_draws_its_sample);
+    tcase_add_test(overlay,
+                   stratified_samples_are_chosen_by_where_their_rays_go);
+    tcase_add_test(
+        overlay,
+        samples_through_a_lens_are_chosen_by_their_place_in_the_pixel);
+    tcase_add_test(overlay, the_panel_holds_the_samples_lines_that_fit);
+    tcase_add_test(overlay, the_panel_leaves_most_of_the_picture_visible);
     tcase_add_test(overlay, debug_view_keys_change_what_the_window_shows);
     tcase_add_test(overlay, view_option_starts_in_that_debug_view);
     suite_add_tcase(suite, overlay);

@@ -36,6 +36,11 @@ if(TARGET raytrace_viewer)
   raytrace_add_suite(test_viewer_load LIBS raytrace_test_viewer_support)
   set_tests_properties(test_viewer_load PROPERTIES
     ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
+  # The camera's moves (view_camera.c, view_move.c): the arithmetic, C's
+  # text read back bit for bit, and the app's drags, wheel and keys.
+  raytrace_add_suite(test_view_camera LIBS raytrace_test_viewer_support)
+  set_tests_properties(test_view_camera PROPERTIES
+    ENVIRONMENT "SDL_VIDEODRIVER=dummy;SDL_AUDIODRIVER=dummy")
 endif()
 
 # The click overlay on a real X server: rt-view under Xvfb, driven by
@@ -64,9 +69,18 @@ if(TARGET raytrace_rt_view)
     set_tests_properties(viewer_xvfb_progressive PROPERTIES
       ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
       SKIP_RETURN_CODE 77 TIMEOUT 300)
+    # The camera moved with the mouse: a drag and the wheel change the
+    # picture, and C's rt-export options give S's image byte for byte
+    # (tests/viewer_xvfb_move.sh).
+    add_test(NAME viewer_xvfb_move
+      COMMAND "${BASH_PROGRAM}" "${CMAKE_CURRENT_SOURCE_DIR}/viewer_xvfb_move.sh")
+    set_tests_properties(viewer_xvfb_move PROPERTIES
+      ENVIRONMENT "RT_VIEW=$<TARGET_FILE:raytrace_rt_view>;RT_EXPORT=$<TARGET_FILE:raytrace_rt_export>;RT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
     # One X server test at a time: each starts its own Xvfb, and two
     # starting at once under a loaded machine raced for a display.
     set_tests_properties(viewer_xvfb viewer_xvfb_fifo viewer_xvfb_progressive
+      viewer_xvfb_move
       PROPERTIES RESOURCE_LOCK xvfb)
   endif()
 endif()

@@ -183,9 +183,7 @@ void cli_export_print_warnings(const cli_export *ex)
 /* ------------------------------------------------------------------ */
 /* Before the render                                                   */
 
-/* "dir/name.scn" -> "name.ppm", or "name.png" for PNG (in the current
- * folder). */
-static char *default_output(const char *scene, rt_image_format format)
+char *cli_export_default_output(const char *scene, rt_image_format format)
 {
     const char *base = strrchr(scene, '/');
     base = base ? base + 1 : scene;
@@ -206,7 +204,8 @@ static int check_before_render(cli_export *ex)
     const char *program = ex->program->name;
     cli_settings *s = ex->settings;
     if (s->output == NULL)
-        ex->default_output = default_output(ex->operand, s->format);
+        ex->default_output = cli_export_default_output(ex->operand,
+                                                       s->format);
     ex->output = s->output ? s->output : ex->default_output;
     ex->report.output = ex->output;
     if (ex->output == NULL) {

@@ -126,6 +126,17 @@ int cli_export_render(cli_export *ex);
 void cli_export_release(cli_export *ex);
 
 /*
+ * The output rt-export writes when -o is not given: the file name of
+ * `scene` (the operand as given) without its folder and its extension,
+ * whatever that is ("dir/balls-s2.nff" -> "balls-s2"; a name with no dot,
+ * or whose only dot starts it, is kept whole), then ".png" for PNG, else
+ * ".ppm".  rt-view's S saves beside the scene under the same name,
+ * numbered.  A new string (free it), NULL when out of memory.
+ * Thread-safe.
+ */
+char *cli_export_default_output(const char *scene, rt_image_format format);
+
+/*
  * Reads the whole of `in` (a scene: at most a little more than
  * RT_MAX_SCENE_BYTES, or up to a chunk holding a NUL byte unless `binary`,
  * a PLY's body, so that the parser names what is wrong) into a new buffer

@@ -173,6 +173,9 @@ rt_render_options view_app__render_options(const view_app *app,
         render.width = view_scale_side(info.width, app->options.scale);
         render.height = view_scale_side(info.height, app->options.scale);
     }
+    /* A moved camera is the picture's, its explanations' and overlays'. */
+    if (app->move.moved && scene == app->move.scene)
+        render.camera = &app->move.camera;
     return render;
 }
 
@@ -208,13 +211,16 @@ static void handle_event(view_app *app, SDL_Event *event)
         app->quit = 1;
         break;
     case SDL_KEYDOWN:
-        view_app_key(app, event->key.keysym.sym, event->key.repeat);
+        if (!view_app__move_event(app, event))
+            view_app_key(app, event->key.keysym.sym, event->key.repeat);
         break;
     case SDL_MOUSEBUTTONDOWN:
-        if (event->button.button == SDL_BUTTON_LEFT)
-            view_app_click(app, event->button.x, event->button.y);
-        else if (event->button.button == SDL_BUTTON_RIGHT)
-            view_app__clear_explanation(app);
+    case SDL_MOUSEBUTTONUP:
+    case SDL_MOUSEMOTION:
+    case SDL_MOUSEWHEEL:
+        /* drags move the camera; a click without motion explains the
+         * pixel (left) or clears (right) on its release (view_move.c) */
+        view_app__move_event(app, event);
         break;
     case SDL_DROPFILE:
         view_app_open(app, event->drop.file);
@@ -275,6 +281,7 @@ void view_app_run(view_app *app)
             while (!app->quit && SDL_PollEvent(&event))
                 handle_event(app, &event);
         }
+        view_app__apply_moves(app);  /* the turn's moves: one restart */
         view_app__take_signal(app);
         if (app->quit)
             break;

@@ -132,15 +132,32 @@ extern const char view_app_keys_help[];
  * repeats), as the event loop handles it. */
 void view_app_key(view_app *app, int key, int repeat);
 
-/* A left click at window point (x, y): explains the image pixel there
- * (view_app_explain).  0 outside the picture or on failure. */
+/* A left click at window point (x, y): explains the image pixel there,
+ * drawing the sample nearest the point's place in the pixel
+ * (view_app_explain_at), with a panel sized to the picture as it is on
+ * screen.  0 outside the picture or on failure. */
 int view_app_click(view_app *app, int x, int y);
 
 /* Explains pixel (x, y) of the shown image with the picture's render
- * options: draws its ray tree over the image, shows its text in the window
- * (with SDL2_ttf) and prints it on stdout.  Returns 1, or 0 with the reason
- * shown. */
+ * options: draws its ray tree over the image (of one sample, with
+ * several: Tab steps through them), shows its text in the window (with
+ * SDL2_ttf; a part of it, at most two fifths of the picture's height) and
+ * prints all of it on stdout, as rt-export --explain X,Y does.  Returns 1,
+ * or 0 with the reason shown. */
 int view_app_explain(view_app *app, int x, int y);
+
+/* Explains the pixel under point (x, y) of the shown image, in image
+ * coordinates (pixel (i, j) covers [i, i+1) x [j, j+1)): as
+ * view_app_explain, drawing the sample whose point is nearest (x, y)
+ * (view_explain_point).  view_app_click maps the window point to such a
+ * point; view_app_explain(i, j) is the pixel's centre. */
+int view_app_explain_at(view_app *app, double x, double y);
+
+/* Tab (delta 1) and Shift+Tab (-1): draws the explained pixel's next (or
+ * previous) sample, cycling, with its text in the panel, and prints which
+ * on stdout.  Returns 1, or 0 when no pixel of several samples is
+ * explained or on failure (the reason shown). */
+int view_app_step_sample(view_app *app, int delta);
 
 /* The explanation shown, or NULL. */
 const view_explanation *view_app_explanation(const view_app *app);

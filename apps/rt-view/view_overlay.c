@@ -26,11 +26,17 @@ void view_projection_init(view_projection *projection, const rt_scene *scene,
 {
     rt_scene_info info = {.size = sizeof info};
     rt_scene_get_info(scene, &info);
-    projection->camera = info.camera;
-    projection->width = options->width > 0 ? options->width : info.width;
-    projection->height = options->height > 0 ? options->height : info.height;
+    const rt_camera *camera =
+        options->camera ? options->camera : &info.camera;
+    projection->camera = *camera;
+    projection->width = options->width > 0 ? options->width : camera->width;
+    projection->height =
+        options->height > 0 ? options->height : camera->height;
     projection->x0 = options->region.x0;
     projection->y0 = options->region.y0;
+    projection->focal_distance = options->focal_distance > 0
+                                     ? options->focal_distance
+                                     : camera->focal_distance;
 }
 
 /* Depth of `point` along AO, in units of |AO| (the screen is at 1). */
@@ -82,6 +88,27 @@ int view_project_segment(const view_projection *projection, rt_vec3 a,
     }
     return view_project_point(projection, a, &out[0], &out[1]) &&
            view_project_point(projection, b, &out[2], &out[3]);
+}
+
+int view_project_camera_ray(const view_projection *projection,
+                            rt_vec3 origin, rt_vec3 direction, double *x,
+                            double *y)
+{
+    const rt_camera *camera = &projection->camera;
+    rt_vec3 forward = sub(camera->screen_center, camera->observer);
+    double length = sqrt(dot(forward, forward));
+    double f = projection->focal_distance > 0 ? projection->focal_distance
+                                              : length;
+    /* Along the unit axis w = AO/|AO|: the origin's depth, the ray's
+     * speed; the point at depth f. */
+    double start = dot(sub(origin, camera->observer), forward) / length;
+    double speed = dot(direction, forward) / length;
+    if (!(speed > 0) || !(length > 0))
+        return 0;
+    double s = (f - start) / speed;
+    rt_vec3 focus = {origin.x + s * direction.x, origin.y + s * direction.y,
+                     origin.z + s * direction.z};
+    return view_project_point(projection, focus, x, y);
 }
 
 void view_ray_color(view_ray_kind kind, unsigned char rgb[3])

@@ -42,9 +42,11 @@ typedef struct view_projection {
     rt_camera camera;
     int width, height;          /* the full image's */
     int x0, y0;                 /* the region's corner (0, 0 without) */
+    double focal_distance;      /* the lens's f (view_project_camera_ray) */
 } view_projection;
 
-/* The projection of `scene` rendered with `options` (size and region). */
+/* The projection of `scene` rendered with `options` (size, region, the
+ * camera when options->camera sets one, the focal distance). */
 void view_projection_init(view_projection *projection, const rt_scene *scene,
                           const rt_render_options *options);
 
@@ -59,6 +61,19 @@ int view_project_point(const view_projection *projection, rt_vec3 point,
 int view_project_segment(const view_projection *projection, rt_vec3 a,
                          rt_vec3 b, double out[4]);
 
+/*
+ * The image point a camera ray of the render was cast through: where the
+ * pinhole ray it belongs to crosses the screen, in image coordinates (the
+ * sample's position in its pixel: (i + 1/2, j + 1/2) for one sample).  A
+ * pinhole ray leaves the observer, so any point of it projects there; a
+ * thin-lens ray leaves a point of the lens towards the point where that
+ * pinhole ray reaches the focal distance (docs/rendering-model.md), and
+ * that point is projected.  0 when the ray does not go forwards.
+ */
+int view_project_camera_ray(const view_projection *projection,
+                            rt_vec3 origin, rt_vec3 direction, double *x,
+                            double *y);
+
 /* The overlay colour of a kind of ray. */
 void view_ray_color(view_ray_kind kind, unsigned char rgb[3]);
 
@@ -69,7 +84,9 @@ void view_letterbox(int image_width, int image_height, int out_width,
                     int out_height, int rect[4]);
 
 /* The image pixel under output point (x, y) for that letterbox: 1 with
- * (*i, *j), or 0 when the point is outside the picture. */
+ * (*i, *j), or 0 when the point is outside the picture.  (The pixel's
+ * fractional point is *i + f, f in [0, 1): view_navigation.c finds it from
+ * the window points showing the same pixel.) */
 int view_output_to_pixel(int image_width, int image_height, int out_width,
                          int out_height, double x, double y, int *i, int *j);
 

@@ -47,10 +47,8 @@ static int choose_save_path(view_app *app, int partial, char *path,
             return written >= 0 && (size_t)written < size;
         }
         snprintf(stem, sizeof stem, "%s", app->options.output);
-    } else if (!view_scene_image_path(
-                   app->shown_path,
-                   app->options.format == RT_IMAGE_PNG ? ".png" : ".ppm",
-                   stem, sizeof stem)) {
+    } else if (!view_scene_image_path(app->shown_path, app->options.format,
+                                      stem, sizeof stem)) {
         view_app__show_message(app, "cannot save: the image's path is too "
                                     "long");
         return 0;

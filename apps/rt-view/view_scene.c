@@ -8,9 +8,12 @@
 #include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "cli_export.h"
 
 /* More numbered saves than anyone keeps: beyond, the folder is full of
  * them and S says so rather than searching on. */
@@ -33,17 +36,16 @@ int view_scale_side(int side, double scale)
     return (int)value;
 }
 
-int view_scene_image_path(const char *scene_path, const char *extension,
+int view_scene_image_path(const char *scene_path, rt_image_format format,
                           char *buffer, size_t size)
 {
+    char *name = cli_export_default_output(scene_path, format);
+    if (name == NULL)
+        return 0;
     const char *slash = strrchr(scene_path, '/');
-    const char *base = slash ? slash + 1 : scene_path;
-    const char *dot = strrchr(base, '.');
-    size_t keep = strlen(scene_path);
-    if (dot && dot != base && strcmp(dot, ".scn") == 0)
-        keep = (size_t)(dot - scene_path);
-    int written = snprintf(buffer, size, "%.*s%s", (int)keep, scene_path,
-                           extension);
+    int folder = slash ? (int)(slash - scene_path + 1) : 0;
+    int written = snprintf(buffer, size, "%.*s%s", folder, scene_path, name);
+    free(name);
     return written >= 0 && (size_t)written < size;
 }
 

@@ -29,12 +29,14 @@ rt_status view_scene_load(const char *path, const rt_load_options *options,
 int view_scale_side(int side, double scale);
 
 /*
- * The stem `S` saves beside: the scene's directory and name with
- * `extension` (".png", ".ppm") instead of `.scn` (appended when the name
- * has another extension or none).  Returns 0 when it does not fit in
- * `size`.
+ * The name `S` numbers (view_save_claim_numbered): rt-export's default
+ * output for the scene (cli_export_default_output: the file name without
+ * its extension, whatever it is, then ".png" for PNG, else ".ppm"), in
+ * the scene's folder rather than the current one: "dir/balls-s2.nff" ->
+ * "dir/balls-s2.png".  Returns 0 when it does not fit in `size` or
+ * memory is short.
  */
-int view_scene_image_path(const char *scene_path, const char *extension,
+int view_scene_image_path(const char *scene_path, rt_image_format format,
                           char *buffer, size_t size);
 
 /*
