@@ -332,8 +332,8 @@ static FILE *claim_camera_file(view_app *app, char *path, size_t size)
 {
     char stem[4096];
     char message[sizeof app->message];
-    if (!view_scene_image_path(app->shown_path, "-camera.txt", stem,
-                               sizeof stem) ||
+    if (!view_scene_side_path(app->shown_path, "-camera.txt", stem,
+                              sizeof stem) ||
         strlen(stem) >= size) {
         view_app__show_message(app, "cannot write the camera: its path is "
                                     "too long");

@@ -49,6 +49,19 @@ int view_scene_image_path(const char *scene_path, rt_image_format format,
     return written >= 0 && (size_t)written < size;
 }
 
+int view_scene_side_path(const char *scene_path, const char *suffix,
+                         char *buffer, size_t size)
+{
+    char image[4096];
+    if (!view_scene_image_path(scene_path, RT_IMAGE_P6, image, sizeof image))
+        return 0;
+    char *dot = strrchr(image, '.');        /* the ".ppm" just added */
+    if (dot != NULL)
+        *dot = '\0';
+    int written = snprintf(buffer, size, "%s%s", image, suffix);
+    return written >= 0 && (size_t)written < size;
+}
+
 static int claim_failed(rt_error *error, const char *name, const char *why)
 {
     if (error) {

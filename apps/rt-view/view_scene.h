@@ -39,6 +39,13 @@ int view_scale_side(int side, double scale);
 int view_scene_image_path(const char *scene_path, rt_image_format format,
                           char *buffer, size_t size);
 
+/* The scene's folder and stem (as view_scene_image_path names them) with
+ * `suffix` after them: "dir/balls-s2.nff", "-camera.txt" ->
+ * "dir/balls-s2-camera.txt".  Returns 0 when it does not fit in `size` or
+ * memory is short. */
+int view_scene_side_path(const char *scene_path, const char *suffix,
+                         char *buffer, size_t size);
+
 /*
  * Claims the first free numbered name beside `path` ("dir/cubes.png"):
  * "dir/cubes-1.png", "dir/cubes-2.png", ..., or with a `tag`
