@@ -10,7 +10,10 @@
 # rt-view with status 0, cancelling the view.  --stats reports both renders
 # cancelled.  The time from Escape to the exit is printed and checked
 # against a loose 2 s (what it is meant to be is under 0.2 s; a loaded
-# machine may take longer to schedule the process and X).  Exits 77
+# machine may take longer to schedule the process and X).  A second run
+# drags the mouse during the picture's render: the render is cancelled
+# (--stats reports it, and the time from the drag is printed) and the
+# moved camera's starts.  Exits 77
 # (skipped) without Xvfb or xdotool.
 #
 # Environment: RT_VIEW (the rt-view binary), RT_SOURCE_DIR (the sources).
@@ -93,4 +96,42 @@ grep -q '^rt-view: render 1 (picture): cancelled in ' "$work/err" ||
     fail "--stats did not report the picture cancelled by N"
 grep -q '^rt-view: render 2 (normal view): cancelled in ' "$work/err" ||
     fail "--stats did not report the normal view cancelled by Escape"
-echo "1 passed, 0 failed"
+
+# A move during a render cancels it: a left drag while the picture renders
+# ends that render (--stats says so) and starts the moved camera's, whose
+# title is back at the first pass.
+"$RT_VIEW" "$work/slow.scn" --accel none --stats >"$work/out2" 2>"$work/err2" &
+view_pid=$!
+window=$(find_window '^slow\.scn .* - (1/[248]|full): [0-9]+% - ' 90) ||
+    fail "no rt-view window rendering its picture within 90 s (second run)"
+sleep 0.3
+echo "before the drag: $(window_name)"
+since=$(date +%s%N)
+timeout 10 xdotool mousemove --window "$window" 160 120 mousedown 1 \
+    mousemove --window "$window" 200 130 mouseup 1 ||
+    fail "xdotool could not drag"
+for _ in $(seq 2000); do
+    grep -q '^rt-view: render 1 (picture): cancelled in ' "$work/err2" && break
+    sleep 0.005
+done
+took=$(( ($(date +%s%N) - since) / 1000000 ))
+grep -q '^rt-view: render 1 (picture): cancelled in ' "$work/err2" ||
+    fail "the drag did not cancel the picture's render within 10 s"
+echo "the picture's render cancelled $took ms after the drag began" \
+     "(xdotool's own time included)"
+title=$(window_name)
+echo "after the drag: $title"
+case "$title" in
+    *"done in"*) fail "the moved picture finished at once (too quick)" ;;
+esac
+timeout 10 xdotool key --window "$window" Escape 2>/dev/null
+wait "$view_pid"
+status=$?
+view_pid=
+xdotool keyup Escape 2>/dev/null
+[ "$status" -eq 0 ] || fail "Escape after the drag: rt-view exited $status"
+cat "$work/err2"
+grep -q '^rt-view: render 2 (picture): cancelled in ' "$work/err2" ||
+    fail "--stats did not report the moved camera's render (render 2)"
+[ "$took" -lt 2000 ] || fail "the drag took $took ms to cancel the render"
+echo "2 passed, 0 failed"
