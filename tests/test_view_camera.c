@@ -147,6 +147,45 @@ static rt_look moved_look(const rt_scene *scene)
 
 /* ---- the moves ---- */
 
+/* The first target is what the axis of view meets: the file's direction
+ * and field of view, look_at on the nearest hit of the ray O -> A (every
+ * scene here is hit in the middle of its picture). */
+START_TEST(the_first_target_is_what_the_axis_of_view_meets)
+{
+    for (int s = 0; s < SCENE_FILES; s++) {
+        rt_scene *scene = rt_test_load_source_scene(scene_files[s]);
+        rt_scene_info info = rt_test_scene_info(scene);
+        rt_look file;
+        rt_camera_get_look(&info.camera, &file);
+        rt_look look = view_camera_file_look(scene);
+        ck_assert(same_vec(look.look_from, file.look_from));
+        ck_assert(same_vec(look.up, file.up));
+        ck_assert(same_double(look.fov, file.fov));
+        rt_vec3 a = {file.look_at.x - file.look_from.x,
+                     file.look_at.y - file.look_from.y,
+                     file.look_at.z - file.look_from.z};
+        rt_vec3 b = {look.look_at.x - look.look_from.x,
+                     look.look_at.y - look.look_from.y,
+                     look.look_at.z - look.look_from.z};
+        double la = sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+        double lb = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
+        ck_assert_msg(fabs((a.x * b.x + a.y * b.y + a.z * b.z) / (la * lb) -
+                           1) < 1e-12,
+                      "%s: the direction of view changed", scene_files[s]);
+        rt_hit hit;
+        rt_vec3 unit = {a.x / la, a.y / la, a.z / la};
+        ck_assert_msg(rt_scene_nearest_hit(scene,
+                                           (rt_ray){file.look_from, unit},
+                                           INFINITY, &hit),
+                      "%s: the axis meets nothing", scene_files[s]);
+        ck_assert_msg(fabs(lb - hit.t) <= 1e-9 * hit.t,
+                      "%s: the target is %g away, the hit %g",
+                      scene_files[s], lb, hit.t);
+        rt_scene_destroy(scene);
+    }
+}
+END_TEST
+
 START_TEST(orbit_keeps_the_target_at_the_centre_and_its_distance)
 {
     const double turns[][2] = {{0.3, 0}, {-1.2, 0.4}, {2.5, -0.9},
@@ -847,6 +886,7 @@ static Suite *view_camera_suite(void)
     Suite *suite = suite_create("view_camera");
     TCase *moves = tcase_create("moves");
     tcase_set_timeout(moves, 120);  /* under valgrind */
+    tcase_add_test(moves, the_first_target_is_what_the_axis_of_view_meets);
     tcase_add_test(moves, orbit_keeps_the_target_at_the_centre_and_its_distance);
     tcase_add_test(moves,
                    orbit_yaw_turns_about_the_world_up_and_pitch_stops_short_of_it);

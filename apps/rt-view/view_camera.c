@@ -108,6 +108,38 @@ rt_look view_camera_file_look(const rt_scene *scene)
     rt_scene_get_info(scene, &info);
     rt_look look;
     rt_camera_get_look(&info.camera, &look);
+    /* The screen centre A may be anywhere on the axis (a .scn file's
+     * screen is often a unit away from the eye): the target an orbit turns
+     * round is what the axis meets, else the point of the axis nearest the
+     * middle of the vertices' box, in front of the eye. */
+    rt_vec3 axis = sub(look.look_at, look.look_from);
+    double along = length(axis);
+    if (!(along > 0) || !isfinite(along))
+        return look;
+    rt_vec3 unit = {axis.x / along, axis.y / along, axis.z / along};
+    rt_hit hit;
+    double distance = 0;
+    if (rt_scene_nearest_hit(scene, (rt_ray){look.look_from, unit}, INFINITY,
+                             &hit))
+        distance = hit.t;
+    else if (info.vertex_count > 0) {
+        rt_vec3 low = rt_scene_vertex(scene, 0), high = low;
+        for (int i = 1; i < info.vertex_count; i++) {
+            rt_vec3 v = rt_scene_vertex(scene, i);
+            low = (rt_vec3){fmin(low.x, v.x), fmin(low.y, v.y),
+                            fmin(low.z, v.z)};
+            high = (rt_vec3){fmax(high.x, v.x), fmax(high.y, v.y),
+                             fmax(high.z, v.z)};
+        }
+        rt_vec3 middle = {(low.x + high.x) / 2, (low.y + high.y) / 2,
+                          (low.z + high.z) / 2};
+        rt_vec3 to = sub(middle, look.look_from);
+        distance = to.x * unit.x + to.y * unit.y + to.z * unit.z;
+    }
+    if (distance > 0 && isfinite(distance))
+        look.look_at = (rt_vec3){look.look_from.x + distance * unit.x,
+                                 look.look_from.y + distance * unit.y,
+                                 look.look_from.z + distance * unit.z};
     return look;
 }
 

@@ -51,7 +51,11 @@ rt_vec3 view_camera_world_up(const rt_scene *scene);
 double view_camera_extent(const rt_scene *scene);
 
 /* The look of the file's camera (rt_camera_get_look of the scene's
- * camera): where the first move starts from. */
+ * camera) with its target moved along the axis of view to what the axis
+ * meets (the nearest hit of the ray from O through A), else to the point
+ * of the axis nearest the middle of the vertices' bounding box when that
+ * is in front of O, else left at A: where the first move starts from, the
+ * direction of view and the field of view those of the file. */
 rt_look view_camera_file_look(const rt_scene *scene);
 
 /*

@@ -396,7 +396,10 @@ char *view_explanation_panel(const view_explanation *e, int columns,
                  rt_channel_to_byte(e->value.b), e->samples, e->sample,
                  e->samples);
     else
-        snprintf(head, sizeof head, "pixel %d,%d:\n", e->x, e->y);
+        snprintf(head, sizeof head, "pixel %d,%d: bytes %d %d %d\n", e->x,
+                 e->y, rt_channel_to_byte(e->value.r),
+                 rt_channel_to_byte(e->value.g),
+                 rt_channel_to_byte(e->value.b));
     fputs(head, out);
     int used = view_text_rows(head, columns);
     int count = 0, total = 0;
