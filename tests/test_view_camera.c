@@ -34,6 +34,7 @@
 static const char *const scene_files[] = {
     "scenes/cubes.scn", "scenes/nff-sphere.nff", "tests/data/obj/cube.obj",
     "scenes/focus.scn",         /* a lens: a, f in the screen record */
+    "tests/fuzz/corpus/ply/terrain-ascii.ply", /* PLY: the automatic camera */
 };
 #define SCENE_FILES (int)(sizeof scene_files / sizeof *scene_files)
 
