@@ -283,8 +283,7 @@ static int same_corners(const rt_scene_desc *d, const rt_facet_desc *f,
     return 1;
 }
 
-/* The kind of the warning for a facet whose plane passes through the eye
- * (or too near it to tell). */
+/* The warning's kind: a facet's plane through the eye (or too near). */
 static const char edge_on_kind[] = "facets in a plane through the eye";
 
 /*
