@@ -9,8 +9,9 @@
  * records, to the viewer's camera bit for bit; and in the app (SDL's
  * dummy driver) a drag renders the library's image of the moved camera,
  * once a turn, without explaining, a click still explains, and Home gives
- * the file's camera back.  Scenes: scenes/cubes.scn, scenes/nff-sphere.nff
- * and tests/data/obj/cube.obj.
+ * the file's camera back.  Scenes: scenes/cubes.scn, an NFF
+ * (tests/fuzz/corpus/nff/sphere-cone.nff, small enough for the sanitizer
+ * pass), tests/data/obj/cube.obj, scenes/focus.scn (a lens) and a PLY.
  */
 #include <math.h>
 #include <stdio.h>
@@ -32,7 +33,8 @@
 /* The three formats: a .scn with its camera, an NFF with its view, an OBJ
  * with the automatic camera; and a .scn with a lens. */
 static const char *const scene_files[] = {
-    "scenes/cubes.scn", "scenes/nff-sphere.nff", "tests/data/obj/cube.obj",
+    "scenes/cubes.scn", "tests/fuzz/corpus/nff/sphere-cone.nff",
+    "tests/data/obj/cube.obj",
     "scenes/focus.scn",         /* a lens: a, f in the screen record */
     "tests/fuzz/corpus/ply/terrain-ascii.ply", /* PLY: the automatic camera */
 };
