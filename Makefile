@@ -4,7 +4,8 @@
 #   make run         build rt-export and render scenes/cubes.scn to cubes.ppm
 #                    (build/apps/rt-export prints the path it wrote)
 #   make test        install missing dependencies (.ci/install-deps), build
-#   make tests       with the test suites, run ctest in build/
+#   make tests       with the test suites, run ctest in build/ and print
+#                    the reason of each skipped test (tests/readme_skips.py)
 #   make clean       remove build/ and cubes.ppm
 #
 # One build directory, build/, for every target, so that the handout's
@@ -49,7 +50,9 @@ test:
 	bash .ci/install-deps
 	$(CONFIGURE) -DRAYTRACE_TESTS=ON
 	+cmake --build $(BUILD_DIR) $(PARALLEL)
-	cd $(BUILD_DIR) && ctest --output-on-failure $(CTEST_FLAGS)
+	cd $(BUILD_DIR) && { ctest --output-on-failure --output-junit ctest.xml \
+	    $(CTEST_FLAGS); status=$$?; \
+	  python3 ../tests/readme_skips.py ctest.xml 2>/dev/null; exit $$status; }
 
 tests: test
 
