@@ -47,3 +47,7 @@ set_tests_properties(kit_student_project_make_run_sdl_shows_make_runs_image
   PROPERTIES FIXTURES_REQUIRED "kit_built;kit_ran")
 raytrace_add_kit_test(kit_libraries_are_found_by_pkg_config_and_find_package
   packages FIXTURES_REQUIRED kit_installed)
+# The -lm case: student code calling sqrt, with docs/in104.md's Makefile
+# lines (kit_steps.cmake, STEP lm); its own copy of the project.
+raytrace_add_kit_test(kit_student_sqrt_links_with_the_documented_makefile_lines
+  lm FIXTURES_REQUIRED kit_installed)

@@ -11,6 +11,9 @@
 #   tests_sdl  `make tests_sdl` on SDL's dummy driver with IMGSDL_OUTPUT:
 #              the example's gradient
 #   run_sdl    `make run_sdl` likewise: the same pixels as `make run`'s
+#   lm         a createFacet that calls sqrt: the course's test_note rule
+#              fails to link, docs/in104.md's Makefile lines make
+#              `make tests` link and print the full score
 #   packages   the kit's other ways in: a program built with pkg-config's
 #              raytrace-util (and raytrace-imgsdl) flags, and one with
 #              find_package(raytrace COMPONENTS imgsdl), run
@@ -116,6 +119,89 @@ elseif(STEP STREQUAL "tests_sdl" OR STEP STREQUAL "run_sdl")
   else()
     check_images("the window's picture is make run's"
                  compare "${student}/cubes.p3" "${picture}")
+  endif()
+
+elseif(STEP STREQUAL "lm")
+  # A student whose createFacet normalises with sqrt: the course's
+  # test_note rule (no $(LIBS)) does not link; with docs/in104.md's lines
+  # applied to the Makefile, `make tests` links and gives the full score.
+  set(student "${WORK_DIR}/student-lm")
+  file(REMOVE_RECURSE "${student}")
+  file(COPY "${SOURCE_DIR}/tests/student/" DESTINATION "${student}")
+  file(READ "${student}/src/geometry.c" before)
+  string(REPLACE "fastInvSqrt((float)n2)" "1.0 / sqrt(n2)" code "${before}")
+  string(REPLACE "#include \"util.h\"" "#include <math.h>\n#include \"util.h\""
+         code "${code}")
+  if(code STREQUAL before OR NOT code MATCHES "sqrt\\(n2\\)")
+    message(FATAL_ERROR "tests/student/src/geometry.c changed: no fastInvSqrt((float)n2) to replace by sqrt")
+  endif()
+  file(WRITE "${student}/src/geometry.c" "${code}")
+
+  # The course's rule, as tests/student/Makefile keeps it: no $(LIBS).
+  file(READ "${student}/Makefile" makefile)
+  if(NOT makefile MATCHES "\n\t\\$\\(GCC\\) -Iinclude -o bin/\\$\\(EXEC_NOTE\\) \\$\\(TESTS_NOTE\\)\n")
+    message(FATAL_ERROR "tests/student/Makefile: the course's test_note rule is not there")
+  endif()
+  execute_process(COMMAND "${MAKE_PROGRAM}" tests "RAYTRACE=${PREFIX}"
+                  "RAYTRACE_LIB=${libdir}" "GCC=${C_COMPILER}"
+                  WORKING_DIRECTORY "${student}" RESULT_VARIABLE result
+                  OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  message("without the documented rule, make tests: exit ${result}\n${output}")
+  if(result EQUAL 0)
+    message("note: it linked without -lm here (this C library has sqrt in libc); "
+            "the documented lines are still checked below")
+  elseif(NOT output MATCHES "sqrt")
+    message(FATAL_ERROR "make tests failed, but not for want of sqrt")
+  endif()
+
+  # The documented lines: the first ```make block of the section "The
+  # lines to change in the course's Makefile", applied as a student would:
+  # each `NAME = value` replaces NAME's definition, a rule replaces the
+  # rule of that target (its first recipe line).
+  file(READ "${SOURCE_DIR}/docs/in104.md" doc)
+  string(FIND "${doc}" "### The lines to change in the course's Makefile" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "docs/in104.md: no section \"The lines to change in the course's Makefile\"")
+  endif()
+  string(SUBSTRING "${doc}" ${at} -1 doc)
+  string(FIND "${doc}" "```make\n" start)
+  math(EXPR start "${start} + 8")
+  string(SUBSTRING "${doc}" ${start} -1 doc)
+  string(FIND "${doc}" "\n```" end)
+  string(SUBSTRING "${doc}" 0 ${end} block)
+  string(REPLACE "\n" ";" lines "${block}")
+  list(LENGTH lines count)
+  set(i 0)
+  set(rules 0)
+  while(i LESS count)
+    list(GET lines ${i} line)
+    math(EXPR i "${i} + 1")
+    if(line MATCHES "^([A-Za-z_]+)[ \t]*=")
+      set(name "${CMAKE_MATCH_1}")
+      if(NOT makefile MATCHES "\n${name}[ \t]*=")
+        message(FATAL_ERROR "the Makefile defines no ${name}")
+      endif()
+      string(REGEX REPLACE "\n${name}[ \t]*=[^\n]*" "\n${line}" makefile "${makefile}")
+    elseif(line MATCHES "^([^\t=]+):" AND i LESS count)
+      list(GET lines ${i} recipe)
+      math(EXPR i "${i} + 1")
+      string(REGEX REPLACE "([][$().*+?^|\\\\])" "\\\\\\1" target "${CMAKE_MATCH_1}")
+      if(NOT makefile MATCHES "\n${target}:[^\n]*\n\t[^\n]*")
+        message(FATAL_ERROR "the Makefile has no rule ${CMAKE_MATCH_1}")
+      endif()
+      string(REGEX REPLACE "\n${target}:[^\n]*\n\t[^\n]*" "\n${line}\n${recipe}"
+             makefile "${makefile}")
+      math(EXPR rules "${rules} + 1")
+    endif()
+  endwhile()
+  if(rules EQUAL 0)
+    message(FATAL_ERROR "docs/in104.md's Makefile lines change no rule")
+  endif()
+  file(WRITE "${student}/Makefile" "${makefile}")
+  student_make(clean output)
+  student_make(tests output)
+  if(NOT output MATCHES "Note finale \\(sur 2\\) : 2\\.00")
+    message(FATAL_ERROR "the graded test did not print a full score, 2.00")
   endif()
 
 elseif(STEP STREQUAL "packages")
