@@ -6,6 +6,8 @@
 #   make test        install missing dependencies (.ci/install-deps), build
 #   make tests       with the test suites, run ctest in build/ and print
 #                    the reason of each skipped test (tests/readme_skips.py)
+#   make gallery     build rt-export, render docs/images/gallery/*.png and
+#                    write docs/gallery.md (tools/gallery.sh)
 #   make clean       remove build/ and cubes.ppm
 #
 # One build directory, build/, for every target, so that the handout's
@@ -35,7 +37,7 @@ CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) \
 PARALLEL = $$(case " $${MAKEFLAGS%% -- *}" in *" -j"*) ;; \
               *) echo --parallel "$$(nproc 2>/dev/null || echo 4)" ;; esac)
 
-.PHONY: all run test tests clean
+.PHONY: all run test tests gallery clean
 
 all:
 	$(CONFIGURE) -DRAYTRACE_TESTS=AUTO
@@ -55,6 +57,11 @@ test:
 	  python3 ../tests/readme_skips.py ctest.xml 2>/dev/null; exit $$status; }
 
 tests: test
+
+gallery:
+	@$(CONFIGURE) -DRAYTRACE_TESTS=AUTO >/dev/null
+	+@cmake --build $(BUILD_DIR) $(PARALLEL) --target raytrace_rt_export
+	RT_BUILD=$(BUILD_DIR) bash tools/gallery.sh
 
 clean:
 	rm -rf $(BUILD_DIR) cubes.ppm
