@@ -16,4 +16,4 @@ else()
 endif()
 # rt-view's lines each wait 5 s under Xvfb; the MPI line starts 4 ranks.
 set_tests_properties(readme_commands PROPERTIES SKIP_RETURN_CODE 77
-  TIMEOUT 600 RESOURCE_LOCK xvfb)
+  TIMEOUT 600 RESOURCE_LOCK xvfb LABELS readme)
