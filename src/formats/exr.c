@@ -74,6 +74,7 @@ static exr_result_t write_chunks(exr_context_t context,
         r = exr_write_scanline_chunk_info(context, 0, y, &chunk);
         if (r != EXR_ERR_SUCCESS)
             break;
+        int first = !started;
         r = started ? exr_encoding_update(context, 0, &chunk, &encoder)
                     : exr_encoding_initialize(context, 0, &chunk, &encoder);
         if (r != EXR_ERR_SUCCESS)
@@ -97,7 +98,10 @@ static exr_result_t write_chunks(exr_context_t context,
             encoder.channels[c].user_data_type = EXR_PIXEL_FLOAT;
             encoder.channels[c].user_bytes_per_element = sizeof(float);
         }
-        r = exr_encoding_run(context, 0, &encoder);
+        if (first)
+            r = exr_encoding_choose_default_routines(context, 0, &encoder);
+        if (r == EXR_ERR_SUCCESS)
+            r = exr_encoding_run(context, 0, &encoder);
     }
     if (started)
         exr_encoding_destroy(context, &encoder);
