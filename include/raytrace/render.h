@@ -293,7 +293,6 @@ typedef struct rt_render_options {
                                    RT_ERR_ARGUMENT).  Renders, views and
                                    explanations with other cameras reuse
                                    the scene's kernel and accelerator */
-    /* Since 0.6: */
     rt_image_float *linear;     /* NULL (the default): bytes only; else a
                                    float image of the output image's size
                                    that the render also fills with each
