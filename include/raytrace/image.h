@@ -8,7 +8,10 @@
  * Formats: PPM (Netpbm P3, ASCII, and P6, binary, maxval 255) always; PNG
  * (8-bit RGB, no gamma or colour-space chunk, so viewers show the computed
  * values as they are) when the library was built with libpng
- * (rt_image_format_supported says).  Every writer goes to a sink (a
+ * (rt_image_format_supported says).  Float images (rt_image_float, linear
+ * RGB, 1.0 = white, unclamped: the renderer's colours before rounding) go
+ * to PFM always and to OpenEXR in builds with OpenEXR; see below.  Every
+ * writer goes to a sink (a
  * callback); the FILE and path variants are thin wrappers.
  *
  * Saving to a path (rt_image_save) never damages
