@@ -41,6 +41,13 @@ else()
   set(RAYTRACE_PC_REQUIRES_PRIVATE "")
   set(RAYTRACE_FIND_PNG "")
 endif()
+# And with OpenEXR, its pkg-config target (src/CMakeLists.txt's name).
+if(RAYTRACE_HAVE_EXR)
+  string(STRIP "${RAYTRACE_PC_REQUIRES_PRIVATE} OpenEXR"
+         RAYTRACE_PC_REQUIRES_PRIVATE)
+  string(APPEND RAYTRACE_FIND_PNG "\nfind_dependency(PkgConfig)\n"
+         "pkg_check_modules(RT_OPENEXR REQUIRED IMPORTED_TARGET OpenEXR)")
+endif()
 install(EXPORT raytraceTargets
   NAMESPACE raytrace::
   DESTINATION "${RAYTRACE_INSTALL_CMAKEDIR}")

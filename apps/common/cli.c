@@ -172,12 +172,14 @@ static const spec table[] = {
     {CLI_GROUP_OUTPUT, "output", 'o', "OUT", 0, V_STRING, 0, 0, 0, NULL,
      {0}, AT(output), NO_OFFSET, NULL,
      "where to write the image"},
-    {CLI_GROUP_OUTPUT, "format", 0, "F", 0, V_CHOICE, 0, 0, 0, "p6|p3|png",
-     {RT_IMAGE_P6, RT_IMAGE_P3, RT_IMAGE_PNG}, AT(format),
+    {CLI_GROUP_OUTPUT, "format", 0, "F", 0, V_CHOICE, 0, 0, 0, "p6|p3|png|pfm|exr",
+     {RT_IMAGE_P6, RT_IMAGE_P3, RT_IMAGE_PNG, RT_IMAGE_PFM, RT_IMAGE_EXR},
+     AT(format),
      AT(format_given), NULL,
-     "p6 (binary PPM), p3 (ASCII PPM, the course's format) or png; "
-     "default: from the extension of OUT (.png png, .ppm and .pnm p6; "
-     "another extension is an error), p6 when OUT has none"},
+     "p6 (binary PPM), p3 (ASCII PPM, the course's format), png, or "
+     "pfm, exr (linear floats, 1.0 = 255); default: from the extension "
+     "of OUT (.png, .pfm, .exr; .ppm and .pnm p6; another is an error), "
+     "p6 when OUT has none"},
     {CLI_GROUP_REPORT, "stats", 0, "FORMAT", 1, V_CHOICE, 0, 0, 0,
      "text|json", {CLI_STATS_TEXT, CLI_STATS_JSON}, AT(stats), NO_OFFSET,
      NULL,
@@ -537,8 +539,8 @@ static int check_settings(const cli_program *program, cli_settings *settings)
             rt_image_format_from_path(out, &settings->format, NULL) != RT_OK)
             return cli_usage_error(program, "cannot tell the image format "
                                    "from the name '%s': expected .png, "
-                                   ".ppm or .pnm, or --format p3, p6 or "
-                                   "png",
+                                   ".ppm, .pnm, .pfm or .exr, or --format "
+                                   "p3, p6, png, pfm or exr",
                                    cli_printable(out, shown, sizeof shown));
     }
     return CLI_CONTINUE;

@@ -117,9 +117,29 @@ static rt_status load_here(const cli_export *ex, rt_scene **scene,
 
 /* Refusals that need no scene: an image format this build cannot write,
  * a binary image to a terminal.  Returns CLI_CONTINUE or an exit status. */
+static int is_float_format(rt_image_format format)
+{
+    return format == RT_IMAGE_PFM || format == RT_IMAGE_EXR;
+}
+
 static int refuse_output(const cli_export *ex)
 {
     const cli_settings *s = ex->settings;
+    if (s->format == RT_IMAGE_EXR && !rt_image_format_supported(s->format)) {
+        fprintf(stderr, "%s: cannot write %s: this build has no OpenEXR "
+                        "support (it was built without libopenexr-dev, or "
+                        "with -DRAYTRACE_EXR=OFF); use --format pfm\n",
+                ex->program->name, s->output ? s->output : "EXR");
+        return EXIT_BAD_INPUT;
+    }
+    if (is_float_format(s->format) && (s->view != 0 || ex->config.bands)) {
+        fprintf(stderr, "%s: cannot write %s: %s no linear colours; use "
+                        "--format p6, p3 or png\n", ex->program->name,
+                rt_image_format_name(s->format),
+                s->view != 0 ? "a debug view (--view) has"
+                             : "this program renders");
+        return CLI_EXIT_USAGE;
+    }
     if (!rt_image_format_supported(s->format)) {
         fprintf(stderr, "%s: cannot write %s: this build has no PNG "
                         "support (it was built without libpng); use --format "
@@ -189,7 +209,10 @@ char *cli_export_default_output(const char *scene, rt_image_format format)
     base = base ? base + 1 : scene;
     const char *dot = strrchr(base, '.');
     size_t length = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    const char *extension = format == RT_IMAGE_PNG ? ".png" : ".ppm";
+    const char *extension = format == RT_IMAGE_PNG   ? ".png"
+                            : format == RT_IMAGE_PFM ? ".pfm"
+                            : format == RT_IMAGE_EXR ? ".exr"
+                                                     : ".ppm";
     char *out = malloc(length + 5);
     if (out != NULL) {
         memcpy(out, base, length);
@@ -245,6 +268,7 @@ static int render_here(const cli_export *ex, cli_progress *progress,
     const cli_settings *s = ex->settings;
     rt_render_options options = s->render;
     options.stats = stats;
+    options.linear = ex->linear;
     if (progress != NULL) {
         options.on_row = cli_progress_row;
         options.user = progress;
@@ -275,6 +299,26 @@ static int wants_progress(const cli_export *ex)
            !(ex->to_stdout && isatty(STDOUT_FILENO));
 }
 
+static int write_stdout(void *user, const void *data, size_t size)
+{
+    (void)user;
+    return fwrite(data, 1, size, stdout) == size;
+}
+
+/* A float image to standard output, flushed. */
+static rt_status write_float_stdout(const rt_image_float *linear,
+                                    rt_image_format format, rt_error *error)
+{
+    rt_status status = rt_image_float_write_to(write_stdout, NULL, linear,
+                                               format, error);
+    if (status == RT_OK && (fflush(stdout) != 0 || ferror(stdout))) {
+        snprintf(error->message, sizeof error->message,
+                 "cannot write the image: input/output error");
+        status = error->status = RT_ERR_IO;
+    }
+    return status;
+}
+
 /* Step 5: writes the image to the output (or standard output).  When that
  * fails, or the output has become an input, the image is kept under
  * another name; a signal is the user's wish to stop, and keeps nothing.
@@ -284,22 +328,31 @@ static rt_status write_image(const cli_export *ex, const rt_image *image)
     const char *program = ex->program->name;
     const char *kept_path = ex->to_stdout ? NULL : ex->output;
     rt_image_format format = ex->settings->format;
+    /* a float image that cannot be written is kept as its bytes */
+    rt_image_format kept = ex->linear != NULL ? RT_IMAGE_P6 : format;
     if (cli_refuse_input_as_output(program, ex->output, ex->scene,
                                    ex->operand, "the image")) {
-        cli_keep_image(program, kept_path, image, format);
+        cli_keep_image(program, kept_path, image, kept);
         return RT_ERR_IO;
     }
     rt_error error;
     rt_save_options save = cli_save_options();
-    rt_status status =
-        ex->to_stdout
-            ? rt_image_write_file(stdout, image, format, &error)
-            : rt_image_save(ex->output, image, format, &save, &error);
+    rt_status status;
+    if (ex->linear != NULL)
+        status = ex->to_stdout
+                     ? write_float_stdout(ex->linear, format, &error)
+                     : rt_image_float_save(ex->output, ex->linear, format,
+                                           &save, &error);
+    else
+        status = ex->to_stdout
+                     ? rt_image_write_file(stdout, image, format, &error)
+                     : rt_image_save(ex->output, image, format, &save,
+                                     &error);
     if (status == RT_OK || status == RT_ERR_INTERRUPTED)
         return status;
     fprintf(stderr, "%s: %s%s\n", program, ex->to_stdout ? "<stdout>: " : "",
             error.message);
-    cli_keep_image(program, kept_path, image, format);
+    cli_keep_image(program, kept_path, image, kept);
     return status;
 }
 
@@ -340,6 +393,16 @@ int cli_export_render(cli_export *ex)
         fprintf(stderr, "%s: %s\n", ex->program->name, error.message);
         return EXIT_BAD_INPUT;
     }
+    rt_image_float linear = {0};
+    if (is_float_format(ex->settings->format)) {
+        if (rt_image_float_init(&linear, ex->report.width, ex->report.height,
+                                &error) != RT_OK) {
+            fprintf(stderr, "%s: %s\n", ex->program->name, error.message);
+            rt_image_release(&image);
+            return EXIT_BAD_INPUT;
+        }
+        ex->linear = &linear;
+    }
     cli_progress progress;
     cli_progress_start(&progress, stderr, isatty(STDERR_FILENO), ex->name,
                        ex->report.height, ex->report.width,
@@ -361,6 +424,8 @@ int cli_export_render(cli_export *ex)
         }
     }
     rt_image_release(&image);
+    rt_image_float_release(&linear);
+    ex->linear = NULL;
     return code;
 }
 

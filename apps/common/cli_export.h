@@ -103,6 +103,9 @@ struct cli_export {
     rt_scene *scene;                /* after cli_export_load; owned */
     const char *output;             /* after cli_export_render's checks */
     char *default_output;           /* owned, when -o was not given */
+    rt_image_float *linear;         /* during cli_export_render with a
+                                       float format (pfm, exr): the linear
+                                       image rendered with the bytes */
     cli_render_report report;       /* the times and sizes --stats shows */
 };
 

@@ -8,7 +8,10 @@
  * Formats: PPM (Netpbm P3, ASCII, and P6, binary, maxval 255) always; PNG
  * (8-bit RGB, no gamma or colour-space chunk, so viewers show the computed
  * values as they are) when the library was built with libpng
- * (rt_image_format_supported says).  Every writer goes to a sink (a
+ * (rt_image_format_supported says).  Float images (rt_image_float, linear
+ * RGB, 1.0 = white, unclamped: the renderer's colours before rounding) go
+ * to PFM always and to OpenEXR in builds with OpenEXR; see below.  Every
+ * writer goes to a sink (a
  * callback); the FILE and path variants are thin wrappers.
  *
  * Saving to a path (rt_image_save) never damages
@@ -110,7 +113,11 @@ typedef enum rt_image_format {
     RT_IMAGE_P3 = 3,        /* PPM, ASCII (the course's format), lines of
                                at most 70 characters */
     RT_IMAGE_P6 = 6,        /* PPM, binary */
-    RT_IMAGE_PNG = 16       /* PNG, 8-bit RGB; needs a build with libpng */
+    RT_IMAGE_PNG = 16,      /* PNG, 8-bit RGB; needs a build with libpng */
+    RT_IMAGE_PFM = 32,      /* Portable FloatMap, float32 RGB (an
+                               rt_image_float only) */
+    RT_IMAGE_EXR = 33       /* OpenEXR, FLOAT RGB, ZIP (an rt_image_float
+                               only); needs a build with OpenEXR */
 } rt_image_format;
 
 /* Non-zero when this build can write `format` (PNG needs libpng).
@@ -123,7 +130,7 @@ RT_API const char *rt_image_format_name(rt_image_format format);
 
 /*
  * The format a path's extension asks for, case-insensitively: ".png" PNG,
- * ".ppm" and ".pnm" binary P6 (P3 is never chosen by extension: it is asked
+ * ".pfm" PFM, ".exr" EXR, ".ppm" and ".pnm" binary P6 (P3 is never chosen by extension: it is asked
  * for by name).  Returns RT_OK, or RT_ERR_FORMAT for any other extension or
  * none (*format untouched) with a message naming the path in *error (may be
  * NULL).  Does not look at the file.  Thread-safe.
@@ -201,6 +208,57 @@ RT_API rt_status rt_image_save(const char *path, const rt_image *image,
  * fails in milliseconds.  Thread-safe.
  */
 RT_API rt_status rt_image_save_check(const char *path,
+                                     const rt_save_options *options,
+                                     rt_error *error);
+
+/*
+ * Float images: linear RGB, unclamped, 1.0 = white (a channel of the
+ * model's 0..255 scale divided by 255; docs/saving-images.md).  A view like
+ * rt_image: `stride` counts floats from one row to the next, >= 3 * width,
+ * rows top to bottom.  rt_render fills one through
+ * rt_render_options.linear.  Only the float formats (RT_IMAGE_PFM,
+ * RT_IMAGE_EXR) take them, and only float images take those formats
+ * (RT_ERR_FORMAT otherwise).  Thread-safe on distinct images and paths.
+ */
+typedef struct rt_image_float {
+    int width;
+    int height;
+    size_t stride;          /* floats from one row to the next */
+    float *pixels;
+} rt_image_float;
+
+/* As rt_image_init: a zero (black) image of width x height floats RGB,
+ * stride 3 * width; free it with rt_image_float_release (a zeroed image
+ * is a no-op there). */
+RT_API rt_status rt_image_float_init(rt_image_float *image, int width,
+                                     int height, rt_error *error);
+RT_API void rt_image_float_release(rt_image_float *image);
+
+/* Pointer to pixel (x, y), three floats R G B. */
+static inline float *rt_image_float_pixel(const rt_image_float *image, int x,
+                                          int y)
+{
+    return image->pixels + (size_t)y * image->stride + (size_t)x * 3;
+}
+
+/*
+ * Encodes `image` as PFM ("PF", width and height, scale -1.0 for little
+ * endian, then the rows bottom to top, as the format wants) or EXR to the
+ * sink.  Same statuses as rt_image_write_to; RT_ERR_FORMAT for a format
+ * that is not a float one, or EXR in a build without OpenEXR.
+ * Thread-safe on distinct sinks.
+ */
+RT_API rt_status rt_image_float_write_to(rt_write_func write, void *user,
+                                         const rt_image_float *image,
+                                         rt_image_format format,
+                                         rt_error *error);
+
+/* Saves a float image at `path` by the rule at the top of this header
+ * (the same temporary file and rename, statuses and messages as
+ * rt_image_save).  Thread-safe on distinct paths. */
+RT_API rt_status rt_image_float_save(const char *path,
+                                     const rt_image_float *image,
+                                     rt_image_format format,
                                      const rt_save_options *options,
                                      rt_error *error);
 

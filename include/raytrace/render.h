@@ -293,6 +293,16 @@ typedef struct rt_render_options {
                                    RT_ERR_ARGUMENT).  Renders, views and
                                    explanations with other cameras reuse
                                    the scene's kernel and accelerator */
+    rt_image_float *linear;     /* NULL (the default): bytes only; else a
+                                   float image of the output image's size
+                                   that the render also fills with each
+                                   pixel's linear colour (the mean of its
+                                   samples before rounding, / 255,
+                                   unclamped), exactly as the bytes are
+                                   rounded from it: rt_channel_to_byte(255.0
+                                   * (double)value) is the byte.  Rows the
+                                   render writes only.  Refused by the debug
+                                   views */
 } rt_render_options;
 
 /* Sets size to sizeof(rt_render_options) and the defaults: max_depth 5,

@@ -33,6 +33,13 @@ rt_status rt__save(const char *path, const rt_producer *producer,
 rt_status rt__ppm_write_to(rt_write_func write, void *user,
                            const rt_image *image, rt_image_format format);
 
+#if RAYTRACE_HAVE_EXR
+/* Encodes `image` (valid) as a scanline OpenEXR of FLOAT R, G, B with ZIP
+ * compression to the sink (built in memory, then written at once). */
+rt_status rt__exr_write_to(rt_write_func write, void *user,
+                           const rt_image_float *image, rt_error *error);
+#endif
+
 #if RAYTRACE_HAVE_PNG
 /* Encodes `image` (valid) as an 8-bit RGB PNG to the sink. */
 rt_status rt__png_write_to(rt_write_func write, void *user,

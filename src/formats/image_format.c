@@ -19,6 +19,10 @@ int rt_image_format_supported(rt_image_format format)
         return 1;
     case RT_IMAGE_PNG:
         return RAYTRACE_HAVE_PNG;
+    case RT_IMAGE_PFM:
+        return 1;
+    case RT_IMAGE_EXR:
+        return RAYTRACE_HAVE_EXR;
     }
     return 0;
 }
@@ -32,6 +36,10 @@ const char *rt_image_format_name(rt_image_format format)
         return "p6";
     case RT_IMAGE_PNG:
         return "png";
+    case RT_IMAGE_PFM:
+        return "pfm";
+    case RT_IMAGE_EXR:
+        return "exr";
     }
     return "unknown";
 }
@@ -55,13 +63,17 @@ rt_status rt_image_format_from_path(const char *path, rt_image_format *format,
     const char *dot = rt__path_extension(path);
     if (dot != NULL && extension_is(dot, ".png"))
         *format = RT_IMAGE_PNG;
+    else if (dot != NULL && extension_is(dot, ".pfm"))
+        *format = RT_IMAGE_PFM;
+    else if (dot != NULL && extension_is(dot, ".exr"))
+        *format = RT_IMAGE_EXR;
     else if (dot != NULL &&
              (extension_is(dot, ".ppm") || extension_is(dot, ".pnm")))
         *format = RT_IMAGE_P6;
     else
         return rt__error_set(error, RT_ERR_FORMAT, path, 0, 0,
                              "cannot tell the image format: expected the "
-                             "extension .png, .ppm or .pnm");
+                             "extension .png, .ppm, .pnm, .pfm or .exr");
     return RT_OK;
 }
 
@@ -72,9 +84,14 @@ rt_status rt__image_format_refusal(rt_image_format format, rt_error *error)
                              "cannot write PNG: this build of libraytrace "
                              "has no PNG support (it was built without "
                              "libpng)");
+    if (format == RT_IMAGE_EXR)
+        return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
+                             "cannot write EXR: this build of libraytrace "
+                             "has no OpenEXR support (configure with "
+                             "-DRAYTRACE_EXR=ON and libopenexr-dev)");
     return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
                          "cannot write images in format %d: expected p3, "
-                         "p6 or png", (int)format);
+                         "p6, png, pfm or exr", (int)format);
 }
 
 rt_status rt_image_write_to(rt_write_func write, void *user,
@@ -88,6 +105,12 @@ rt_status rt_image_write_to(rt_write_func write, void *user,
         image->stride < (size_t)image->width * 3)
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "expected an image and a sink");
+    if (format == RT_IMAGE_PFM || format == RT_IMAGE_EXR)
+        return rt__error_set(error, RT_ERR_FORMAT, NULL, 0, 0,
+                             "cannot write an 8-bit image as %s, a float "
+                             "format: write an rt_image_float "
+                             "(rt_image_float_save)",
+                             rt_image_format_name(format));
 #if RAYTRACE_HAVE_PNG
     if (format == RT_IMAGE_PNG)
         return rt__png_write_to(write, user, image, error);

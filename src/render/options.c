@@ -49,7 +49,7 @@ static rt_status take_options(const rt_render_options *in,
     TAKE(max_depth) TAKE(threads) TAKE(precision) TAKE(fast_inv_sqrt)
     TAKE(samples) TAKE(sampling) TAKE(on_row) TAKE(cancel) TAKE(user)
     TAKE(stats) TAKE(kernel) TAKE(accel) TAKE(aperture) TAKE(focal_distance)
-    TAKE(width) TAKE(height) TAKE(region) TAKE(camera)
+    TAKE(width) TAKE(height) TAKE(region) TAKE(camera) TAKE(linear)
 #undef TAKE
     return RT_OK;
 }

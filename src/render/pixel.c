@@ -177,11 +177,40 @@ static rt_color pixel_mean(const rt_frame *f, int i, int row,
     return (rt_color){sum.r * inv, sum.g * inv, sum.b * inv};
 }
 
-static void put_pixel(unsigned char *out, rt_color c)
+float rt__linear_channel(double value)
+{
+    float f = (float)(value / 255.0);
+    unsigned char want = rt_channel_to_byte(value);
+    /* At most a step or two: float keeps 24 bits, a byte needs 8. */
+    for (int i = 0; i < 4; i++) {
+        unsigned char got = rt_channel_to_byte(255.0 * (double)f);
+        if (got == want)
+            break;
+        f = nextafterf(f, got < want ? INFINITY : -INFINITY);
+    }
+    return f;
+}
+
+/* Writes pixel c as bytes at `out` and, when `linear` is not NULL, as
+ * linear floats there. */
+static void put_pixel(unsigned char *out, float *linear, rt_color c)
 {
     out[0] = rt_channel_to_byte(c.r);
     out[1] = rt_channel_to_byte(c.g);
     out[2] = rt_channel_to_byte(c.b);
+    if (linear != NULL) {
+        linear[0] = rt__linear_channel(c.r);
+        linear[1] = rt__linear_channel(c.g);
+        linear[2] = rt__linear_channel(c.b);
+    }
+}
+
+/* The first linear float of row `row` of the output image, NULL when the
+ * render writes none. */
+static float *linear_row(const rt_frame *f, int row)
+{
+    return f->linear != NULL ? rt_image_float_pixel(f->linear, 0, row)
+                             : NULL;
 }
 
 /* Rays a span of pixels traces at most (samples are at most 1024), and
@@ -211,7 +240,8 @@ static int span_width(const rt_frame *f)
  * each pixel is the mean of its samples in pixel_mean()'s order.
  */
 static void render_span(const rt_frame *f, int row, int i0, int i1,
-                        unsigned char *out, rt_counters *counters)
+                        unsigned char *out, float *linear,
+                        rt_counters *counters)
 {
     rt_vec3 directions[SPAN_RAYS];
     rt_color colors[SPAN_RAYS];
@@ -238,7 +268,7 @@ static void render_span(const rt_frame *f, int row, int i0, int i1,
             }
             c = (rt_color){c.r * inv, c.g * inv, c.b * inv};
         }
-        put_pixel(&out[3 * i], c);
+        put_pixel(&out[3 * i], linear != NULL ? &linear[3 * i] : NULL, c);
     }
 }
 
@@ -246,20 +276,21 @@ int rt__frame_row(const rt_frame *f, int row, unsigned char *out,
                   const rt_stop *stop, rt_counters *counters)
 {
     rt__counters_forget_blockers(counters);
+    float *linear = linear_row(f, row);
     if (spans(f)) {
         int per_span = span_width(f);
         for (int i = 0; i < f->width; i += per_span) {
             if (rt__stop_now(stop))
                 return 0;
             int end = i + per_span < f->width ? i + per_span : f->width;
-            render_span(f, row, i, end, out, counters);
+            render_span(f, row, i, end, out, linear, counters);
         }
         return 1;
     }
     for (int i = 0; i < f->width; i++) {
         if (rt__stop_now(stop))
             return 0;
-        put_pixel(&out[3 * i],
+        put_pixel(&out[3 * i], linear != NULL ? &linear[3 * i] : NULL,
                   pixel_mean(f, f->x0 + i, f->y0 + row, counters));
     }
     return 1;

@@ -335,6 +335,16 @@ static rt_status check_image(const rt_render_plan *plan, int row_begin,
         return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
                              "rows %d..%d: expected a band within 0..%d",
                              row_begin, row_end, image->height);
+    const rt_image_float *linear = plan->options.linear;
+    if (linear != NULL &&
+        (linear->pixels == NULL || linear->width != image->width ||
+         linear->height != image->height ||
+         linear->stride < (size_t)linear->width * 3))
+        return rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                             "the linear image is %d x %d (stride %zu "
+                             "floats) but the render writes %d x %d",
+                             linear->width, linear->height, linear->stride,
+                             image->width, image->height);
     return RT_OK;
 }
 
@@ -359,6 +369,10 @@ rt_status rt__render_job(const rt_scene *scene,
     rt_status status = rt__render_take(scene, caller_options, &plan, error);
     if (status == RT_OK)
         status = check_image(&plan, row_begin, row_end, image, error);
+    if (status == RT_OK && work != NULL && plan.options.linear != NULL)
+        status = rt__error_set(error, RT_ERR_ARGUMENT, NULL, 0, 0,
+                               "a debug view has no linear colours: "
+                               "expected no linear image");
     if (status == RT_OK)
         status = rt__render_check(&plan, error);
     if (status != RT_OK)
@@ -374,6 +388,7 @@ rt_status rt__render_job(const rt_scene *scene,
         return status;
     if (max_depth >= 0)
         j.frame.settings.max_depth = max_depth;
+    j.frame.linear = options->linear;
     atomic_init(&j.next_row, row_begin);
     atomic_init(&j.cancelled, 0);
     pthread_mutex_init(&j.callback_lock, NULL);

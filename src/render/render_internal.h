@@ -72,7 +72,17 @@ typedef struct rt_frame {
     rt_octree_info octree;  /* when settings.octree */
     rt_kernel_eye *own_eye; /* the eye of a camera other than the scene's,
                                made for this frame (rt__frame_release) */
+    const rt_image_float *linear;   /* NULL, or where rt__frame_row also
+                                       writes the linear colours (checked
+                                       by rt__render_job) */
 } rt_frame;
+
+/* The float a linear image holds for a channel of value `value` (0..255
+ * scale): the nearest float to value / 255, moved by one unit in the last
+ * place towards `value` when that float would round to another byte, so
+ * that rt_channel_to_byte(255.0 * (double)result) is always
+ * rt_channel_to_byte(value). */
+float rt__linear_channel(double value);
 
 /*
  * Sets up *frame for a render of `scene` by `plan`: camera, lens, the
