@@ -101,13 +101,15 @@ raytrace_install_pkgconfig(raytrace "${PROJECT_SOURCE_DIR}/cmake/raytrace.pc.in"
 install(FILES "${PROJECT_SOURCE_DIR}/LICENSE"
   DESTINATION "${CMAKE_INSTALL_DOCDIR}")
 if(RAYTRACE_APPS)
-  install(FILES "${PROJECT_SOURCE_DIR}/man/rt-export.1"
-    "${PROJECT_SOURCE_DIR}/man/rt-convert.1"
-    DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
-  if(TARGET raytrace_rt_view)
-    install(FILES "${PROJECT_SOURCE_DIR}/man/rt-view.1"
-      DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
-  endif()
+  # one page per installed program, installed with it
+  foreach(program rt-export rt-convert rt-view rt-export-mpi rt-bench
+          in104-render)
+    string(REPLACE "-" "_" target "raytrace_${program}")
+    if(TARGET ${target})
+      install(FILES "${PROJECT_SOURCE_DIR}/man/${program}.1"
+        DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+    endif()
+  endforeach()
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/scenes/"
     DESTINATION "${CMAKE_INSTALL_DATADIR}/raytrace/scenes")
 endif()

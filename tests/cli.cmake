@@ -38,3 +38,7 @@ set_tests_properties(test_cli_outputs_sources PROPERTIES
 raytrace_add_suite(test_cli_bounds
   LIBS raytrace_cli)
 set_tests_properties(test_cli_bounds PROPERTIES TIMEOUT 120)
+# The progress line (tests/test_progress.c): its fitting to a width, and
+# rt-export under a pseudo-terminal of 70 columns and into a file.
+raytrace_add_suite(test_progress LIBS raytrace_cli)
+set_tests_properties(test_progress PROPERTIES TIMEOUT 300)

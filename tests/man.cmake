@@ -3,7 +3,8 @@
 # program cannot drift apart (tests/man_check.cmake).  Without groff
 # (Debian: groff-base, which .ci/install-deps installs) the rendering check
 # is a visible skip.
-foreach(program rt-export rt-view rt-convert)
+foreach(program rt-export rt-view rt-convert rt-export-mpi rt-bench
+        in104-render)
   string(REPLACE "-" "_" target "raytrace_${program}")
   if(NOT TARGET ${target})
     continue()
@@ -14,6 +15,8 @@ foreach(program rt-export rt-view rt-convert)
   set(min_options 10)
   if(program STREQUAL "rt-convert")
     set(min_options 6)
+  elseif(program STREQUAL "in104-render")
+    set(min_options 2)          # --help and --version
   endif()
   add_test(NAME ${name}_names_every_option_of_its_help
     COMMAND "${CMAKE_COMMAND}" -DSTEP=options -DMIN_OPTIONS=${min_options}
@@ -26,4 +29,21 @@ foreach(program rt-export rt-view rt-convert)
             -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
   set_tests_properties(${name}_renders_without_warnings PROPERTIES
     SKIP_REGULAR_EXPRESSION "MAN-SKIP: ")
+endforeach()
+
+# Every installed program answers --help (usage on standard output) and
+# --version ("PROG (libraytrace) <the project's version>"), both with exit
+# status 0 (man_check.cmake, STEP=answers).
+foreach(program rt-export rt-view rt-convert rt-export-mpi rt-bench
+        in104-render)
+  string(REPLACE "-" "_" target "raytrace_${program}")
+  if(NOT TARGET ${target})
+    continue()
+  endif()
+  string(REPLACE "-" "_" name "${program}")
+  add_test(NAME program_${name}_answers_help_and_version
+    COMMAND "${CMAKE_COMMAND}" -DSTEP=answers -DNAME=${program}
+            "-DPROGRAM=$<TARGET_FILE:${target}>"
+            "-DVERSION=${PROJECT_VERSION}"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
 endforeach()

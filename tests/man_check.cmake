@@ -7,6 +7,9 @@
 #            (default 10) means the help was not read as expected
 #   render   groff -man -Tutf8 -ww renders PAGE with nothing on stderr
 #            (prints "MAN-SKIP: ..." without groff)
+#   answers  PROGRAM --help exits 0 with a usage line naming NAME on
+#            standard output; PROGRAM --version exits 0 printing exactly
+#            "NAME (libraytrace) VERSION"; both with nothing on stderr
 cmake_minimum_required(VERSION 3.20)
 
 if(STEP STREQUAL "options")
@@ -52,6 +55,25 @@ elseif(STEP STREQUAL "render")
     message(FATAL_ERROR "groff on ${PAGE} (${result}):\n${warnings}")
   endif()
   message("${PAGE} renders without warnings")
+
+elseif(STEP STREQUAL "answers")
+  execute_process(COMMAND "${PROGRAM}" --help OUTPUT_VARIABLE help
+                  ERROR_VARIABLE help_errors RESULT_VARIABLE result)
+  string(TOLOWER "${help}" lower_help)
+  if(NOT result EQUAL 0 OR NOT help_errors STREQUAL "" OR
+     NOT lower_help MATCHES "^usage: ${NAME} ")
+    message(FATAL_ERROR "${NAME} --help (${result}): stdout:\n${help}\n"
+                        "stderr:\n${help_errors}")
+  endif()
+  execute_process(COMMAND "${PROGRAM}" --version OUTPUT_VARIABLE version
+                  ERROR_VARIABLE version_errors RESULT_VARIABLE result)
+  if(NOT result EQUAL 0 OR NOT version_errors STREQUAL "" OR
+     NOT version STREQUAL "${NAME} (libraytrace) ${VERSION}\n")
+    message(FATAL_ERROR "${NAME} --version (${result}): '${version}', "
+                        "expected '${NAME} (libraytrace) ${VERSION}'\n"
+                        "${version_errors}")
+  endif()
+  message("${NAME} answers --help and --version ${VERSION}")
 
 else()
   message(FATAL_ERROR "unknown STEP \"${STEP}\"")

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "testutil.h"
@@ -388,8 +389,9 @@ END_TEST
 /* A late failure keeps the work                                       */
 
 /* The render the rescue tests stop and change things under: long enough
- * that its first progress line (after a second, off a terminal) comes well
- * before its end - about 2 s optimised, and the same work would take
+ * that half a second of its CPU time (mid_render: off a terminal the
+ * progress line comes only at the end) comes well before its end - about
+ * 1.5 s optimised, and the same work would take
  * minutes under AddressSanitizer, whose programs run some 30 times slower:
  * there a sixteenth of it does. */
 #if RT_TEST_UNDER_ASAN
@@ -441,6 +443,18 @@ static void assert_same_as_a_normal_render(const char *dir, const char *kept,
     free(b);
 }
 
+/* Waits until `s` has rendered for half a second of CPU time (the load of
+ * the cubes takes milliseconds), then stops it (SIGSTOP); fails the test
+ * when it ended first. */
+static void stop_mid_render(rt_test_process *s)
+{
+    while (rt_test_running(s) && rt_test_cpu_seconds(s) < 0.5)
+        nanosleep(&(struct timespec){0, 10000000}, NULL);
+    ck_assert_msg(rt_test_running(s), "the render ended before 0.5 s of "
+                                      "CPU time: %s", s->err ? s->err : "");
+    ck_assert_int_eq(kill(s->pid, SIGSTOP), 0);
+}
+
 START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
 {
     char *dir = rt_test_temp_dir();
@@ -451,9 +465,7 @@ START_TEST(export_keeps_the_image_when_its_folder_is_removed_mid_render)
     rt_test_setup setup = {NULL, NULL, rt_test_in_dir(dir, "tmp")};
     rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, &setup);
     /* the output was checked before the render: its folder is there */
-    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
-                  "no progress line: %s", s.err ? s.err : "");
-    ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
+    stop_mid_render(&s);
     ck_assert_int_eq(rmdir(rt_test_in_dir(dir, "sub")), 0);
     ck_assert_int_eq(kill(s.pid, SIGCONT), 0);
     rt_test_output r = rt_test_finish(&s);
@@ -485,9 +497,7 @@ START_TEST(export_keeps_the_image_when_its_output_becomes_the_scene)
     const char *args[] = {"s.scn", SLOW, "--progress", "--format", "png",
                           "-o", "out.png", NULL};
     rt_test_process s = rt_test_start_piped(dir, RT_EXPORT_PATH, args, NULL);
-    ck_assert_msg(rt_test_wait_for_line(&s, "rendering "),
-                  "no progress line: %s", s.err ? s.err : "");
-    ck_assert_int_eq(kill(s.pid, SIGSTOP), 0);
+    stop_mid_render(&s);
     /* out.png is now the scene itself, under another name */
     ck_assert_int_eq(link(rt_test_in_dir(dir, "s.scn"),
                           rt_test_in_dir(dir, "out.png")), 0);

@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <sys/resource.h>
 
 #include "cli_text.h"
@@ -47,21 +48,120 @@ static void format_rate(double rate, char *out, size_t size)
     snprintf(out, size, "%.3g%s", rate, prefixes[p]);
 }
 
-static void draw(cli_progress *p, double elapsed)
+/* The columns of the terminal `out` is, re-read at every redraw (so a
+ * resized window is followed without a SIGWINCH handler);
+ * CLI_PROGRESS_COLUMNS when it does not say. */
+static int terminal_columns(FILE *out)
 {
-    char spent[32], left[32], rate[32];
+    struct winsize size;
+    if (ioctl(fileno(out), TIOCGWINSZ, &size) != 0 || size.ws_col == 0)
+        return CLI_PROGRESS_COLUMNS;
+    return size.ws_col;
+}
+
+/* The length of fields[0..count) joined by ", ". */
+static size_t joined_length(const char *const *fields, int count)
+{
+    size_t length = 0;
+    for (int i = 0; i < count; i++)
+        length += strlen(fields[i]) + (i > 0 ? 2 : 0);
+    return length;
+}
+
+/* The first byte at or after `text` that starts a UTF-8 character (a cut
+ * never leaves half a character). */
+static const char *character_start(const char *text)
+{
+    while (((unsigned char)*text & 0xC0) == 0x80)
+        text++;
+    return text;
+}
+
+size_t cli_progress_fit(int columns, const char *name,
+                        const char *const *fields, int count, char *out,
+                        size_t size)
+{
+    static const char head[] = "rendering ", colon[] = ": ",
+                      ellipsis[] = "...";
+    const size_t decoration = strlen(head) + strlen(colon),
+                 dots = strlen(ellipsis);
+    if (size == 0)
+        return 0;
+    size_t limit = (size_t)(columns > 0 ? columns : CLI_PROGRESS_COLUMNS) - 1;
+    size_t name_length = strlen(name);
+    const char *base = strrchr(name, '/');
+    size_t base_length = strlen(base ? base + 1 : name);
+    /* the least a name is cut to before a field goes: "..." and its file
+     * name */
+    size_t least = name_length < dots + base_length ? name_length
+                                                      : dots + base_length;
+    int kept = count;
+    while (kept > 1 && decoration + joined_length(fields, kept) + least > limit)
+        kept--;
+    size_t fixed = decoration + joined_length(fields, kept);
+    size_t budget = limit > fixed ? limit - fixed : 0;
+
+    char line[CLI_PROGRESS_LINE];
+    size_t length = (size_t)snprintf(line, sizeof line, "%s", head);
+    if (name_length <= budget)
+        length += (size_t)snprintf(line + length, sizeof line - length, "%s",
+                                   name);
+    else {
+        size_t tail = budget > dots ? budget - dots : 0;
+        length += (size_t)snprintf(
+            line + length, sizeof line - length, "%s%s", ellipsis,
+            character_start(name + name_length - tail));
+    }
+    for (int i = 0; i < kept && length < sizeof line; i++)
+        length += (size_t)snprintf(line + length, sizeof line - length,
+                                   "%s%s", i ? ", " : colon, fields[i]);
+    if (length >= sizeof line)
+        length = sizeof line - 1;
+    /* narrower than the least line: cut at the right edge, on a character */
+    if (length > limit)
+        length = limit;
+    if (length > size - 1)
+        length = size - 1;
+    while (length > 0 && ((unsigned char)line[length] & 0xC0) == 0x80)
+        length--;
+    memcpy(out, line, length);
+    out[length] = '\0';
+    return length;
+}
+
+/* Draws the line: in place on a terminal, fitted to its width; elsewhere
+ * a whole line.  `last`: the render is over (the final line, without the
+ * time left). */
+static void draw(cli_progress *p, double elapsed, int last)
+{
+    char percent[16], spent[32], left[48], rate[48];
+    snprintf(percent, sizeof percent, "%3d%%",
+             (int)(100.0 * p->done / p->rows));
     format_duration(elapsed, spent, sizeof spent);
     format_duration(elapsed * (p->rows - p->done) / p->done, left,
                     sizeof left);
+    strcat(left, " left");
     format_rate(p->rays_per_row * p->done / (elapsed > 0 ? elapsed : 1e-9),
                 rate, sizeof rate);
-    char name[1024];
-    /* the trailing spaces wipe a longer line drawn before */
-    fprintf(p->out, "%srendering %s: %3d%%, %s, %s left, %s camera rays/s%s",
-            p->terminal ? "\r" : "",
-            cli_printable(p->name, name, sizeof name),
-            (int)(100.0 * p->done / p->rows), spent, left, rate,
-            p->terminal ? "   " : "\n");
+    strcat(rate, " camera rays/s");
+    /* in the order shown; the last ones go first when the line is too
+     * wide */
+    const char *fields[4] = {percent, spent, left, rate};
+    if (last)
+        fields[2] = rate;
+    int count = last ? 3 : 4;
+    char name[1024], line[CLI_PROGRESS_LINE];
+    cli_printable(p->name, name, sizeof name);
+    if (p->terminal) {
+        cli_progress_fit(terminal_columns(p->out), name, fields, count, line,
+                         sizeof line);
+        /* erase to the end of the line: what a longer line left there */
+        fprintf(p->out, "\r%s\033[K%s", line, last ? "\n" : "");
+    } else {
+        cli_progress_fit(CLI_PROGRESS_LINE, name, fields, count, line,
+                         sizeof line);
+        fprintf(p->out, "%s\n", line);
+    }
     fflush(p->out);
     p->shown = 1;
 }
@@ -71,20 +171,23 @@ int cli_progress_row(void *user, int row)
     (void)row;
     cli_progress *p = user;
     p->done++;
+    if (!p->terminal)
+        return 1;               /* only the final line */
     double elapsed = cli_seconds_since(p->start);
-    double interval = p->terminal ? 0.1 : 1.0;
     if (elapsed < 0.5 ||
-        (cli_seconds_since(p->last) < interval && p->done < p->rows))
+        (cli_seconds_since(p->last) < 0.1 && p->done < p->rows))
         return 1;
     p->last = cli_clock_seconds();
-    draw(p, elapsed);
+    draw(p, elapsed, 0);
     return 1;
 }
 
 void cli_progress_end(cli_progress *progress)
 {
-    if (progress->shown && progress->terminal)
-        fputc('\n', progress->out);
+    /* on a terminal, only when a line is there to finish (a short render
+     * shows nothing); elsewhere the one line, once a row was counted */
+    if (progress->done > 0 && (progress->shown || !progress->terminal))
+        draw(progress, cli_seconds_since(progress->start), 1);
 }
 
 /* ------------------------------------------------------------------ */

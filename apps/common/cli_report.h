@@ -16,11 +16,14 @@
 
 /*
  * The progress of one render, on `out` (stderr).  On a terminal the line
- * is rewritten in place (carriage return) at most ten times a second, and
- * only once the render has taken half a second; elsewhere (--progress
- * into a file or a pipe) a whole line is written about once a second.
- * Rates count camera rays only (pixels done x samples): the library
- * counts the other rays only at the end of the render.
+ * is redrawn in place (a carriage return, the line, then ESC [ K to erase
+ * what a longer line left) at most ten times a second, and only once the
+ * render has taken half a second, fitted to the terminal's width
+ * (cli_progress_fit, the width read again at each redraw); the final
+ * state ends it with a newline.  Elsewhere (--progress into a file or a
+ * pipe) nothing is written while the render runs, and one whole line at
+ * its end.  Rates count camera rays only (pixels done x samples): the
+ * library counts the other rays only at the end of the render.
  */
 typedef struct cli_progress {
     FILE *out;
@@ -41,8 +44,34 @@ void cli_progress_start(cli_progress *progress, FILE *out, int terminal,
  * redraws the line when it is time.  Always returns 1 (never cancels). */
 int cli_progress_row(void *user, int row);
 
-/* Ends the line, if one was shown. */
+/* Ends the progress: on a terminal, the final state of the line and a
+ * newline when a line was shown; elsewhere the one final line, when any
+ * row was counted. */
 void cli_progress_end(cli_progress *progress);
+
+/* The width assumed when the terminal does not give its own (0 columns,
+ * or not a terminal the ioctl knows). */
+#define CLI_PROGRESS_COLUMNS 80
+/* The longest progress line, in bytes, NUL included. */
+#define CLI_PROGRESS_LINE 1200
+
+/*
+ * The progress line "rendering NAME: F0, F1, ..." for a terminal of
+ * `columns` columns (0 or less: CLI_PROGRESS_COLUMNS), into out[0..size)
+ * (NUL-terminated).  It takes at most columns - 1 bytes, so that it never
+ * reaches the last column and the terminal never wraps it (a byte is at
+ * most one column: a UTF-8 name takes no more columns than bytes).  When
+ * the whole line is wider, NAME is cut from the left, "..." then its end
+ * ("...scenes/cubes.scn"), down to "..." and its file name; when even
+ * that is too wide the fields go, the last one first (fields[0] always
+ * stays), and then the file name is cut from the left too; a width below
+ * even that cuts the line at the right edge.  A cut never splits a UTF-8
+ * character.  `name` is shown as given (cli_printable it first).  Returns
+ * the length written.  Thread-safe (no state).
+ */
+size_t cli_progress_fit(int columns, const char *name,
+                        const char *const *fields, int count, char *out,
+                        size_t size);
 
 /* What a render was asked to do and where its time went, besides what
  * rt_render_stats counts. */

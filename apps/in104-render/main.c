@@ -6,6 +6,8 @@
  * program builds against libraytrace (docs/in104.md).
  *
  * Usage: in104-render scene.scn [image.ppm]   (default: scene name + .ppm)
+ *        in104-render --help | --version
+ * IN104_RENDER_VERSION, the project's version, comes from CMake.
  */
 #include "geometry.h"
 #include "raytracer.h"
@@ -25,8 +27,32 @@ static void defaultOutput(const char *sceneFile, char *out, size_t size)
     snprintf(out, size, "%.*s.ppm", (int)length, base);
 }
 
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "Usage: in104-render SCENE [IMAGE.ppm]\n"
+            "Reads the course scene SCENE with the IN 104 handout's parse(),\n"
+            "renders it with renderToPPM() and writes a P3 image at IMAGE.ppm\n"
+            "(default: SCENE's name with .ppm, in the current folder).\n"
+            "\n"
+            "  -h, --help      this help\n"
+            "      --version   the version\n"
+            "\n"
+            "Exit status: 0 success, 1 bad scene or failed write, 2 bad "
+            "usage.\n");
+}
+
 int main(int argc, char **argv)
 {
+    if (2 == argc && (0 == strcmp(argv[1], "--help") ||
+                      0 == strcmp(argv[1], "-h"))) {
+        usage(stdout);
+        return 0;
+    }
+    if (2 == argc && 0 == strcmp(argv[1], "--version")) {
+        printf("in104-render (libraytrace) %s\n", IN104_RENDER_VERSION);
+        return 0;
+    }
     if (argc < 2 || argc > 3) {
         fprintf(stderr, "usage: %s scene.scn [image.ppm]\n", argv[0]);
         return 2;
