@@ -8,7 +8,9 @@
 # Without cpack or dpkg-deb the test is a visible skip, its reason on its
 # output (a line "PACKAGE-SKIP: ...", CTest's SKIP_REGULAR_EXPRESSION).
 if(NOT CMAKE_SCRIPT_MODE_FILE)
-  if(TARGET raytrace_rt_export AND EXISTS "${PROJECT_BINARY_DIR}/CPackConfig.cmake")
+  # CPackConfig.cmake is written at the end of the top-level configure, after
+  # this file is read: register on the condition that includes Packaging.cmake.
+  if(TARGET raytrace_rt_export AND RAYTRACE_INSTALL AND RAYTRACE_TOP_LEVEL)
     add_test(NAME package_deb_holds_and_runs
       COMMAND "${CMAKE_COMMAND}"
               "-DCPACK=${CMAKE_CPACK_COMMAND}"
