@@ -29,6 +29,12 @@ foreach(program rt-export rt-view rt-convert rt-export-mpi rt-bench
             -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
   set_tests_properties(${name}_renders_without_warnings PROPERTIES
     SKIP_REGULAR_EXPRESSION "MAN-SKIP: ")
+  if(program STREQUAL "rt-export-mpi")
+    # Open MPI's own allocations, which LeakSanitizer cannot suppress by
+    # name (tests/mpi.cmake): no leak check for this program's runs.
+    set_tests_properties(${name}_names_every_option_of_its_help PROPERTIES
+      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0:abort_on_error=0")
+  endif()
 endforeach()
 
 # Every installed program answers --help (usage on standard output) and
@@ -46,4 +52,8 @@ foreach(program rt-export rt-view rt-convert rt-export-mpi rt-bench
             "-DPROGRAM=$<TARGET_FILE:${target}>"
             "-DVERSION=${PROJECT_VERSION}"
             -P "${CMAKE_CURRENT_SOURCE_DIR}/man_check.cmake")
+  if(program STREQUAL "rt-export-mpi")
+    set_tests_properties(program_${name}_answers_help_and_version PROPERTIES
+      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0:abort_on_error=0")
+  endif()
 endforeach()
