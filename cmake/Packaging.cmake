@@ -39,5 +39,11 @@ endif()
 if(RAYTRACE_HAVE_PNG AND NOT BUILD_SHARED_LIBS)
   set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libpng-dev")
 endif()
+# rt-export-mpi links libopenmpi3 (a Depends from dpkg-shlibdeps), but Open
+# MPI starts no rank, not even a lone one, without its launcher (orted, in
+# openmpi-bin): recommended, so apt brings it and a minimal install may not.
+if(TARGET raytrace_rt_export_mpi)
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openmpi-bin")
+endif()
 
 include(CPack)

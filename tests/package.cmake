@@ -58,7 +58,7 @@ endif()
 message("package: ${debs}")
 
 # The control fields.
-execute_process(COMMAND "${DPKG_DEB}" -f "${debs}" Package Version Depends
+execute_process(COMMAND "${DPKG_DEB}" -f "${debs}" Package Version Depends Recommends
   RESULT_VARIABLE rc OUTPUT_VARIABLE info ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   fail("dpkg-deb -f: ${err}")
@@ -102,6 +102,11 @@ foreach(pattern
     fail("no file matching ${pattern} in the package:\n${listing}")
   endif()
 endforeach()
+# rt-export-mpi cannot start without Open MPI's launcher (openmpi-bin).
+if(listing MATCHES "\\./usr/bin/rt-export-mpi\n" AND
+   NOT info MATCHES "Recommends: [^\n]*openmpi-bin")
+  fail("rt-export-mpi is in the package, but openmpi-bin is not recommended:\n${info}")
+endif()
 if(listing MATCHES " \\./(usr/local|home|work|tmp)/")
   fail("the package holds files outside /usr:\n${listing}")
 endif()
@@ -129,3 +134,20 @@ if(NOT head MATCHES "^P6\n40 30\n255\n" OR NOT size EQUAL 3613)
   fail("the extracted rt-export wrote no 40 x 30 PPM (${size} bytes): ${head}")
 endif()
 message("package: the extracted rt-export rendered ${image}")
+
+# Every extracted program answers --version with the package's version.
+string(REGEX MATCHALL "\\./usr/bin/[^\n]+" programs "${listing}")
+foreach(entry IN LISTS programs)
+  string(REGEX REPLACE "^\\./usr/bin/" "" name "${entry}")
+  if(name STREQUAL "")
+    continue()
+  endif()
+  execute_process(
+    COMMAND "${CMAKE_COMMAND}" -E env "LD_LIBRARY_PATH=${root}/usr/lib"
+            "${root}/usr/bin/${name}" --version
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "^${name} \\(libraytrace\\) ${VERSION}\n")
+    fail("the extracted ${name} --version gave ${rc}: ${out}${err}")
+  endif()
+  message("package: ${out}")
+endforeach()

@@ -305,11 +305,40 @@ static void fit_threads(cli_settings *s, int rank)
                 cores, cores == 1 ? "" : "s");
 }
 
+/*
+ * --help and --version are answered before MPI_Init, on a copy of argv
+ * (cli_parse permutes it): Open MPI cannot start even one rank where its
+ * launcher (openmpi-bin) is missing, and a question about the program
+ * should not need it.  Returns the exit status, or CLI_CONTINUE when
+ * neither was asked (or "--help" was an option's value, as in -o --help).
+ */
+static int answer_before_mpi(int argc, char **argv)
+{
+    int asked = 0;
+    for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0 ||
+            strcmp(argv[i], "--version") == 0)
+            asked = 1;
+    if (!asked)
+        return CLI_CONTINUE;
+    char **copy = malloc(((size_t)argc + 1) * sizeof *copy);
+    if (!copy)
+        return CLI_CONTINUE; /* MPI's own parse answers it then */
+    memcpy(copy, argv, ((size_t)argc + 1) * sizeof *copy);
+    cli_settings s;
+    int code = cli_parse(&program, argc, copy, &s);
+    free(copy);
+    return code;
+}
+
 int main(int argc, char **argv)
 {
     int provided;
     rank_state r;
     memset(&r, 0, sizeof r);
+    int answered = answer_before_mpi(argc, argv);
+    if (answered != CLI_CONTINUE)
+        return answered;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &r.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &r.count);
