@@ -41,9 +41,10 @@ if(RAYTRACE_HAVE_PNG AND NOT BUILD_SHARED_LIBS)
 endif()
 # rt-export-mpi links libopenmpi3 (a Depends from dpkg-shlibdeps), but Open
 # MPI starts no rank, not even a lone one, without its launcher (orted, in
-# openmpi-bin): recommended, so apt brings it and a minimal install may not.
+# openmpi-bin): a dependency too (CPack adds dpkg-shlibdeps' list to it).
+# A Recommends would not do: `apt-get -f install` after `dpkg -i` skips them.
 if(TARGET raytrace_rt_export_mpi)
-  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openmpi-bin")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "openmpi-bin")
 endif()
 
 include(CPack)

@@ -58,7 +58,7 @@ endif()
 message("package: ${debs}")
 
 # The control fields.
-execute_process(COMMAND "${DPKG_DEB}" -f "${debs}" Package Version Depends Recommends
+execute_process(COMMAND "${DPKG_DEB}" -f "${debs}" Package Version Depends
   RESULT_VARIABLE rc OUTPUT_VARIABLE info ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   fail("dpkg-deb -f: ${err}")
@@ -104,8 +104,8 @@ foreach(pattern
 endforeach()
 # rt-export-mpi cannot start without Open MPI's launcher (openmpi-bin).
 if(listing MATCHES "\\./usr/bin/rt-export-mpi\n" AND
-   NOT info MATCHES "Recommends: [^\n]*openmpi-bin")
-  fail("rt-export-mpi is in the package, but openmpi-bin is not recommended:\n${info}")
+   NOT info MATCHES "Depends: [^\n]*openmpi-bin")
+  fail("rt-export-mpi is in the package, but it does not depend on openmpi-bin:\n${info}")
 endif()
 if(listing MATCHES " \\./(usr/local|home|work|tmp)/")
   fail("the package holds files outside /usr:\n${listing}")
