@@ -32,7 +32,7 @@ command -v debootstrap >/dev/null ||
 
 work=$(mktemp -d /tmp/bare-debian.XXXXXX)
 cleanup() {
-    umount "$work"/*/proc 2>/dev/null || true
+    umount "$work"/*/proc "$work"/*/sys 2>/dev/null || true
     rm -rf "$work"
 }
 trap cleanup EXIT
@@ -103,8 +103,9 @@ for form in dpkg apt; do
     cp -a "$work/bare" "$root"
     cp "$deb" "$root/tmp/raytrace.deb"
     mount -t proc proc "$root/proc"
+    mount -t sysfs sysfs "$root/sys" # Open MPI's hwloc reads the cores there
     chroot "$root" /bin/bash -c "$inside" inside "$form"
-    umount "$root/proc"
+    umount "$root/proc" "$root/sys"
 done
 if [ -n "${BARE_DEBIAN_PICTURE:-}" ]; then
     cp "$work/apt/tmp/cubes.png" "$BARE_DEBIAN_PICTURE"
